@@ -1,0 +1,15 @@
+# impulselab_warnings: an interface target every ImpulseLab target links privately.
+# It is not exported: consumers of the installed library never inherit these flags.
+add_library(impulselab_warnings INTERFACE)
+target_compile_options(impulselab_warnings INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion
+  -Wnon-virtual-dtor -Wold-style-cast -Wcast-align -Woverloaded-virtual
+  -Wnull-dereference -Wdouble-promotion -Wformat=2 -Wimplicit-fallthrough)
+if(IMPULSELAB_WARNINGS_AS_ERRORS)
+  target_compile_options(impulselab_warnings INTERFACE -Werror)
+endif()
+if(IMPULSELAB_SANITIZE)
+  target_compile_options(impulselab_warnings INTERFACE
+    -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  target_link_options(impulselab_warnings INTERFACE -fsanitize=address,undefined)
+endif()
