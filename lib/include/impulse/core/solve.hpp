@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// @file
+/// @brief Solving A·Fdt = B, with the policies for dependent and inconsistent systems.
+#pragma once
+
+#include <Eigen/Core>
+#include <string_view>
+#include <vector>
+
+#include "impulse/core/system.hpp"
+
+namespace impulse {
+
+/// @brief What to do when the system has many solutions (A is singular, B in its range).
+enum class DependentPolicy {
+  /// The solution of least Euclidean norm. Where the paper asks for equal impulses (a body
+  /// resting on parallel contacts) this is that solution.
+  minimum_norm,
+  /// A basic solution: the free impulses are zero, so the impulse sits on as few contacts as the
+  /// rank allows. The contrast to the paper's equal impulses.
+  basic,
+};
+
+/// @brief What to do when no impulses satisfy every equation (B outside the range of A).
+enum class InconsistentPolicy {
+  /// Minimise @f$ \|A\,F\,dt - B\| @f$ (then apply the DependentPolicy among the minimisers).
+  least_squares,
+  /// The paper's rule (4.4): ignore equations until the rest is consistent. Equations are taken
+  /// in contact order; one that contradicts those kept before it is dropped.
+  drop_equation,
+};
+
+/// @brief The scene format's name of a policy ("minimum-norm", "basic").
+/// @param policy the policy
+/// @return its name
+[[nodiscard]] std::string_view to_string(DependentPolicy policy);
+/// @brief The scene format's name of a policy ("least-squares", "drop-equation").
+/// @param policy the policy
+/// @return its name
+[[nodiscard]] std::string_view to_string(InconsistentPolicy policy);
+
+/// @brief How to solve: the two policies and the tolerances behind the diagnostics.
+struct SolverOptions {
+  DependentPolicy dependent = DependentPolicy::minimum_norm;            ///< many solutions
+  InconsistentPolicy inconsistent = InconsistentPolicy::least_squares;  ///< no solution
+  /// Pivots of the column-pivoted QR of A below this fraction of the largest one count as zero
+  /// when the rank is decided (when the system carries its factor G, pivots of G below the square
+  /// root of it). 0 selects Eigen's default: the matrix's size times the machine epsilon.
+  double rank_tolerance = 0.0;
+  /// The system counts as consistent when
+  /// @f$ \|A\,F\,dt - B\| \le \tau\,(\|A\|_F\,\|F\,dt\| + \|B\|) @f$ with this @f$ \tau @f$.
+  double consistency_tolerance = 1e-9;
+};
+
+/// @brief Whether the numbers allowed a solution. Bad input is an exception instead.
+enum class SolveStatus {
+  success,     ///< Fdt holds the impulses
+  non_finite,  ///< A or B held a NaN or an infinity (e.g. an overflowing 1/m); Fdt is all NaN
+};
+
+/// @brief The impulses, and the system they solve with its diagnostics.
+struct Solution {
+  SolveStatus status = SolveStatus::success;  ///< whether Fdt is meaningful
+  Eigen::VectorXd Fdt;                        ///< impulse magnitude at each contact
+  Eigen::MatrixXd A;                          ///< the system solved
+  Eigen::VectorXd B;                          ///< its right-hand side
+  Eigen::Index rank = 0;                      ///< numerical rank of A
+  double residual = 0.0;                      ///< @f$ \|A\,F\,dt - B\|_2 @f$ of the whole system
+  bool dependent = false;                     ///< rank < N: many impulse vectors act the same
+  bool consistent = true;                     ///< B lies in the range of A (within tolerance)
+  /// Largest over smallest retained pivot of the column-pivoted QR of A (or the square of that
+  /// ratio for the factor G, when the system carries one): an estimate of the condition number
+  /// of A on its range (1 for the empty system, infinity when A is zero but N > 0). Relative
+  /// errors of Fdt are bounded by roughly this times the input's.
+  double condition_estimate = 1.0;
+  std::vector<Eigen::Index> dropped;  ///< equations ignored under InconsistentPolicy::drop_equation
+  SolverOptions options;              ///< the policies and tolerances used
+};
+
+/// @brief Solves A·Fdt = B under the given policies.
+///
+/// When the system carries its factor (@f$ A = G^T G @f$, @f$ B = G^T w @f$, as systems
+/// assembled from bodies do), the impulses are the least-squares solution of
+/// @f$ G\,F\,dt \approx w @f$, which has the same minimum-norm solution but is solved from a
+/// QR factorisation of G: the velocities after the collision then carry the rounding of
+/// @f$ \sqrt{\kappa(A)} @f$ rather than of @f$ \kappa(A) @f$. Otherwise A itself is factored.
+/// Rank, residual and consistency always refer to A and B.
+/// @param system the assembled system
+/// @param options policies and tolerances
+/// @return the impulses with A, B, rank, residual and the other diagnostics
+[[nodiscard]] Solution solve(const ContactSystem& system, const SolverOptions& options = {});
+
+/// @brief The single-contact solution @f$ F\,dt = B / A @f$ (end of section 1.3), no allocation.
+struct ScalarSolution {
+  SolveStatus status = SolveStatus::success;  ///< whether Fdt is meaningful
+  double Fdt = 0.0;                           ///< the impulse magnitude
+  double A = 0.0;                             ///< the summed a's
+  double B = 0.0;                             ///< the summed b's
+  double residual = 0.0;                      ///< @f$ |A\,F\,dt - B| @f$
+  bool dependent = false;                     ///< A = 0 (both bodies static): any Fdt acts the same
+  bool consistent = true;                     ///< false when A = 0 but B ≠ 0
+};
+
+/// @brief Solves the one-contact system. A = 0 gives Fdt = 0, the minimum-norm choice.
+/// @param system the summed contributions (A, B)
+/// @return the impulse magnitude and its diagnostics
+[[nodiscard]] ScalarSolution solve(ScalarContribution system);
+
+}  // namespace impulse

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// @file
+/// @brief The system A·Fdt = B and how bodies' contributions are summed into it (the paper's ⊕).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace impulse {
+
+/// @brief One body's share (a, b) of a single-contact system @f$ A\,F\,dt = B @f$.
+///
+/// Sections 1-3 of the paper: every body at the contact brings an @f$ a @f$ (dimension
+/// 1/mass) and a @f$ b @f$ (dimension velocity); they are summed,
+/// @f$ F\,dt\,(a_1 + a_2) = b_1 + b_2 @f$, and the impulse magnitude is @f$ B / A @f$.
+/// Summing is `operator+`. A static body contributes the zero value.
+struct ScalarContribution {
+  double a = 0.0;  ///< the body's addition to A (inverse mass along the normal)
+  double b = 0.0;  ///< the body's addition to B (elasticity times its normal velocity)
+};
+
+/// @brief The single-contact ⊕: @f$ (a_1, b_1) \oplus (a_2, b_2) = (a_1 + a_2, b_1 + b_2) @f$.
+/// @param first one body's contribution
+/// @param second the other body's contribution
+/// @return the summed system (A, B)
+[[nodiscard]] constexpr ScalarContribution operator+(ScalarContribution first,
+                                                     ScalarContribution second) {
+  return {first.a + second.a, first.b + second.b};
+}
+
+/// @brief One body's block of a many-contact system (sections 4 and 5).
+///
+/// `contacts[v]` is the global index of the v-th contact the body touches; `a(v, k)` is the
+/// paper's @f$ a_{vk} @f$ between the body's v-th and k-th contacts and `b(v)` its @f$ b_v @f$.
+/// Indices must be distinct.
+///
+/// A body's block is a Gram matrix: @f$ a = G^T G @f$ and @f$ b = G^T w @f$, where column v of
+/// @f$ G @f$ is the body's generalised normal at contact v scaled by @f$ M^{-1/2} @f$ (one row per
+/// degree of freedom) and @f$ w = e\,M^{1/2}\,	ext{velocity} @f$. When a block carries `G` and
+/// `w`, the solver can factor the stacked @f$ G @f$ instead of @f$ A @f$, which halves the digits
+/// that an ill-conditioned system loses (see impulse::solve). Hand-made blocks may leave them
+/// empty.
+struct BlockContribution {
+  std::vector<Eigen::Index> contacts;  ///< global contact indices, one per row/column of `a`
+  Eigen::MatrixXd a;                   ///< the body's @f$ a_{vk} @f$, square
+  Eigen::VectorXd b;                   ///< the body's @f$ b_v @f$
+  Eigen::MatrixXd G;  ///< optional factor, one column per contact: @f$ a = G^T G @f$
+  Eigen::VectorXd w;  ///< optional, with `G`: @f$ b = G^T w @f$
+};
+
+/// @brief The linear system @f$ \mathbf{A}\,\vec{F}dt = \vec{B} @f$ over N contacts.
+///
+/// Built empty (all zeros) for N contacts, then each body's BlockContribution is added at the
+/// rows and columns of the contacts it touches: the paper's
+/// @f$ \mathbf{A_1} \oplus \mathbf{A_2} \oplus \cdots @f$ (section 4.5). While every block
+/// added carries its factor, the system keeps the stacked factor too
+/// (@f$ A = G^T G @f$, @f$ B = G^T w @f$).
+class ContactSystem {
+ public:
+  /// @brief An empty (zero) system over @p contacts contacts.
+  /// @param contacts N, at least 0
+  explicit ContactSystem(Eigen::Index contacts);
+
+  /// @brief A system given directly, e.g. one worked by hand. It carries no factor.
+  /// @param A square N×N matrix
+  /// @param B vector of N; a size mismatch throws InvalidInput
+  ContactSystem(Eigen::MatrixXd A, Eigen::VectorXd B);
+
+  /// @brief The ⊕: adds @p block at the rows and columns of its contacts.
+  /// @param block one body's contribution; its indices must be distinct and below size(),
+  ///        its `a` square of the size of its index list, and its factor, if any, of matching
+  ///        sizes (else InvalidInput, and the system is left unchanged)
+  /// @return this system
+  ContactSystem& operator+=(const BlockContribution& block);
+
+  /// @brief The single-contact ⊕ on a 1×1 system (the system then carries no factor).
+  /// @param contribution one body's (a, b); the system must have exactly one contact
+  /// @return this system
+  ContactSystem& operator+=(const ScalarContribution& contribution);
+
+  /// @brief Number of contacts N.
+  /// @return N
+  [[nodiscard]] Eigen::Index size() const { return B_.size(); }
+  /// @brief The matrix A.
+  /// @return A, N×N
+  [[nodiscard]] const Eigen::MatrixXd& A() const { return A_; }
+  /// @brief The right-hand side B.
+  /// @return B, N
+  [[nodiscard]] const Eigen::VectorXd& B() const { return B_; }
+
+  /// @brief Whether every contribution so far carried its factor, so that factor() is complete.
+  /// @return true when @f$ A = G^T G @f$ and @f$ B = G^T w @f$ hold for the stacked factor
+  [[nodiscard]] bool has_factor() const { return factored_; }
+
+  /// @brief The stacked factor: every block's rows, its columns placed at its contacts.
+  /// @param G receives the matrix, one row per degree of freedom, N columns
+  /// @param w receives the scaled velocities, one per row of G
+  /// @pre has_factor()
+  void factor(Eigen::MatrixXd& G, Eigen::VectorXd& w) const;
+
+ private:
+  struct FactorRows {
+    std::vector<Eigen::Index> contacts;
+    Eigen::MatrixXd G;
+    Eigen::VectorXd w;
+  };
+  Eigen::MatrixXd A_;
+  Eigen::VectorXd B_;
+  std::vector<FactorRows> factor_rows_;
+  bool factored_ = true;
+};
+
+}  // namespace impulse
