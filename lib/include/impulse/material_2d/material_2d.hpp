@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// @file
+/// @brief Section 2: point masses in the plane, one contact, cast onto the normal.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "impulse/core/elasticity.hpp"
+#include "impulse/core/solve.hpp"
+#include "impulse/core/system.hpp"
+
+/// @brief Section 2 of the paper: material bodies (point masses) in the plane.
+///
+/// The collision only acts along the contact normal, so each body's momentum is cast onto its own
+/// outward normal, @f$ p_n = \vec{p}\cdot\vec{n} @f$, and section 1 applies to @f$ p_n @f$.
+/// The bumper's outward normal is @f$ \vec{n} @f$, the wedge's @f$ -\vec{n} @f$.
+namespace impulse::material_2d {
+
+/// @brief A point mass in the plane.
+struct PointMass {
+  double mass = 1.0;                            ///< m > 0
+  Eigen::Vector2d p = Eigen::Vector2d::Zero();  ///< momentum @f$ \vec{p} @f$
+};
+
+/// @brief A point mass from its velocity.
+/// @param mass m > 0
+/// @param velocity @f$ \vec{v} @f$
+/// @return the point mass with @f$ \vec{p} = m\vec{v} @f$
+[[nodiscard]] PointMass from_velocity(double mass, const Eigen::Vector2d& velocity);
+
+/// @brief Throws InvalidInput unless the mass is positive and finite and the momentum finite.
+/// @param body the body to check
+/// @param name how the message names it
+void validate(const PointMass& body, const char* name = "body");
+
+/// @brief @f$ \vec{v} = \vec{p}/m @f$.
+/// @param body the body
+/// @return its velocity
+[[nodiscard]] Eigen::Vector2d velocity(const PointMass& body);
+
+/// @brief @f$ E_t = \|\vec{p}\|^2 / 2m @f$.
+/// @param body the body
+/// @return its kinetic energy
+[[nodiscard]] double kinetic_energy(const PointMass& body);
+
+/// @brief The paper's cast of @p v onto the direction of @p direction:
+/// @f$ \vec{v}\cdot\vec{d}/\|\vec{d}\| @f$ (a plain dot product when @p direction is a unit
+/// normal).
+/// @param v the vector to cast
+/// @param direction a non-zero direction (zero or non-finite throws InvalidInput)
+/// @return the signed length of v along the direction
+[[nodiscard]] double cast(const Eigen::Vector2d& v, const Eigen::Vector2d& direction);
+
+/// @brief The normal velocity @f$ \vec{p}\cdot\vec{n}/m @f$, positive when moving along @p n.
+/// @param body the body
+/// @param n its outward unit normal
+/// @return the normal velocity
+[[nodiscard]] double normal_velocity(const PointMass& body, const Eigen::Vector2d& n);
+
+/// @brief The body's share of (1.3) on the cast: @f$ a = \|\vec{n}\|^2/m @f$,
+/// @f$ b = e\,(\vec{p}\cdot\vec{n})/m @f$ (the single-contact form of (4.5)/(4.8)).
+/// @param body the body (validated)
+/// @param n its own outward unit normal (validated)
+/// @param elasticity its elasticity
+/// @return (a, b)
+[[nodiscard]] ScalarContribution contribution(const PointMass& body, const Eigen::Vector2d& n,
+                                              Elasticity elasticity);
+
+/// @brief The vectorised impulse on a body of outward normal @p n: @f$ -\vec{n}\,F\,dt @f$.
+/// @param n the body's outward unit normal
+/// @param Fdt the impulse magnitude
+/// @return the impulse vector
+[[nodiscard]] Eigen::Vector2d impulse_vector(const Eigen::Vector2d& n, double Fdt);
+
+/// @brief The body after the impulse: @f$ \vec{p}' = \vec{p} - \vec{n}\,F\,dt @f$.
+/// @param body the body before
+/// @param n its outward unit normal
+/// @param Fdt the impulse magnitude
+/// @return the body after
+[[nodiscard]] PointMass apply_impulse(const PointMass& body, const Eigen::Vector2d& n, double Fdt);
+
+/// @brief A two-body collision in the plane, solved.
+struct Collision {
+  ScalarSolution solution;  ///< Fdt with the summed A and B
+  PointMass bumper;         ///< the bumper after
+  PointMass wedge;          ///< the wedge after
+};
+
+/// @brief Collides two point masses at one contact.
+/// @param bumper the body whose outward normal is @p n
+/// @param bumper_elasticity its elasticity
+/// @param wedge the body whose outward normal is -@p n
+/// @param wedge_elasticity its elasticity
+/// @param n unit normal, outward from the bumper
+/// @return the impulse and both bodies after
+[[nodiscard]] Collision collide(const PointMass& bumper, Elasticity bumper_elasticity,
+                                const PointMass& wedge, Elasticity wedge_elasticity,
+                                const Eigen::Vector2d& n);
+
+}  // namespace impulse::material_2d

@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// @file
+/// @brief Sections 4 and 5: many bodies, many contact points, one linear system.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <span>
+#include <variant>
+#include <vector>
+
+#include "impulse/core/elasticity.hpp"
+#include "impulse/core/solve.hpp"
+#include "impulse/core/system.hpp"
+#include "impulse/material_2d/material_2d.hpp"
+#include "impulse/rigid_2d/rigid_2d.hpp"
+
+/// @brief Sections 4 and 5 of the paper: every contact gets an equation, every body a block.
+///
+/// Each body brings a square block over the contacts it touches: (4.5)/(4.8) for a point mass,
+/// (5.3)/(5.5) for a rigid body, each computed with the body's own outward normal at each
+/// contact. The blocks are summed with ⊕ into A·Fdt = B and solved; the impulses are then applied
+/// to every body. Section 1's bodies on a line are the special case of normals @f$ \pm\vec{x} @f$.
+namespace impulse::multipoint {
+
+/// @brief An immovable body: zero inverse mass and inertia, zero velocity. It contributes nothing.
+struct StaticBody {
+  /// @brief All static bodies are alike.
+  /// @return true
+  bool operator==(const StaticBody&) const = default;
+};
+
+/// @brief Any body of sections 4 and 5.
+using Body = std::variant<material_2d::PointMass, rigid_2d::RigidBody, StaticBody>;
+
+/// @brief A contact point between two bodies.
+struct Contact {
+  std::size_t bumper = 0;  ///< index of the body whose normal is `normal`
+  std::size_t wedge = 0;   ///< index of the other body (normal -`normal`)
+  Eigen::Vector2d normal = Eigen::Vector2d::UnitX();  ///< unit, outward from the bumper
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();    ///< world position (used by rigid bodies)
+};
+
+/// @brief One body's view of one contact: the contact's index and the body's own outward normal.
+struct Touch {
+  Eigen::Index contact = 0;                           ///< global contact index v
+  Eigen::Vector2d normal = Eigen::Vector2d::UnitX();  ///< @f$ \vec{n_v} @f$ of this body
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();    ///< contact point, world coordinates
+};
+
+/// @brief Throws InvalidInput for a bad body, a contact index out of range, a body in contact
+/// with itself or a non-unit normal; the message names the place ("contacts[2].normal").
+/// @param bodies the bodies
+/// @param contacts the contacts between them
+void validate(std::span<const Body> bodies, std::span<const Contact> contacts);
+
+/// @brief The contacts body @p body takes part in, each with the body's own outward normal
+/// (`normal` as bumper, `-normal` as wedge), in contact order.
+/// @param body index of the body
+/// @param contacts all contacts
+/// @return the body's touches
+[[nodiscard]] std::vector<Touch> touches(std::size_t body, std::span<const Contact> contacts);
+
+/// @brief A point mass's block, (4.5) and (4.8) joined by the elasticity:
+/// @f$ a_{vk} = \frac{\vec{n_k}\cdot\vec{n_v}}{m} @f$,
+/// @f$ b_v = e\,\frac{\vec{p}\cdot\vec{n_v}}{m} @f$.
+/// @param body the point mass
+/// @param touches its contacts with its own normals
+/// @param elasticity its elasticity
+/// @return the block over its contacts
+[[nodiscard]] BlockContribution material_block(const material_2d::PointMass& body,
+                                               std::span<const Touch> touches,
+                                               Elasticity elasticity);
+
+/// @brief A rigid body's block, (5.3) and (5.5) joined by the elasticity:
+/// @f$ a_{vk} = \frac{\det(\vec{r_k},\vec{n_k})\det(\vec{r_v},\vec{n_v})}{I}
+///            + \frac{\vec{n_k}\cdot\vec{n_v}}{m} @f$,
+/// @f$ b_v = e\left(\frac{L\det(\vec{r_v},\vec{n_v})}{I} + \frac{\vec{p}\cdot\vec{n_v}}{m}\right)
+/// @f$.
+/// @param body the rigid body
+/// @param touches its contacts with its own normals
+/// @param elasticity its elasticity
+/// @return the block over its contacts
+[[nodiscard]] BlockContribution rigid_block(const rigid_2d::RigidBody& body,
+                                            std::span<const Touch> touches, Elasticity elasticity);
+
+/// @brief Whichever block fits the body; a static body's block is empty.
+/// @param body any body
+/// @param touches its contacts with its own normals
+/// @param elasticity its elasticity
+/// @return the block over its contacts
+[[nodiscard]] BlockContribution contribution(const Body& body, std::span<const Touch> touches,
+                                             Elasticity elasticity);
+
+/// @brief The paper's @f$ \mathbf{A_1} \oplus \cdots \oplus \mathbf{A_M} @f$ and
+/// @f$ \vec{B_1} \oplus \cdots \oplus \vec{B_M} @f$ (section 4.5).
+/// @param bodies the bodies (validated with the contacts)
+/// @param elasticities one per body (a size mismatch throws InvalidInput)
+/// @param contacts the contacts
+/// @return the assembled system
+[[nodiscard]] ContactSystem assemble(std::span<const Body> bodies,
+                                     std::span<const Elasticity> elasticities,
+                                     std::span<const Contact> contacts);
+
+/// @brief The velocity of @p body's material point at @p point (zero for a static body).
+/// @param body any body
+/// @param point world position
+/// @return the point's velocity
+[[nodiscard]] Eigen::Vector2d point_velocity(const Body& body, const Eigen::Vector2d& point);
+
+/// @brief Each contact's approach speed: the sum of both bodies' normal velocities, each cast on
+/// its own outward normal. Positive: closing; zero: equal normal velocities.
+/// @param bodies the bodies
+/// @param contacts the contacts
+/// @return one approach speed per contact
+[[nodiscard]] Eigen::VectorXd approach(std::span<const Body> bodies,
+                                       std::span<const Contact> contacts);
+
+/// @brief The bodies after the impulses: at contact v the bumper receives
+/// @f$ -\vec{n_v}\,F_v dt @f$ and the wedge @f$ +\vec{n_v}\,F_v dt @f$, at the contact point.
+/// @param bodies the bodies before
+/// @param contacts the contacts
+/// @param Fdt one impulse magnitude per contact (a size mismatch throws InvalidInput)
+/// @return the bodies after
+[[nodiscard]] std::vector<Body> apply_impulses(std::span<const Body> bodies,
+                                               std::span<const Contact> contacts,
+                                               const Eigen::Ref<const Eigen::VectorXd>& Fdt);
+
+/// @brief Kinetic energy of one body (0 for a static body).
+/// @param body any body
+/// @return its kinetic energy
+[[nodiscard]] double kinetic_energy(const Body& body);
+
+/// @brief Total kinetic energy.
+/// @param bodies the bodies
+/// @return the sum of their kinetic energies
+[[nodiscard]] double kinetic_energy(std::span<const Body> bodies);
+
+/// @brief Total linear momentum of the movable bodies.
+/// @param bodies the bodies
+/// @return the sum of their momenta
+[[nodiscard]] Eigen::Vector2d momentum(std::span<const Body> bodies);
+
+/// @brief The solved system and the bodies after.
+struct Resolution {
+  Solution solution;        ///< impulses, A, B and diagnostics
+  std::vector<Body> after;  ///< the bodies after the impulses (the bodies before if not success)
+};
+
+/// @brief Assembles, solves and applies.
+/// @param bodies the bodies
+/// @param elasticities one per body
+/// @param contacts the contacts
+/// @param options solver policies
+/// @return the solution and the bodies after
+[[nodiscard]] Resolution resolve(std::span<const Body> bodies,
+                                 std::span<const Elasticity> elasticities,
+                                 std::span<const Contact> contacts,
+                                 const SolverOptions& options = {});
+
+/// @brief Assembles, solves and applies, every body with the same elasticity.
+/// @param bodies the bodies
+/// @param elasticity everyone's elasticity
+/// @param contacts the contacts
+/// @param options solver policies
+/// @return the solution and the bodies after
+[[nodiscard]] Resolution resolve(std::span<const Body> bodies, Elasticity elasticity,
+                                 std::span<const Contact> contacts,
+                                 const SolverOptions& options = {});
+
+}  // namespace impulse::multipoint

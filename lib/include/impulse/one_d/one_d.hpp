@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// @file
+/// @brief Section 1: material bodies on a line, one contact.
+#pragma once
+
+#include "impulse/core/elasticity.hpp"
+#include "impulse/core/solve.hpp"
+#include "impulse/core/system.hpp"
+
+/// @brief Section 1 of the paper: material bodies that move on one line.
+///
+/// Positions and momenta are signed along the line's axis. At a contact each body has an outward
+/// direction, +1 or -1 (its normal on the line): the body on the left has +1, the one on the
+/// right -1. A body's normal velocity @f$ s\,p/m @f$ is positive when it moves towards the other
+/// body, which is the paper's sign convention for @f$ p_1 @f$ and @f$ p_2 @f$.
+namespace impulse::one_d {
+
+/// @brief A material body on a line.
+struct Body {
+  double mass = 1.0;      ///< m > 0
+  double momentum = 0.0;  ///< p, signed along the axis
+};
+
+/// @brief A body from its velocity instead of its momentum.
+/// @param mass m > 0
+/// @param velocity v, signed along the axis
+/// @return the body with p = m v
+[[nodiscard]] Body from_velocity(double mass, double velocity);
+
+/// @brief Throws InvalidInput unless the mass is positive and finite and the momentum finite.
+/// @param body the body to check
+/// @param name how the message names it ("body", "bumper")
+void validate(const Body& body, const char* name = "body");
+
+/// @brief v = p / m.
+/// @param body the body
+/// @return its velocity along the axis
+[[nodiscard]] double velocity(const Body& body);
+
+/// @brief @f$ E_k = p^2 / 2m @f$.
+/// @param body the body
+/// @return its kinetic energy
+[[nodiscard]] double kinetic_energy(const Body& body);
+
+/// @brief The body's velocity cast on its outward direction: @f$ s\,p/m @f$.
+/// @param body the body
+/// @param outward its outward direction at the contact, +1 or -1
+/// @return positive when the body moves towards the other one
+[[nodiscard]] double normal_velocity(const Body& body, double outward);
+
+/// @brief The body's share of (1.3): @f$ a = 1/m @f$, @f$ b = e\,(s\,p)/m @f$.
+///
+/// Summed over both bodies this is
+/// @f$ F\,dt\,(\frac{1}{m_1}+\frac{1}{m_2}) = \frac{e_1 p_1}{m_1}+\frac{e_2 p_2}{m_2} @f$,
+/// which is (1.1) at e = 2 and (1.2) at e = 1.
+/// @param body the body (validated)
+/// @param outward its outward direction at the contact, +1 or -1
+/// @param elasticity the body's own elasticity (the paper's elasticity_1 or elasticity_2)
+/// @return (a, b)
+[[nodiscard]] ScalarContribution contribution(const Body& body, double outward,
+                                              Elasticity elasticity);
+
+/// @brief The body after the impulse: @f$ p' = p - s\,F\,dt @f$ (section 1, first display).
+/// @param body the body before
+/// @param outward its outward direction at the contact, +1 or -1
+/// @param Fdt the impulse magnitude
+/// @return the body after
+[[nodiscard]] Body apply_impulse(const Body& body, double outward, double Fdt);
+
+/// @brief A two-body collision on a line, solved.
+struct Collision {
+  ScalarSolution solution;  ///< Fdt with the summed A and B
+  Body first;               ///< the first body after
+  Body second;              ///< the second body after
+};
+
+/// @brief Collides two bodies at one point with (1.3).
+/// @param first the body whose outward direction is @p normal
+/// @param first_elasticity its elasticity
+/// @param second the body whose outward direction is -@p normal
+/// @param second_elasticity its elasticity
+/// @param normal +1 when @p first is on the left of @p second, -1 otherwise
+/// @return the impulse and both bodies after
+[[nodiscard]] Collision collide(const Body& first, Elasticity first_elasticity, const Body& second,
+                                Elasticity second_elasticity, double normal = 1.0);
+
+}  // namespace impulse::one_d

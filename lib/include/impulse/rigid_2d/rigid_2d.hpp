@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// @file
+/// @brief Section 3: a rigid body in the plane, one contact point.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "impulse/core/elasticity.hpp"
+#include "impulse/core/solve.hpp"
+#include "impulse/core/system.hpp"
+
+/// @brief Section 3 of the paper: rigid bodies in the plane (two translations and a rotation).
+///
+/// A rigid body has a mass m, a moment of inertia I about its origin (its centre of mass), the
+/// origin's position, a momentum @f$ \vec{p} @f$ and an angular momentum L about the origin.
+/// A contact point at world position x has the arm @f$ \vec{r} = x - \text{position} @f$.
+namespace impulse::rigid_2d {
+
+/// @brief A rigid body in the plane.
+struct RigidBody {
+  double mass = 1.0;                                   ///< m > 0
+  double inertia = 1.0;                                ///< I > 0, about the origin
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  ///< the origin (centre of mass)
+  Eigen::Vector2d p = Eigen::Vector2d::Zero();         ///< momentum @f$ \vec{p} @f$
+  double L = 0.0;                                      ///< angular momentum about the origin
+};
+
+/// @brief Throws InvalidInput unless mass and inertia are positive and finite and the rest finite.
+/// @param body the body to check
+/// @param name how the message names it
+void validate(const RigidBody& body, const char* name = "body");
+
+/// @brief @f$ \vec{v} = \vec{p}/m @f$, the velocity of the origin.
+/// @param body the body
+/// @return its translational velocity
+[[nodiscard]] Eigen::Vector2d velocity(const RigidBody& body);
+
+/// @brief @f$ \omega = L/I @f$.
+/// @param body the body
+/// @return its angular velocity
+[[nodiscard]] double angular_velocity(const RigidBody& body);
+
+/// @brief (3.1): @f$ E_k = E_r + E_t = L^2/2I + \|\vec{p}\|^2/2m @f$.
+/// @param body the body
+/// @return its kinetic energy
+[[nodiscard]] double kinetic_energy(const RigidBody& body);
+
+/// @brief Angular momentum about the world origin: @f$ L + \det(\text{position}, \vec{p}) @f$.
+/// @param body the body
+/// @return spin plus orbital angular momentum
+[[nodiscard]] double angular_momentum_about_origin(const RigidBody& body);
+
+/// @brief The velocity of the body's material point at @p point (section 3.2):
+/// @f$ \vec{v_v} = \frac{L}{I}[-r_y, r_x] + \frac{\vec{p}}{m} @f$.
+/// @param body the body
+/// @param point the point in world coordinates
+/// @return the point's velocity
+[[nodiscard]] Eigen::Vector2d point_velocity(const RigidBody& body, const Eigen::Vector2d& point);
+
+/// @brief The point velocity cast on the body's outward normal, positive towards the other body.
+/// @param body the body
+/// @param point the contact point in world coordinates
+/// @param n the body's outward unit normal there
+/// @return @f$ \frac{L\det(\vec{r},\vec{n})}{I} + \frac{\vec{p}\cdot\vec{n}}{m} @f$
+[[nodiscard]] double normal_velocity(const RigidBody& body, const Eigen::Vector2d& point,
+                                     const Eigen::Vector2d& n);
+
+/// @brief The body's share at one contact, (3.6) and (3.10) joined by the elasticity:
+/// @f$ a = \frac{\det(\vec{r},\vec{n})^2}{I} + \frac{\|\vec{n}\|^2}{m} @f$,
+/// @f$ b = e\left(\frac{L\det(\vec{r},\vec{n})}{I} + \frac{\vec{p}\cdot\vec{n}}{m}\right) @f$.
+/// @param body the body (validated)
+/// @param point the contact point in world coordinates
+/// @param n the body's own outward unit normal (validated)
+/// @param elasticity its elasticity (1 gives (3.10), 2 gives (3.6))
+/// @return (a, b)
+[[nodiscard]] ScalarContribution contribution(const RigidBody& body, const Eigen::Vector2d& point,
+                                              const Eigen::Vector2d& n, Elasticity elasticity);
+
+/// @brief The body after the impulse @f$ -\vec{n}\,F\,dt @f$ at @p point ((3.2), (3.3)):
+/// @f$ \vec{p}' = \vec{p} - \vec{n}\,F\,dt @f$,
+/// @f$ L' = L + \det(\vec{r}, -\vec{n}\,F\,dt) @f$.
+/// @param body the body before
+/// @param point where the impulse acts, in world coordinates
+/// @param n the body's outward unit normal there
+/// @param Fdt the impulse magnitude
+/// @return the body after
+[[nodiscard]] RigidBody apply_impulse(const RigidBody& body, const Eigen::Vector2d& point,
+                                      const Eigen::Vector2d& n, double Fdt);
+
+/// @brief Two rigid bodies colliding at one point, solved.
+struct Collision {
+  ScalarSolution solution;  ///< Fdt with the summed A and B (section 3.4)
+  RigidBody bumper;         ///< the bumper after
+  RigidBody wedge;          ///< the wedge after
+};
+
+/// @brief Collides two rigid bodies at one point: @f$ F\,dt\,(A_1 + A_2) = B_1 + B_2 @f$.
+/// @param bumper the body whose outward normal is @p n
+/// @param bumper_elasticity its elasticity
+/// @param wedge the body whose outward normal is -@p n
+/// @param wedge_elasticity its elasticity
+/// @param point the contact point in world coordinates
+/// @param n unit normal, outward from the bumper
+/// @return the impulse and both bodies after
+[[nodiscard]] Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
+                                const RigidBody& wedge, Elasticity wedge_elasticity,
+                                const Eigen::Vector2d& point, const Eigen::Vector2d& n);
+
+}  // namespace impulse::rigid_2d
