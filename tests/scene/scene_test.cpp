@@ -234,6 +234,7 @@ TEST_CASE("A box landing flat on two points, by hand", "[scene][section5]") {
     CHECK(r.momentum_before == Vector2d(0, -1));
     // Energy: 1/2 before, (e - 1)^2 / 2 after.
     CHECK(r.energy_after == Approx((e - 1) * (e - 1) / 2).margin(1e-14));
+    CHECK(r.energy_change == Approx((e - 1) * (e - 1) / 2 - 0.5).margin(1e-14));
     // (0, 1) . (upward velocity e - 1) of the box's corner on its own normal (0, -1): 1 - e.
     CHECK(r.contacts[0].approach_after == Approx(1 - e).margin(1e-14));
   }

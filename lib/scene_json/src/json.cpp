@@ -168,9 +168,21 @@ std::pair<std::size_t, std::size_t> line_and_column(std::string_view text, std::
   return {line, column};
 }
 
-// nlohmann-json's message without its "[json.exception…] parse error at line…, column…: ".
+// nlohmann-json's message without its "[json.exception…] parse error at line…, column…: ",
+// and with the bytes it quotes from the input that are not printable ASCII written as \xNN
+// (it quotes an ill-formed UTF-8 byte as it is).
 std::string reason(const json::exception& e) {
-  std::string text(e.what());
+  std::string text;
+  for (const char c : std::string_view(e.what())) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      text.push_back(c);
+    } else {
+      std::array<char, 8> escaped{};
+      std::snprintf(escaped.data(), escaped.size(), "\\x%02X", byte);
+      text.append(escaped.data());
+    }
+  }
   if (const std::size_t end = text.find("] "); end != std::string::npos) {
     text.erase(0, end + 2);
   }
@@ -251,7 +263,13 @@ class Reader {
       scene.bodies.push_back(body(bodies[i], element("bodies", i)));
     }
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-      names_.emplace(scene.bodies[i].name, i);  // the first of a repeated name; validate refuses
+      // Before the contacts look names up, so that a repeated name is reported as such.
+      const auto [seen, fresh] = names_.emplace(scene.bodies[i].name, i);
+      if (!fresh) {
+        fail(child(element("bodies", i), "name"), in_quotes(scene.bodies[i].name) +
+                                                      " is already the name of " +
+                                                      element("bodies", seen->second));
+      }
       ordered_names_.push_back(scene.bodies[i].name);
     }
     const json& contacts = required(document, "", "contacts", "the scene");
