@@ -137,9 +137,9 @@ Range parse_range(std::string_view text, std::string_view option) {
   // The quotient carries a rounding relative to its size, hence a tolerance relative to it.
   const double steps = (range.to - range.from) / range.step;
   const double nearest = std::round(steps);
-  const double whole =
-      std::abs(steps - nearest) <= grid_tolerance * std::max(1.0, steps) ? nearest
-                                                                        : std::floor(steps);
+  const double whole = std::abs(steps - nearest) <= grid_tolerance * std::max(1.0, steps)
+                           ? nearest
+                           : std::floor(steps);
   if (!(whole + 1.0 <= static_cast<double>(max_sweep_rows))) {
     std::string why("gives ");
     why.append(std::isfinite(whole) ? impulse::format_number(whole + 1.0) : "too many");
