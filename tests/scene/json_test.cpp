@@ -60,7 +60,7 @@ TEST_CASE("A scene file is read field by field", "[scene][json]") {
   CHECK(s.solver.dependent == impulse::DependentPolicy::minimum_norm);
 }
 
-TEST_CASE("A 1D scene lies on the x axis; rigid bodies read their rotation", "[scene][json]") {
+TEST_CASE("A 1D scene lies on the x axis, rigid bodies read their rotation", "[scene][json]") {
   const sc::Scene line = sc::parse_scene(R"({"dimension": 1, "bodies": [
       {"name": "p", "kind": "material", "mass": 2, "momentum": -3, "elasticity": 1.5},
       {"name": "q", "kind": "static"}],
@@ -214,7 +214,7 @@ TEST_CASE("The JSON report has the scene format's keys and numbers", "[scene][js
   CHECK(k["system"]["B"][0].get<double>() == Approx(3.0).epsilon(1e-15));
 }
 
-TEST_CASE("The JSON report of a 1D scene writes plain numbers; rigid bodies add rotation",
+TEST_CASE("The JSON report of a 1D scene writes plain numbers, rigid bodies add rotation",
           "[scene][json]") {
   const auto line = sc::to_json(sc::solve(sc::parse_scene(
       R"({"dimension": 1, "elasticity": 1, "bodies": [
