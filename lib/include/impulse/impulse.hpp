@@ -12,3 +12,4 @@
 #include "impulse/multipoint/multipoint.hpp"
 #include "impulse/one_d/one_d.hpp"
 #include "impulse/rigid_2d/rigid_2d.hpp"
+#include "impulse/scene/scene.hpp"

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Input and output of the verbs: scenes from a file or standard input, results to standard
+// output or, atomically, to a file.
+#pragma once
+
+#include <cstdio>
+#include <functional>
+#include <string>
+
+#include "impulse/scene/scene.hpp"
+
+namespace impulselab {
+
+/// The scene in @p path, or in standard input when @p path is "-" (messages then name
+/// "<stdin>"). Throws impulse::InvalidInput naming the file and the place.
+/// @param path a file or "-"
+/// @return the scene, valid
+impulse::scene::Scene read_scene(const std::string& path);
+
+/// How messages name the scene at @p path: the path itself, or "<stdin>" for "-".
+/// @param path a file or "-"
+/// @return the name
+std::string scene_name(const std::string& path);
+
+/// Writes what @p write produces to @p path, or to standard output when @p path is empty or "-".
+///
+/// A file is written atomically: @p write fills a temporary file in the same folder, which is
+/// flushed to disk and renamed over @p path only when all went well; on any failure (an
+/// exception from @p write, a failed write, a full disk, a folder that does not exist) the
+/// temporary file is removed, an existing @p path is left untouched and UsageError is thrown
+/// (WorkFailed and InvalidInput thrown by @p write pass through unchanged). A new file gets the
+/// permissions 0666 less the umask; a replaced file keeps its own.
+/// @param path the file, "-" or empty
+/// @param write writes the whole output to the stream it is given
+void write_output(const std::string& path, const std::function<void(std::FILE*)>& write);
+
+/// Whether output to standard output may use colour: it is a terminal, NO_COLOR is not set and
+/// TERM is not "dumb".
+/// @param path the --output value ("" or "-" is standard output)
+/// @return true when colour is wanted
+bool colour_wanted(const std::string& path);
+
+}  // namespace impulselab

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "solve_command.hpp"
+
+#include <memory>
+#include <string>
+
+#include "app.hpp"
+#include "impulse/core/error.hpp"
+#include "impulse/scene/json.hpp"
+#include "output.hpp"
+#include "text_report.hpp"
+
+namespace impulselab {
+
+namespace {
+
+struct SolveOptions {
+  std::string scene;
+  std::string format = "text";
+  std::string output;
+};
+
+void solve(const SolveOptions& options) {
+  const impulse::scene::Scene scene = read_scene(options.scene);
+  const impulse::scene::Result result = impulse::scene::solve(scene);
+  if (result.status != impulse::SolveStatus::success) {
+    // Every number of the scene is a valid double, but their products or sums are not: the
+    // input is beyond what double precision can solve, so it is refused like other bad input.
+    throw impulse::InvalidInput(
+        scene_name(options.scene) +
+        ": the numbers overflow: A·Fdt = B or the state after the collision is not finite "
+        "(masses, inertias, velocities or elasticities too extreme for double precision)");
+  }
+  const std::string text = options.format == "json" ? impulse::scene::to_json(result).dump(2) + "\n"
+                                                    : text_report(result, scene_name(options.scene),
+                                                                  colour_wanted(options.output));
+  write_output(options.output, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
+}
+
+}  // namespace
+
+void add_solve_command(CLI::App& app) {
+  auto options = std::make_shared<SolveOptions>();
+  CLI::App* verb = app.add_subcommand(
+      "solve",
+      "Solve one scene: the impulses, each body before and after, energy, momentum, each "
+      "contact's approach speed, and the system A·Fdt = B with its rank and residual.");
+  verb->add_option("scene", options->scene,
+                   "the scene file (JSON, see the scene format); - for "
+                   "standard input")
+      ->required();
+  verb->add_option("--format,-f", options->format, "text (for people, the default) or json")
+      ->check(CLI::IsMember({"text", "json"}));
+  verb->add_option("--output,-o", options->output,
+                   "write here instead of standard output (atomically: all or nothing)");
+  verb->callback([options]() { solve(*options); });
+}
+
+}  // namespace impulselab

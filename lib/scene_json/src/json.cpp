@@ -1,0 +1,666 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "impulse/scene/json.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <set>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "impulse/core/error.hpp"
+
+namespace impulse::scene {
+
+namespace {
+
+using Eigen::Vector2d;
+using nlohmann::json;
+
+// ---------------------------------------------------------------------------------------------
+// Places in the document, as messages name them: "bodies[1].mass", "solver.dependent".
+
+std::string child(std::string_view path, std::string_view key) {
+  std::string result(path);
+  if (!result.empty()) {
+    result.append(".");
+  }
+  result.append(key);
+  return result;
+}
+
+std::string element(std::string_view path, std::size_t index) {
+  std::string result(path);
+  result.append("[").append(std::to_string(index)).append("]");
+  return result;
+}
+
+std::string in_quotes(std::string_view text) {
+  std::string result("\"");
+  result.append(text).append("\"");
+  return result;
+}
+
+// What a value is, for "expected …, got …".
+std::string describe(const json& value) {
+  switch (value.type()) {
+    case json::value_t::null:
+      return "null";
+    case json::value_t::boolean:
+      return value.get<bool>() ? "true" : "false";
+    case json::value_t::string: {
+      std::string text = value.dump(-1, ' ', true);
+      if (text.size() > 40) {
+        text = text.substr(0, 36).append("…\"");
+      }
+      return "the string " + text;
+    }
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned:
+    case json::value_t::number_float:
+      return "the number " + value.dump();
+    case json::value_t::array:
+      return "an array of " + std::to_string(value.size()) +
+             (value.size() == 1 ? " element" : " elements");
+    case json::value_t::object:
+      return "an object";
+    default:
+      return "a value of another type";
+  }
+}
+
+// Edit distance, for "did you mean" on an unknown key.
+std::size_t distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) {
+    row[j] = j;
+  }
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0U : 1U)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// ---------------------------------------------------------------------------------------------
+// Parsing: nlohmann-json builds the document; a callback follows the place being read, so that
+// a repeated key and a number out of range can be named (the parser does not say where).
+
+struct Frame {
+  bool object = true;
+  std::size_t index = 0;  // arrays: the element being read
+  std::string key;        // objects: the member being read
+  std::set<std::string, std::less<>> keys;
+};
+
+class Tracker {
+ public:
+  explicit Tracker(std::string_view source) : source_(source) {}
+
+  std::string place() const {
+    std::string path;
+    for (const Frame& f : frames_) {
+      path = f.object ? (f.key.empty() ? path : child(path, f.key)) : element(path, f.index);
+    }
+    return path;
+  }
+
+  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+        frames_.push_back({true, 0, {}, {}});
+        break;
+      case json::parse_event_t::array_start:
+        frames_.push_back({false, 0, {}, {}});
+        break;
+      case json::parse_event_t::key: {
+        Frame& top = frames_.back();
+        top.key = parsed.get<std::string>();
+        if (!top.keys.insert(top.key).second) {
+          std::string message(source_);
+          message.append(": ").append(place()).append(": key repeated in the same object");
+          throw InvalidInput(message);
+        }
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        frames_.pop_back();
+        next_element();
+        break;
+      case json::parse_event_t::value:
+        next_element();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  void next_element() {
+    if (!frames_.empty() && !frames_.back().object) {
+      ++frames_.back().index;
+    }
+  }
+
+  std::string source_;
+  std::vector<Frame> frames_;
+};
+
+// The line and column (both from 1) of the byte nlohmann-json reports: the count of bytes read
+// when the error was found, so the offending byte is the one before it.
+std::pair<std::size_t, std::size_t> line_and_column(std::string_view text, std::size_t byte) {
+  const std::size_t offset = std::min(byte == 0 ? 0 : byte - 1, text.size());
+  const std::string_view before = text.substr(0, offset);
+  const auto line = static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n')) + 1;
+  const std::size_t newline = before.rfind('\n');
+  const std::size_t column = newline == std::string_view::npos ? offset + 1 : offset - newline;
+  return {line, column};
+}
+
+// nlohmann-json's message without its "[json.exception…] parse error at line…, column…: ",
+// and with the bytes it quotes from the input that are not printable ASCII written as \xNN
+// (it quotes an ill-formed UTF-8 byte as it is).
+std::string reason(const json::exception& e) {
+  std::string text;
+  for (const char c : std::string_view(e.what())) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      text.push_back(c);
+    } else {
+      std::array<char, 8> escaped{};
+      std::snprintf(escaped.data(), escaped.size(), "\\x%02X", byte);
+      text.append(escaped.data());
+    }
+  }
+  if (const std::size_t end = text.find("] "); end != std::string::npos) {
+    text.erase(0, end + 2);
+  }
+  if (text.starts_with("parse error")) {
+    if (const std::size_t colon = text.find(": "); colon != std::string::npos) {
+      text.erase(0, colon + 2);
+    }
+  }
+  return text;
+}
+
+json parse_document(std::string_view text, std::string_view source) {
+  Tracker tracker(source);
+  try {
+    return json::parse(text.begin(), text.end(), std::ref(tracker));
+  } catch (const json::parse_error& e) {
+    const auto [line, column] = line_and_column(text, e.byte);
+    std::string message(source);
+    message.append(": line ").append(std::to_string(line));
+    message.append(", column ").append(std::to_string(column)).append(": ").append(reason(e));
+    throw InvalidInput(message);
+  } catch (const json::exception& e) {
+    // e.g. out_of_range.406, a number beyond the range of doubles: the tracker knows where.
+    std::string message(source);
+    const std::string place = tracker.place();
+    message.append(": ").append(place.empty() ? "(top level)" : place).append(": ");
+    message.append(reason(e));
+    throw InvalidInput(message);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reading the document into a Scene.
+
+const std::vector<std::string_view> top_keys{"dimension", "elasticity", "bodies", "contacts",
+                                             "solver"};
+const std::vector<std::string_view> body_keys{"name",
+                                              "kind",
+                                              "mass",
+                                              "inertia",
+                                              "position",
+                                              "velocity",
+                                              "momentum",
+                                              "angular_velocity",
+                                              "angular_momentum",
+                                              "elasticity"};
+const std::vector<std::string_view> material_keys{"name",     "kind",     "mass",
+                                                  "velocity", "momentum", "elasticity"};
+const std::vector<std::string_view> rigid_keys = body_keys;
+const std::vector<std::string_view> static_keys{"name", "kind"};
+const std::vector<std::string_view> contact_keys{"bumper", "wedge", "normal", "point"};
+const std::vector<std::string_view> solver_keys{"dependent", "inconsistent"};
+
+std::string join(const std::vector<std::string_view>& words) {
+  std::string text;
+  for (const std::string_view word : words) {
+    text.append(text.empty() ? "" : ", ").append(word);
+  }
+  return text;
+}
+
+class Reader {
+ public:
+  explicit Reader(std::string_view source) : source_(source) {}
+
+  Scene scene(const json& document) {
+    require_object(document, "", "the scene, an object");
+    refuse_unknown_keys(document, "", top_keys, top_keys, "");
+    Scene scene;
+    scene.dimension = dimension(required(document, "", "dimension", "the scene"));
+    dimension_ = scene.dimension;
+    if (const json* e = optional(document, "elasticity")) {
+      scene.elasticity = number(*e, "elasticity");
+    }
+    const json& bodies = required(document, "", "bodies", "the scene");
+    require_array(bodies, "bodies", "an array of bodies");
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      scene.bodies.push_back(body(bodies[i], element("bodies", i)));
+    }
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+      // Before the contacts look names up, so that a repeated name is reported as such.
+      const auto [seen, fresh] = names_.emplace(scene.bodies[i].name, i);
+      if (!fresh) {
+        fail(child(element("bodies", i), "name"), in_quotes(scene.bodies[i].name) +
+                                                      " is already the name of " +
+                                                      element("bodies", seen->second));
+      }
+      ordered_names_.push_back(scene.bodies[i].name);
+    }
+    const json& contacts = required(document, "", "contacts", "the scene");
+    require_array(contacts, "contacts", "an array of contacts");
+    for (std::size_t v = 0; v < contacts.size(); ++v) {
+      scene.contacts.push_back(contact(contacts[v], element("contacts", v)));
+    }
+    if (const json* s = optional(document, "solver")) {
+      scene.solver = solver(*s, "solver");
+    }
+    return scene;
+  }
+
+ private:
+  [[noreturn]] void fail(std::string_view path, std::string_view message) const {
+    std::string text(source_);
+    text.append(": ").append(path.empty() ? "(top level)" : path).append(": ").append(message);
+    throw InvalidInput(text);
+  }
+
+  [[noreturn]] void expected(const json& value, std::string_view path,
+                             std::string_view what) const {
+    std::string message("expected ");
+    message.append(what).append(", got ").append(describe(value));
+    fail(path, message);
+  }
+
+  void require_object(const json& value, std::string_view path, std::string_view what) const {
+    if (!value.is_object()) {
+      expected(value, path, what);
+    }
+  }
+
+  void require_array(const json& value, std::string_view path, std::string_view what) const {
+    if (!value.is_array()) {
+      expected(value, path, what);
+    }
+  }
+
+  // Keys outside `allowed`: a key of `known` that does not apply here, or a typo.
+  void refuse_unknown_keys(const json& object, std::string_view path,
+                           const std::vector<std::string_view>& allowed,
+                           const std::vector<std::string_view>& known,
+                           std::string_view kind) const {
+    for (const auto& [key, value] : object.items()) {
+      if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) {
+        continue;
+      }
+      if (std::find(known.begin(), known.end(), key) != known.end()) {
+        std::string message("does not apply to a ");
+        message.append(kind).append(" body (its keys are ").append(join(allowed)).append(")");
+        fail(child(path, key), message);
+      }
+      std::string message("unknown key");
+      std::string_view nearest;
+      std::size_t best = 3;  // suggest only close matches
+      for (const std::string_view candidate : known) {
+        const std::size_t d = distance(key, candidate);
+        if (d < best && d < candidate.size()) {
+          best = d;
+          nearest = candidate;
+        }
+      }
+      if (!nearest.empty()) {
+        message.append(" (did you mean ").append(in_quotes(nearest)).append("?)");
+      }
+      message.append("; expected one of ").append(join(known));
+      fail(child(path, key), message);
+    }
+  }
+
+  static const json* optional(const json& object, std::string_view key) {
+    const auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+  }
+
+  const json& required(const json& object, std::string_view path, std::string_view key,
+                       std::string_view owner) const {
+    if (const json* value = optional(object, key)) {
+      return *value;
+    }
+    std::string message("missing ");
+    message.append(in_quotes(key)).append(", which ").append(owner).append(" needs");
+    fail(path, message);
+  }
+
+  double number(const json& value, std::string_view path) const {
+    if (!value.is_number()) {
+      expected(value, path, "a number");
+    }
+    return value.get<double>();
+  }
+
+  std::string string(const json& value, std::string_view path) const {
+    if (!value.is_string()) {
+      expected(value, path, "a string");
+    }
+    return value.get<std::string>();
+  }
+
+  int dimension(const json& value) const {
+    if (value.is_number()) {
+      const double d = value.get<double>();
+      if (d == 1.0 || d == 2.0) {
+        return static_cast<int>(d);
+      }
+    }
+    expected(value, "dimension", "1 or 2");
+  }
+
+  // A vector of the scene's dimension: a number in 1D (the x coordinate), [x, y] in 2D.
+  Vector2d vector(const json& value, std::string_view path) const {
+    if (dimension_ == 1) {
+      if (!value.is_number()) {
+        expected(value, path, "a number (the scene has dimension 1)");
+      }
+      return {value.get<double>(), 0.0};
+    }
+    if (!value.is_array() || value.size() != 2) {
+      expected(value, path, "[x, y], an array of 2 numbers (the scene has dimension 2)");
+    }
+    return {number(value[0], element(path, 0)), number(value[1], element(path, 1))};
+  }
+
+  template <typename T>
+  T member_of(const json& value, std::string_view path,
+              const std::vector<std::pair<std::string_view, T>>& choices) const {
+    const std::string text = string(value, path);
+    std::string names;
+    for (const auto& [name, choice] : choices) {
+      if (text == name) {
+        return choice;
+      }
+      names.append(names.empty() ? "" : ", ").append(in_quotes(name));
+    }
+    std::string message("expected one of ");
+    message.append(names).append(", got ").append(in_quotes(text));
+    fail(path, message);
+  }
+
+  Body body(const json& value, const std::string& path) const {
+    require_object(value, path, "a body, an object");
+    refuse_unknown_keys(value, path, body_keys, body_keys, "");
+    Body b;
+    b.name = string(required(value, path, "name", "every body"), child(path, "name"));
+    b.kind = member_of<BodyKind>(required(value, path, "kind", "every body"), child(path, "kind"),
+                                 {{"material", BodyKind::material},
+                                  {"rigid", BodyKind::rigid},
+                                  {"static", BodyKind::static_body}});
+    const std::string kind(to_string(b.kind));
+    switch (b.kind) {
+      case BodyKind::material:
+        refuse_unknown_keys(value, path, material_keys, body_keys, kind);
+        break;
+      case BodyKind::rigid:
+        refuse_unknown_keys(value, path, rigid_keys, body_keys, kind);
+        break;
+      case BodyKind::static_body:
+        refuse_unknown_keys(value, path, static_keys, body_keys, kind);
+        return b;  // immovable: nothing more to read
+    }
+    if (b.kind == BodyKind::rigid && dimension_ != 2) {
+      fail(child(path, "kind"), "a rigid body needs dimension 2, this scene has dimension 1");
+    }
+    const std::string owner = "a " + kind + " body";
+    b.mass = number(required(value, path, "mass", owner), child(path, "mass"));
+    const json* velocity = optional(value, "velocity");
+    const json* momentum = optional(value, "momentum");
+    if (velocity != nullptr && momentum != nullptr) {
+      fail(path, "give either \"velocity\" or \"momentum\", not both");
+    }
+    if (velocity == nullptr && momentum == nullptr) {
+      fail(path, "missing \"velocity\" (or \"momentum\"), which " + owner + " needs");
+    }
+    b.linear_given = velocity != nullptr ? Given::velocity : Given::momentum;
+    b.linear = vector(velocity != nullptr ? *velocity : *momentum,
+                      child(path, velocity != nullptr ? "velocity" : "momentum"));
+    if (b.kind == BodyKind::rigid) {
+      b.inertia = number(required(value, path, "inertia", owner), child(path, "inertia"));
+      b.position = vector(required(value, path, "position", owner), child(path, "position"));
+      const json* omega = optional(value, "angular_velocity");
+      const json* L = optional(value, "angular_momentum");
+      if (omega != nullptr && L != nullptr) {
+        fail(path, "give either \"angular_velocity\" or \"angular_momentum\", not both");
+      }
+      b.angular_given = L != nullptr ? Given::momentum : Given::velocity;
+      if (omega != nullptr) {
+        b.angular = number(*omega, child(path, "angular_velocity"));
+      } else if (L != nullptr) {
+        b.angular = number(*L, child(path, "angular_momentum"));
+      }
+    }
+    if (const json* e = optional(value, "elasticity")) {
+      b.elasticity = number(*e, child(path, "elasticity"));
+    }
+    return b;
+  }
+
+  std::size_t body_named(const json& value, const std::string& path) const {
+    const std::string name = string(value, path);
+    if (const auto it = names_.find(name); it != names_.end()) {
+      return it->second;
+    }
+    std::string known;
+    std::size_t listed = 0;
+    for (const std::string& other : ordered_names_) {
+      if (++listed > 8) {
+        known.append(", …");
+        break;
+      }
+      known.append(known.empty() ? "" : ", ").append(in_quotes(other));
+    }
+    fail(path, "no body is named " + in_quotes(name) + " (the bodies are " + known + ")");
+  }
+
+  Contact contact(const json& value, const std::string& path) const {
+    require_object(value, path, "a contact, an object");
+    refuse_unknown_keys(value, path, contact_keys, contact_keys, "");
+    Contact c;
+    c.bumper = body_named(required(value, path, "bumper", "every contact"), child(path, "bumper"));
+    c.wedge = body_named(required(value, path, "wedge", "every contact"), child(path, "wedge"));
+    c.normal = vector(required(value, path, "normal", "every contact"), child(path, "normal"));
+    if (const json* point = optional(value, "point")) {
+      c.point = vector(*point, child(path, "point"));
+    }
+    return c;
+  }
+
+  SolverOptions solver(const json& value, const std::string& path) const {
+    require_object(value, path, "an object with \"dependent\" and/or \"inconsistent\"");
+    refuse_unknown_keys(value, path, solver_keys, solver_keys, "");
+    SolverOptions options;
+    if (const json* d = optional(value, "dependent")) {
+      options.dependent = member_of<DependentPolicy>(
+          *d, child(path, "dependent"),
+          {{to_string(DependentPolicy::minimum_norm), DependentPolicy::minimum_norm},
+           {to_string(DependentPolicy::basic), DependentPolicy::basic}});
+    }
+    if (const json* i = optional(value, "inconsistent")) {
+      options.inconsistent = member_of<InconsistentPolicy>(
+          *i, child(path, "inconsistent"),
+          {{to_string(InconsistentPolicy::least_squares), InconsistentPolicy::least_squares},
+           {to_string(InconsistentPolicy::drop_equation), InconsistentPolicy::drop_equation}});
+    }
+    return options;
+  }
+
+  std::string source_;
+  int dimension_ = 2;
+  std::unordered_map<std::string, std::size_t> names_;
+  std::vector<std::string> ordered_names_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Writing the report.
+
+double clean(double x) {
+  return x + 0.0;  // -0 becomes +0; everything else is unchanged
+}
+
+nlohmann::ordered_json vector_json(const Vector2d& v, int dimension) {
+  if (dimension == 1) {
+    return clean(v.x());
+  }
+  return nlohmann::ordered_json::array({clean(v.x()), clean(v.y())});
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, std::string_view source) {
+  const json document = parse_document(text, source);
+  Scene scene;
+  try {
+    scene = Reader(source).scene(document);
+  } catch (const json::exception& e) {
+    // Not expected (every access is checked first), but never let it escape unexplained.
+    std::string message(source);
+    message.append(": ").append(reason(e));
+    throw InvalidInput(message);
+  }
+  try {
+    validate(scene);
+  } catch (const InvalidInput& e) {
+    std::string message(source);
+    message.append(": ").append(e.what());
+    throw InvalidInput(message);
+  }
+  return scene;
+}
+
+std::string read_file(const std::string& path) {
+  const auto cannot_read = [&](const std::string& why) {
+    std::string message(path);
+    message.append(": cannot read: ").append(why);
+    return InvalidInput(message);
+  };
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw cannot_read("it is a directory");
+  }
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                             &std::fclose);
+  if (!file) {
+    throw cannot_read(std::strerror(errno));
+  }
+  std::string text;
+  std::array<char, 65536> buffer{};
+  std::size_t count = 0;
+  while ((count = std::fread(buffer.data(), 1, buffer.size(), file.get())) > 0) {
+    text.append(buffer.data(), count);
+  }
+  if (std::ferror(file.get()) != 0) {
+    throw cannot_read(std::strerror(errno));
+  }
+  return text;
+}
+
+Scene load_scene(const std::string& path) {
+  return parse_scene(read_file(path), path);
+}
+
+nlohmann::ordered_json to_json(const Result& result) {
+  using ojson = nlohmann::ordered_json;
+  const int d = result.dimension;
+  ojson out = ojson::object();
+
+  ojson impulses = ojson::array();
+  for (const ImpulseReport& i : result.impulses) {
+    impulses.push_back({{"contact", i.contact},
+                        {"bumper", i.bumper},
+                        {"wedge", i.wedge},
+                        {"magnitude", clean(i.magnitude)},
+                        {"on_bumper", vector_json(i.on_bumper, d)}});
+  }
+  out["impulses"] = std::move(impulses);
+
+  ojson bodies = ojson::array();
+  for (const BodyReport& b : result.bodies) {
+    ojson body = {{"name", b.name},
+                  {"velocity", vector_json(b.after.velocity, d)},
+                  {"momentum", vector_json(b.after.momentum, d)}};
+    if (b.kind == BodyKind::rigid) {
+      body["angular_velocity"] = clean(b.after.angular_velocity);
+      body["angular_momentum"] = clean(b.after.angular_momentum);
+    }
+    bodies.push_back(std::move(body));
+  }
+  out["bodies"] = std::move(bodies);
+
+  out["energy"] = {{"before", clean(result.energy_before)},
+                   {"after", clean(result.energy_after)},
+                   {"change", clean(result.energy_change)}};
+  out["momentum"] = {{"before", vector_json(result.momentum_before, d)},
+                     {"after", vector_json(result.momentum_after, d)}};
+
+  ojson contacts = ojson::array();
+  for (const ContactReport& c : result.contacts) {
+    contacts.push_back({{"contact", c.contact},
+                        {"approach_before", clean(c.approach_before)},
+                        {"approach_after", clean(c.approach_after)}});
+  }
+  out["contacts"] = std::move(contacts);
+
+  const Solution& s = result.system;
+  ojson system = ojson::object();
+  if (s.A.rows() == s.B.size() && s.A.cols() == s.B.size() && s.A.size() > 0) {
+    ojson A = ojson::array();
+    for (Eigen::Index r = 0; r < s.A.rows(); ++r) {
+      ojson row = ojson::array();
+      for (Eigen::Index c = 0; c < s.A.cols(); ++c) {
+        row.push_back(clean(s.A(r, c)));
+      }
+      A.push_back(std::move(row));
+    }
+    system["A"] = std::move(A);
+  } else {
+    system["A"] = nullptr;  // not formed by the solver
+  }
+  ojson B = ojson::array();
+  for (Eigen::Index r = 0; r < s.B.size(); ++r) {
+    B.push_back(clean(s.B(r)));
+  }
+  system["B"] = std::move(B);
+  system["rank"] = s.rank;
+  system["residual"] = clean(s.residual);
+  system["dependent"] = s.dependent;
+  system["consistent"] = s.consistent;
+  system["policy"] = std::string(to_string(s.options.dependent));
+  system["condition_estimate"] = s.condition_estimate;
+  out["system"] = std::move(system);
+  return out;
+}
+
+}  // namespace impulse::scene

@@ -1,0 +1,364 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "impulse/scene/scene.hpp"
+
+#include <cmath>
+#include <unordered_map>
+#include <utility>
+#include <variant>
+
+#include "impulse/core/error.hpp"
+#include "impulse/material_2d/material_2d.hpp"
+#include "impulse/rigid_2d/rigid_2d.hpp"
+
+namespace impulse::scene {
+
+std::string_view to_string(BodyKind kind) {
+  switch (kind) {
+    case BodyKind::material:
+      return "material";
+    case BodyKind::rigid:
+      return "rigid";
+    case BodyKind::static_body:
+      return "static";
+  }
+  return "?";
+}
+
+namespace {
+
+using Eigen::Vector2d;
+
+// "bodies[2]", "contacts[0].normal": the places of the scene format, as messages name them.
+std::string at(std::string_view array, std::size_t index) {
+  std::string place(array);
+  place.append("[").append(std::to_string(index)).append("]");
+  return place;
+}
+
+std::string member(std::string_view place, std::string_view key) {
+  std::string path(place);
+  path.append(".").append(key);
+  return path;
+}
+
+[[noreturn]] void refuse(const std::string& path, std::string_view message) {
+  std::string text(path);
+  text.append(": ").append(message);
+  throw InvalidInput(text);
+}
+
+std::string in_quotes(std::string_view name) {
+  std::string text("\"");
+  text.append(name).append("\"");
+  return text;
+}
+
+// A vector as the scene file writes it: a plain number in 1D, [x, y] in 2D.
+std::string show(const Vector2d& v, int dimension) {
+  if (dimension == 1 && v.y() == 0.0) {
+    return format_number(v.x());
+  }
+  std::string text("[");
+  text.append(format_number(v.x())).append(", ").append(format_number(v.y())).append("]");
+  return text;
+}
+
+std::string_view key_of(Given given, bool angular) {
+  if (angular) {
+    return given == Given::velocity ? "angular_velocity" : "angular_momentum";
+  }
+  return given == Given::velocity ? "velocity" : "momentum";
+}
+
+// Masses and inertias: positive, finite, and with an inverse that is a double too (A holds 1/m).
+void require_positive_inverse(const std::string& path, double value) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    refuse(path, "must be positive and finite, got " + format_number(value));
+  }
+  if (!std::isfinite(1.0 / value)) {
+    refuse(path, "is too small: its inverse overflows a double, got " + format_number(value));
+  }
+}
+
+void require_finite_vector(const std::string& path, const Vector2d& v, int dimension) {
+  if (!v.allFinite()) {
+    refuse(path, "must be finite, got " + show(v, dimension));
+  }
+  if (dimension == 1 && v.y() != 0.0) {
+    refuse(path, "must lie on the x axis in a 1D scene (y = 0), got " + show(v, 2));
+  }
+}
+
+void require_elasticity(const std::string& path, double value) {
+  if (!(std::isfinite(value) && value >= 0.0)) {
+    refuse(path, "must be finite and at least 0, got " + format_number(value));
+  }
+}
+
+// The motion as given, and the other one of the pair (m v or p / m), must both be doubles.
+void require_motion(const std::string& place, const Body& body, int dimension) {
+  const std::string path = member(place, key_of(body.linear_given, false));
+  require_finite_vector(path, body.linear, dimension);
+  const Vector2d other = body.linear_given == Given::velocity ? Vector2d(body.mass * body.linear)
+                                                              : Vector2d(body.linear / body.mass);
+  if (!other.allFinite()) {
+    refuse(path, std::string(body.linear_given == Given::velocity ? "mass times velocity"
+                                                                  : "momentum over mass") +
+                     " overflows a double: mass " + format_number(body.mass) + ", " +
+                     std::string(key_of(body.linear_given, false)) + " " +
+                     show(body.linear, dimension));
+  }
+  if (body.kind != BodyKind::rigid) {
+    return;
+  }
+  const std::string angular_path = member(place, key_of(body.angular_given, true));
+  if (!std::isfinite(body.angular)) {
+    refuse(angular_path, "must be finite, got " + format_number(body.angular));
+  }
+  const double angular_other = body.angular_given == Given::velocity ? body.inertia * body.angular
+                                                                     : body.angular / body.inertia;
+  if (!std::isfinite(angular_other)) {
+    refuse(angular_path, "overflows a double once combined with the inertia " +
+                             format_number(body.inertia) + ", got " + format_number(body.angular));
+  }
+}
+
+void validate_body(const Scene& scene, std::size_t i,
+                   std::unordered_map<std::string_view, std::size_t>& names) {
+  const Body& body = scene.bodies[i];
+  const std::string place = at("bodies", i);
+  if (body.name.empty()) {
+    refuse(member(place, "name"), "must not be empty");
+  }
+  const auto [seen, fresh] = names.emplace(body.name, i);
+  if (!fresh) {
+    refuse(member(place, "name"),
+           in_quotes(body.name) + " is already the name of " + at("bodies", seen->second));
+  }
+  if (body.kind == BodyKind::static_body) {
+    return;  // immovable: nothing else of it is used
+  }
+  if (body.kind == BodyKind::rigid && scene.dimension != 2) {
+    refuse(member(place, "kind"), "a rigid body needs dimension 2, this scene has dimension " +
+                                      std::to_string(scene.dimension));
+  }
+  require_positive_inverse(member(place, "mass"), body.mass);
+  if (body.kind == BodyKind::rigid) {
+    require_positive_inverse(member(place, "inertia"), body.inertia);
+    require_finite_vector(member(place, "position"), body.position, scene.dimension);
+  }
+  require_motion(place, body, scene.dimension);
+  if (body.elasticity) {
+    require_elasticity(member(place, "elasticity"), *body.elasticity);
+  } else if (!scene.elasticity) {
+    refuse(place,
+           "needs an elasticity: give it \"elasticity\" or give the scene a default "
+           "\"elasticity\"");
+  }
+}
+
+void validate_contact(const Scene& scene, std::size_t v) {
+  const Contact& c = scene.contacts[v];
+  const std::string place = at("contacts", v);
+  for (const auto& [role, index] : {std::pair{"bumper", c.bumper}, std::pair{"wedge", c.wedge}}) {
+    if (index >= scene.bodies.size()) {
+      refuse(member(place, role), "must name one of the " + std::to_string(scene.bodies.size()) +
+                                      " bodies, got index " + std::to_string(index));
+    }
+  }
+  const Body& bumper = scene.bodies[c.bumper];
+  const Body& wedge = scene.bodies[c.wedge];
+  if (c.bumper == c.wedge) {
+    refuse(place, "bumper and wedge are the same body " + in_quotes(bumper.name) +
+                      ": a body cannot be in contact with itself");
+  }
+  if (bumper.kind == BodyKind::static_body && wedge.kind == BodyKind::static_body) {
+    refuse(place, "joins two static bodies, " + in_quotes(bumper.name) + " and " +
+                      in_quotes(wedge.name) + ": at least one of them must be able to move");
+  }
+  const std::string normal = member(place, "normal");
+  const std::string tolerance = format_number(unit_normal_tolerance);
+  if (scene.dimension == 1) {
+    if (!(c.normal.y() == 0.0 && std::abs(std::abs(c.normal.x()) - 1.0) <= unit_normal_tolerance)) {
+      refuse(normal, "must be +1 or -1 (within " + tolerance + "), got " + show(c.normal, 1));
+    }
+  } else {
+    if (!c.normal.allFinite()) {
+      refuse(normal, "must be a finite unit vector, got " + show(c.normal, 2));
+    }
+    const double length = c.normal.norm();
+    if (!(std::abs(length - 1.0) <= unit_normal_tolerance)) {
+      refuse(normal, "must be a unit vector (length 1 within " + tolerance + "), got " +
+                         show(c.normal, 2) + " of length " + format_number(length));
+    }
+  }
+  if (c.point) {
+    if (!c.point->allFinite()) {
+      refuse(member(place, "point"), "must be finite, got " + show(*c.point, scene.dimension));
+    }
+  } else {
+    for (const Body* body : {&bumper, &wedge}) {
+      if (body->kind == BodyKind::rigid) {
+        refuse(place,
+               "missing \"point\": it is needed because " + in_quotes(body->name) + " is rigid");
+      }
+    }
+  }
+}
+
+Motion motion_of(const multipoint::Body& body) {
+  Motion m;
+  if (const auto* mass = std::get_if<material_2d::PointMass>(&body)) {
+    m.velocity = material_2d::velocity(*mass);
+    m.momentum = mass->p;
+  } else if (const auto* rigid = std::get_if<rigid_2d::RigidBody>(&body)) {
+    m.velocity = rigid_2d::velocity(*rigid);
+    m.momentum = rigid->p;
+    m.angular_velocity = rigid_2d::angular_velocity(*rigid);
+    m.angular_momentum = rigid->L;
+  }
+  return m;  // a static body: all zero
+}
+
+bool finite(const Motion& m) {
+  return m.velocity.allFinite() && m.momentum.allFinite() && std::isfinite(m.angular_velocity) &&
+         std::isfinite(m.angular_momentum);
+}
+
+bool all_finite(const Result& r) {
+  bool ok = std::isfinite(r.energy_before) && std::isfinite(r.energy_after) &&
+            std::isfinite(r.energy_change) && r.momentum_before.allFinite() &&
+            r.momentum_after.allFinite() && r.system.Fdt.allFinite() &&
+            std::isfinite(r.system.residual);
+  for (const BodyReport& b : r.bodies) {
+    ok = ok && finite(b.before) && finite(b.after) && std::isfinite(b.energy_before) &&
+         std::isfinite(b.energy_after);
+  }
+  for (const ImpulseReport& i : r.impulses) {
+    ok = ok && i.on_bumper.allFinite();
+  }
+  for (const ContactReport& c : r.contacts) {
+    ok = ok && std::isfinite(c.approach_before) && std::isfinite(c.approach_after);
+  }
+  return ok;
+}
+
+}  // namespace
+
+void validate(const Scene& scene) {
+  if (scene.dimension != 1 && scene.dimension != 2) {
+    refuse("dimension", "must be 1 or 2, got " + std::to_string(scene.dimension));
+  }
+  if (scene.elasticity) {
+    require_elasticity("elasticity", *scene.elasticity);
+  }
+  if (scene.bodies.empty()) {
+    refuse("bodies", "must hold at least one body, got none");
+  }
+  if (scene.contacts.empty()) {
+    refuse("contacts", "must hold at least one contact, got none");
+  }
+  std::unordered_map<std::string_view, std::size_t> names;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    validate_body(scene, i, names);
+  }
+  for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
+    validate_contact(scene, v);
+  }
+}
+
+std::vector<Elasticity> elasticities(const Scene& scene) {
+  std::vector<Elasticity> result;
+  result.reserve(scene.bodies.size());
+  for (const Body& body : scene.bodies) {
+    if (body.kind == BodyKind::static_body) {
+      result.emplace_back();  // unused: a static body contributes nothing
+    } else {
+      result.emplace_back(body.elasticity ? *body.elasticity : scene.elasticity.value_or(1.0));
+    }
+  }
+  return result;
+}
+
+std::vector<multipoint::Body> model_bodies(const Scene& scene) {
+  std::vector<multipoint::Body> result;
+  result.reserve(scene.bodies.size());
+  for (const Body& body : scene.bodies) {
+    const Vector2d p =
+        body.linear_given == Given::velocity ? Vector2d(body.mass * body.linear) : body.linear;
+    switch (body.kind) {
+      case BodyKind::material:
+        result.emplace_back(material_2d::PointMass{body.mass, p});
+        break;
+      case BodyKind::rigid: {
+        const double L =
+            body.angular_given == Given::velocity ? body.inertia * body.angular : body.angular;
+        result.emplace_back(rigid_2d::RigidBody{body.mass, body.inertia, body.position, p, L});
+        break;
+      }
+      case BodyKind::static_body:
+        result.emplace_back(multipoint::StaticBody{});
+        break;
+    }
+  }
+  return result;
+}
+
+std::vector<multipoint::Contact> model_contacts(const Scene& scene) {
+  std::vector<multipoint::Contact> result;
+  result.reserve(scene.contacts.size());
+  for (const Contact& c : scene.contacts) {
+    result.push_back({c.bumper, c.wedge, c.normal, c.point.value_or(Vector2d::Zero())});
+  }
+  return result;
+}
+
+Scene with_elasticity(Scene scene, double value) {
+  scene.elasticity = value;
+  for (Body& body : scene.bodies) {
+    body.elasticity.reset();
+  }
+  return scene;
+}
+
+Result solve(const Scene& scene) {
+  validate(scene);
+  const std::vector<multipoint::Body> before = model_bodies(scene);
+  const std::vector<multipoint::Contact> contacts = model_contacts(scene);
+  const std::vector<Elasticity> es = elasticities(scene);
+  multipoint::Resolution resolution = multipoint::resolve(before, es, contacts, scene.solver);
+
+  Result result;
+  result.dimension = scene.dimension;
+  result.status = resolution.solution.status;
+  result.system = std::move(resolution.solution);
+  const std::vector<multipoint::Body>& after = resolution.after;
+
+  for (std::size_t k = 0; k < before.size(); ++k) {
+    result.bodies.push_back({scene.bodies[k].name, scene.bodies[k].kind, motion_of(before[k]),
+                             motion_of(after[k]), multipoint::kinetic_energy(before[k]),
+                             multipoint::kinetic_energy(after[k])});
+  }
+  result.energy_before = multipoint::kinetic_energy(before);
+  result.energy_after = multipoint::kinetic_energy(after);
+  result.energy_change = result.energy_after - result.energy_before;
+  result.momentum_before = multipoint::momentum(before);
+  result.momentum_after = multipoint::momentum(after);
+
+  const Eigen::VectorXd approach_before = multipoint::approach(before, contacts);
+  const Eigen::VectorXd approach_after = multipoint::approach(after, contacts);
+  for (std::size_t v = 0; v < contacts.size(); ++v) {
+    const auto row = static_cast<Eigen::Index>(v);
+    const double Fdt = result.system.Fdt(row);
+    result.impulses.push_back({v, scene.bodies[contacts[v].bumper].name,
+                               scene.bodies[contacts[v].wedge].name, Fdt,
+                               material_2d::impulse_vector(contacts[v].normal, Fdt)});
+    result.contacts.push_back({v, approach_before(row), approach_after(row)});
+  }
+  if (!all_finite(result)) {
+    result.status = SolveStatus::non_finite;
+  }
+  return result;
+}
+
+}  // namespace impulse::scene
