@@ -1,0 +1,10 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "sections.hpp"
+
+namespace impulse::derivations {
+
+std::vector<Check> section4_checks() {
+  return {};
+}
+
+}  // namespace impulse::derivations
