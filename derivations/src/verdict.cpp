@@ -118,9 +118,14 @@ Outcome judge(const ClaimVerdict& verdict) {
   collect(verdict.findings, outcome);
   numbers(verdict.findings, outcome);
   outcome.note = join(verdict.note, details(verdict.findings, ""));
-  const bool contradicted = std::any_of(verdict.findings.begin(), verdict.findings.end(),
-                                        [](const Finding& f) { return f.conclusive && f.holds; });
-  if (verdict.counterexample && !contradicted && all_fail(verdict.findings)) {
+  // One counterexample refutes a claim, even if another search found none; only a proof (a
+  // symbolic finding that it holds) contradicts it.
+  const bool proved = std::any_of(
+      verdict.findings.begin(), verdict.findings.end(),
+      [](const Finding& f) { return f.method == Method::symbolic && f.conclusive && f.holds; });
+  const bool some_fail = std::any_of(verdict.findings.begin(), verdict.findings.end(),
+                                     [](const Finding& f) { return f.conclusive && !f.holds; });
+  if (verdict.counterexample && !proved && some_fail) {
     outcome.status = Status::refuted;
     outcome.counterexample = *verdict.counterexample;
     outcome.explanation = verdict.explanation;

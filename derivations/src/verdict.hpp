@@ -45,8 +45,9 @@ struct EquationVerdict {
 };
 Outcome judge(const EquationVerdict& verdict);
 
-/// A claim: refuted when a counterexample was found (and no finding says it holds), verified
-/// when every finding holds and no counterexample was found, failed otherwise.
+/// A claim: refuted when a counterexample was found, some finding fails and no symbolic finding
+/// proves the claim; verified when every finding holds and no counterexample was found; failed
+/// otherwise.
 struct ClaimVerdict {
   std::vector<Finding> findings;
   std::optional<std::string> counterexample;
