@@ -8,8 +8,10 @@
 #include <gsl/gsl_rng.h>
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,18 +40,21 @@ class Random {
 };
 
 /// |a - b| / max(|a|, |b|, scale): the relative disagreement of two values whose terms are of
-/// size `scale` (pass the sum of the magnitudes that cancel).
+/// size `scale` (pass the sum of the magnitudes that cancel). Comparing with an exact zero needs
+/// a scale: without one, any non-zero value would be "100% off" (std::invalid_argument).
 double relative_error(double a, double b, double scale = 0.0);
 
 /// The worst relative error over a run of samples.
 struct Errors {
   double worst = 0.0;
   std::size_t samples = 0;
-  void add(double error) {
-    worst = std::max(worst, error);
+  /// A value that is already a relative error.
+  void add_relative(double error) {
+    worst = std::max(worst, std::isnan(error) ? std::numeric_limits<double>::infinity() : error);
     ++samples;
   }
-  void add(double a, double b, double scale = 0.0) { add(relative_error(a, b, scale)); }
+  /// Two values that should agree, compared relative to their size or `scale`.
+  void add(double a, double b, double scale = 0.0) { add_relative(relative_error(a, b, scale)); }
 };
 
 /// How far "holds" and "fails" are apart for a numeric method.
