@@ -11,6 +11,7 @@
 #include <complex>
 #include <numbers>
 
+#include "cloud.hpp"
 #include "impulse/rigid_2d/rigid_2d.hpp"
 #include "numeric.hpp"
 #include "sections.hpp"
@@ -94,66 +95,7 @@ Body sample_body(num::Random& r) {
   return b;
 }
 
-// A rigid body built from 3 to 6 point masses, centre of mass at the origin.
-struct Cloud {
-  std::vector<double> m;
-  std::vector<Vector2d> r;
-  Vector2d V;
-  double w;
-  [[nodiscard]] double mass() const {
-    double M = 0;
-    for (const double mi : m)
-      M += mi;
-    return M;
-  }
-  [[nodiscard]] double inertia() const {
-    double I = 0;
-    for (std::size_t i = 0; i < m.size(); ++i)
-      I += m[i] * r[i].squaredNorm();
-    return I;
-  }
-  [[nodiscard]] Vector2d velocity(std::size_t i) const {
-    return V + w * Vector2d(-r[i].y(), r[i].x());
-  }
-  [[nodiscard]] double energy() const {
-    double E = 0;
-    for (std::size_t i = 0; i < m.size(); ++i)
-      E += 0.5 * m[i] * velocity(i).squaredNorm();
-    return E;
-  }
-  [[nodiscard]] Vector2d momentum() const {
-    Vector2d P = Vector2d::Zero();
-    for (std::size_t i = 0; i < m.size(); ++i)
-      P += m[i] * velocity(i);
-    return P;
-  }
-  [[nodiscard]] double angular_momentum() const {
-    double L = 0;
-    for (std::size_t i = 0; i < m.size(); ++i) {
-      const Vector2d v = m[i] * velocity(i);
-      L += r[i].x() * v.y() - r[i].y() * v.x();
-    }
-    return L;
-  }
-};
-
-Cloud sample_cloud(num::Random& r) {
-  Cloud c;
-  const int n = r.integer(3, 6);
-  Vector2d centre = Vector2d::Zero();
-  double M = 0;
-  for (int i = 0; i < n; ++i) {
-    c.m.push_back(r.mass());
-    c.r.push_back(r.vector(3));
-    centre += c.m.back() * c.r.back();
-    M += c.m.back();
-  }
-  for (auto& ri : c.r)
-    ri -= centre / M;
-  c.V = r.vector(10);
-  c.w = r.uniform(-10, 10);
-  return c;
-}
+using cloud::Cloud;
 
 // ---- the checks -----------------------------------------------------------------------------
 
@@ -187,7 +129,7 @@ Outcome equation_3_1(const Context& c) {
   num::Random r(c.seed);
   num::Errors errors;
   for (std::size_t i = 0; i < c.samples; ++i) {
-    const Cloud cloud = sample_cloud(r);
+    const Cloud cloud = cloud::sample(r);
     const double Lc = cloud.angular_momentum();
     const Vector2d p = cloud.momentum();
     errors.add(Lc * Lc / (2 * cloud.inertia()) + p.squaredNorm() / (2 * cloud.mass()),
@@ -218,7 +160,7 @@ Outcome equation_3_2(const Context& c) {
   num::Random r(c.seed);
   num::Errors errors;
   for (std::size_t i = 0; i < c.samples; ++i) {
-    Cloud cloud = sample_cloud(r);
+    const Cloud cloud = cloud::sample(r);
     const std::size_t k =
         static_cast<std::size_t>(r.integer(0, static_cast<int>(cloud.m.size()) - 1));
     const Vector2d J = r.vector(10) * cloud.mass();
@@ -229,14 +171,13 @@ Outcome equation_3_2(const Context& c) {
     const double M = cloud.mass();
     const double printed = std::pow(L + (arm.x() * J.y() - arm.y() * J.x()), 2) / (2 * I) +
                            (std::pow(p.x() + J.x(), 2) + std::pow(p.y() + J.y(), 2)) / (2 * M);
-    // Newton-Euler on the points: the centre gains J / M, the spin det(arm, J) / I.
-    cloud.V += J / M;
-    cloud.w += (arm.x() * J.y() - arm.y() * J.x()) / I;
-    errors.add(printed, cloud.energy());
+    // The body's own response (Gauss's principle on its points), energy summed point by point.
+    errors.add(printed, cloud::after(cloud, {{k, J}}).energy());
   }
   return judge(EquationVerdict{{symbolic(exact, "the expanded forms equal the det and norm forms"),
                                 numeric(Method::numeric, errors, num::holds_below,
-                                        "bodies of point masses receiving an impulse at a point")},
+                                        "bodies of point masses receiving an impulse at a point, "
+                                        "their response by Gauss's principle")},
                                {},
                                {},
                                {},
@@ -571,7 +512,7 @@ Outcome point_velocity(const Context& c) {
   num::Random r(c.seed);
   num::Errors errors;
   for (std::size_t i = 0; i < c.samples; ++i) {
-    const Cloud cloud = sample_cloud(r);
+    const Cloud cloud = cloud::sample(r);
     const std::size_t k =
         static_cast<std::size_t>(r.integer(0, static_cast<int>(cloud.m.size()) - 1));
     const Vector2d arm = cloud.r[k];
@@ -617,17 +558,23 @@ Outcome equation_3_7(const Context& c) {
   num::Random r(c.seed);
   num::Errors errors;
   for (std::size_t i = 0; i < c.samples; ++i) {
-    const Body b = sample_body(r);
-    const Vector2d arm = r.vector(2) * std::sqrt(b.I / b.m);
+    // A body of point masses hit at one of its points: that point's velocity afterwards (Gauss's
+    // principle) against the printed components with the body's p, L, m and I.
+    const Cloud body = cloud::sample(r);
+    const auto k = static_cast<std::size_t>(r.integer(0, static_cast<int>(body.m.size()) - 1));
+    const Vector2d arm = body.r[k];
     const Vector2d n = r.unit_vector();
-    const double F = r.uniform(-10, 10) * b.m;
-    const Vector2d after = b.after(arm, -n * F).velocity_at(arm);
-    const std::initializer_list<double> args{b.m,     b.I,     b.p.x(), b.p.y(), b.L,
-                                             arm.x(), arm.y(), n.x(),   n.y(),   F};
-    const double scale = after.norm() + std::abs(F) / b.m + std::abs(b.L / b.I) * arm.norm();
+    const double F = r.uniform(-10, 10) * body.mass();
+    const Vector2d after = cloud::after(body, {{k, -n * F}}).velocity(k);
+    const Vector2d p = body.momentum();
+    const double L = body.angular_momentum(), I = body.inertia(), m = body.mass();
+    const std::initializer_list<double> args{m,       I,       p.x(), p.y(), L,
+                                             arm.x(), arm.y(), n.x(), n.y(), F};
+    const double scale =
+        after.norm() + std::abs(F) / m + (std::abs(L) + std::abs(F) * arm.norm()) / I * arm.norm();
     errors.add(vx(args), after.x(), scale);
     errors.add(vy(args), after.y(), scale);
-    const rigid_2d::RigidBody lb{b.m, b.I, {0, 0}, b.p, b.L};
+    const rigid_2d::RigidBody lb{m, I, {0, 0}, p, L};
     const Vector2d lib = rigid_2d::point_velocity(rigid_2d::apply_impulse(lb, arm, n, F), arm);
     errors.add(lib.x(), vx(args), scale);
     errors.add(lib.y(), vy(args), scale);
@@ -635,8 +582,8 @@ Outcome equation_3_7(const Context& c) {
   return judge(
       EquationVerdict{{symbolic(exact, "the components follow from the vector line and (3.3)"),
                        numeric(Method::numeric, errors, num::holds_below,
-                               "Newton-Euler response, and the library's "
-                               "rigid_2d::apply_impulse and point_velocity")},
+                               "bodies of point masses (Gauss's principle), and the "
+                               "library's rigid_2d::apply_impulse and point_velocity")},
                       {},
                       {},
                       {},
