@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// @file
+/// @brief The derivation checker: every equation, step and claim of the paper as a check.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+/// @brief The checker of the paper *Collision handling* (`impulselab check`).
+///
+/// Each numbered equation, each step of a derivation and each factual claim of the prose is a
+/// Check: data (id, section, label, kind, the statement as the paper prints it) and a function
+/// that evaluates the statement against the definitions it came from, by as many methods as fit.
+namespace impulse::derivations {
+
+/// @brief What a check is about.
+enum class Kind {
+  equation,  ///< a numbered result
+  step,      ///< a line of a derivation that must follow from the one before
+  claim,     ///< a statement of the prose
+};
+
+/// @brief How a check was evaluated.
+enum class Method {
+  symbolic,    ///< exact computer algebra (GiNaC)
+  numeric,     ///< random physical configurations (GSL random numbers)
+  quadrature,  ///< GSL numerical integration of a work integral
+  ode,         ///< an independent continuous-time contact simulation (GSL ODE)
+  search,      ///< looking for a counterexample
+};
+
+/// @brief The outcome.
+enum class Status {
+  verified,  ///< holds
+  erratum,   ///< does not hold as printed; the correction holds
+  refuted,   ///< a claim that does not hold; a counterexample is given
+  failed,    ///< none of these: a defect of the checker or an unresolved finding
+};
+
+/// @brief The report name of a kind ("equation", "step", "claim").
+/// @param kind the kind
+/// @return its name
+[[nodiscard]] std::string_view to_string(Kind kind);
+/// @brief The report name of a method ("symbolic", …).
+/// @param method the method
+/// @return its name
+[[nodiscard]] std::string_view to_string(Method method);
+/// @brief The report name of a status ("verified", …).
+/// @param status the status
+/// @return its name
+[[nodiscard]] std::string_view to_string(Status status);
+
+/// @brief What evaluating a check found.
+struct Outcome {
+  Status status = Status::failed;            ///< the verdict
+  std::vector<Method> methods;               ///< the methods that were run
+  std::optional<double> max_relative_error;  ///< worst disagreement of the numeric methods
+  std::optional<std::size_t> samples;        ///< random samples drawn
+  std::string correction;                    ///< LaTeX of the corrected form (erratum)
+  std::string counterexample;                ///< inputs and what happens (refuted)
+  std::string explanation;                   ///< what goes wrong (erratum, refuted)
+  std::string note;                          ///< assumptions, reading of garbled print, figures
+};
+
+/// @brief The run's settings as a check sees them.
+struct Context {
+  std::size_t samples = 10000;  ///< random samples per numeric method
+  std::uint64_t seed = 1;       ///< this check's seed (derived from the run's seed and the id)
+};
+
+/// @brief One check: data plus the function that evaluates it.
+struct Check {
+  std::string id;                                   ///< stable and unique, e.g. "eq-1.1"
+  std::string section;                              ///< the paper's (sub)section, e.g. "1.1"
+  std::optional<std::string> equation;              ///< "(1.1)", or nothing for steps and claims
+  Kind kind = Kind::equation;                       ///< equation, step or claim
+  std::string statement;                            ///< the statement as printed, LaTeX
+  std::function<Outcome(const Context&)> evaluate;  ///< runs the methods
+};
+
+/// @brief A check with its outcome and how long it took.
+struct Result {
+  Check check;           ///< what was checked (its evaluate function is not needed any more)
+  Outcome outcome;       ///< what was found
+  double seconds = 0.0;  ///< wall time of the evaluation
+};
+
+/// @brief Options of a run (the `check` verb's flags).
+struct Options {
+  std::string section;          ///< only checks whose section is this or below it ("4", "1.3")
+  std::size_t samples = 10000;  ///< random samples per numeric method
+  std::uint64_t seed = 1;       ///< the run's seed
+};
+
+/// @brief Counts of each status.
+struct Summary {
+  std::size_t verified = 0;  ///< holds
+  std::size_t erratum = 0;   ///< corrected
+  std::size_t refuted = 0;   ///< counterexample
+  std::size_t failed = 0;    ///< defects
+};
+
+/// @brief A whole run.
+struct Report {
+  Options options;              ///< how it was run
+  std::vector<Result> results;  ///< in the paper's order
+  Summary summary;              ///< the counts
+  double seconds = 0.0;         ///< wall time of the run
+};
+
+/// @brief Every check of every section, in the paper's order.
+/// @return the checks
+[[nodiscard]] std::vector<Check> all_checks();
+
+/// @brief The checks of sections 1 to 5, one list each (what all_checks() concatenates).
+/// @return the section's checks
+[[nodiscard]] std::vector<Check> section1_checks();
+/// @copydoc section1_checks
+[[nodiscard]] std::vector<Check> section2_checks();
+/// @copydoc section1_checks
+[[nodiscard]] std::vector<Check> section3_checks();
+/// @copydoc section1_checks
+[[nodiscard]] std::vector<Check> section4_checks();
+/// @copydoc section1_checks
+[[nodiscard]] std::vector<Check> section5_checks();
+
+/// @brief Whether @p section is @p filter or a subsection of it ("4.4" is in "4", not in "4.1").
+/// @param section a check's section
+/// @param filter the --section value; empty selects everything
+/// @return whether the check is selected
+[[nodiscard]] bool in_section(std::string_view section, std::string_view filter);
+
+/// @brief The seed a check gets: the run's seed mixed with the check's id, so that a check's
+/// samples do not depend on which other checks run.
+/// @param run_seed the run's seed
+/// @param id the check's id
+/// @return the check's seed
+[[nodiscard]] std::uint64_t check_seed(std::uint64_t run_seed, std::string_view id);
+
+/// @brief Evaluates one check; an exception escaping its function becomes a `failed` outcome.
+/// @param check the check
+/// @param context samples and the check's seed
+/// @return the outcome
+[[nodiscard]] Outcome evaluate(const Check& check, const Context& context);
+
+/// @brief Runs the selected checks.
+/// @param options section filter, samples, seed
+/// @return the report
+[[nodiscard]] Report run(const Options& options);
+
+/// @brief The report formats.
+enum class Format {
+  text,      ///< for people at a terminal
+  markdown,  ///< for the documentation
+  json,      ///< for programs (the contract of spec/cli-and-report.md)
+};
+
+/// @brief Renders a report.
+/// @param report the run
+/// @param format text, markdown or json
+/// @param colour ANSI colours for the text format (only when writing to a terminal)
+/// @return the rendered report
+[[nodiscard]] std::string render(const Report& report, Format format, bool colour = false);
+
+/// @brief The anchor of a check in the markdown report ("check-eq-1-1" for "eq-1.1").
+/// @param id the check's id
+/// @return an identifier made of letters, digits and hyphens
+[[nodiscard]] std::string anchor(std::string_view id);
+
+}  // namespace impulse::derivations

@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "many.hpp"
+
+#include <Eigen/QR>
+#include <algorithm>
+
+namespace impulse::derivations::many {
+
+using Eigen::MatrixXd;
+using Eigen::Vector2d;
+using Eigen::VectorXd;
+
+namespace {
+double cross(const Vector2d& a, const Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+Vector2d perp(const Vector2d& r) {
+  return {-r.y(), r.x()};
+}
+}  // namespace
+
+Vector2d Body::velocity_at(const Vector2d& point) const {
+  if (is_static()) {
+    return Vector2d::Zero();
+  }
+  Vector2d v = p / m;
+  if (rigid()) {
+    v += L / I * perp(point - position);
+  }
+  return v;
+}
+
+double Body::energy() const {
+  if (is_static()) {
+    return 0;
+  }
+  return p.squaredNorm() / (2 * m) + (rigid() ? L * L / (2 * I) : 0.0);
+}
+
+Scene random_scene(num::Random& r, bool rigid, bool with_static, int max_bodies, int max_contacts) {
+  Scene s;
+  const int count = r.integer(2, max_bodies);
+  for (int i = 0; i < count; ++i) {
+    Body b;
+    if (with_static && r.integer(0, 4) == 0) {
+      b.m = 0;
+    } else {
+      b.m = r.mass();
+      b.p = b.m * r.vector(10);
+      b.position = r.vector(1);
+      b.I = rigid && r.coin() ? 1.0 : 0.0;  // set from the arms below
+    }
+    s.bodies.push_back(b);
+  }
+  const int contacts = r.integer(1, max_contacts);
+  for (int v = 0; v < contacts; ++v) {
+    const auto a = static_cast<std::size_t>(r.integer(0, count - 1));
+    auto b = static_cast<std::size_t>(r.integer(0, count - 2));
+    if (b >= a)
+      ++b;
+    s.contacts.push_back({a, b, r.unit_vector(), r.vector(2)});
+  }
+  for (std::size_t k = 0; k < s.bodies.size(); ++k) {
+    Body& b = s.bodies[k];
+    if (!b.rigid())
+      continue;
+    double reach = 0.1;
+    for (const auto& c : s.contacts) {
+      if (c.a == k || c.b == k)
+        reach = std::max(reach, (c.point - b.position).norm());
+    }
+    const double gyration = reach * r.uniform(0.4, 1.0);
+    b.I = b.m * gyration * gyration;
+    b.L = b.I * r.uniform(-10, 10) / reach;
+  }
+  return s;
+}
+
+Scene random_pair(num::Random& r, int max_contacts) {
+  Scene s;
+  for (int i = 0; i < 2; ++i) {
+    Body b;
+    b.m = r.mass();
+    b.p = b.m * r.vector(10);
+    s.bodies.push_back(b);
+  }
+  const int contacts = r.integer(1, max_contacts);
+  for (int v = 0; v < contacts; ++v) {
+    s.contacts.push_back({0, 1, r.unit_vector(), r.vector(2)});
+  }
+  return s;
+}
+
+Scene after(const Scene& scene, const VectorXd& F) {
+  Scene s = scene;
+  for (std::size_t v = 0; v < s.contacts.size(); ++v) {
+    const Contact& c = s.contacts[v];
+    const double f = F(static_cast<Eigen::Index>(v));
+    for (const auto& [k, n] : {std::pair{c.a, Vector2d(c.n)}, std::pair{c.b, Vector2d(-c.n)}}) {
+      Body& b = s.bodies[k];
+      if (b.is_static())
+        continue;
+      const Vector2d J = -n * f;  // the impulse on a body is minus its own normal times F
+      b.p += J;
+      if (b.rigid())
+        b.L += cross(c.point - b.position, J);
+    }
+  }
+  return s;
+}
+
+double energy(const Scene& scene) {
+  double E = 0;
+  for (const Body& b : scene.bodies)
+    E += b.energy();
+  return E;
+}
+
+Vector2d momentum(const Scene& scene) {
+  Vector2d P = Vector2d::Zero();
+  for (const Body& b : scene.bodies) {
+    if (!b.is_static())
+      P += b.p;
+  }
+  return P;
+}
+
+VectorXd approach(const Scene& scene) {
+  VectorXd u(static_cast<Eigen::Index>(scene.contacts.size()));
+  for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
+    const Contact& c = scene.contacts[v];
+    u(static_cast<Eigen::Index>(v)) = scene.bodies[c.a].velocity_at(c.point).dot(c.n) -
+                                      scene.bodies[c.b].velocity_at(c.point).dot(c.n);
+  }
+  return u;
+}
+
+double speed_scale(const Scene& scene) {
+  double s = 0;
+  for (const Contact& c : scene.contacts) {
+    s = std::max({s, scene.bodies[c.a].velocity_at(c.point).norm(),
+                  scene.bodies[c.b].velocity_at(c.point).norm()});
+  }
+  return s;
+}
+
+Model model(const Scene& scene) {
+  std::vector<Eigen::Index> offset;
+  Eigen::Index dof = 0;
+  for (const Body& b : scene.bodies) {
+    offset.push_back(dof);
+    dof += b.is_static() ? 0 : (b.rigid() ? 3 : 2);
+  }
+  Model md;
+  md.J = MatrixXd::Zero(static_cast<Eigen::Index>(scene.contacts.size()), dof);
+  md.velocity = VectorXd::Zero(dof);
+  md.inverse_mass = VectorXd::Zero(dof);
+  for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+    const Body& b = scene.bodies[k];
+    if (b.is_static())
+      continue;
+    md.velocity.segment(offset[k], 2) = b.p / b.m;
+    md.inverse_mass.segment(offset[k], 2).setConstant(1 / b.m);
+    if (b.rigid()) {
+      md.velocity(offset[k] + 2) = b.L / b.I;
+      md.inverse_mass(offset[k] + 2) = 1 / b.I;
+    }
+  }
+  for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
+    const Contact& c = scene.contacts[v];
+    const auto row = static_cast<Eigen::Index>(v);
+    for (const auto& [k, n] : {std::pair{c.a, Vector2d(c.n)}, std::pair{c.b, Vector2d(-c.n)}}) {
+      const Body& b = scene.bodies[k];
+      if (b.is_static())
+        continue;
+      // The body's normal velocity at the point: n . v + det(r, n) w.
+      md.J.block(row, offset[k], 1, 2) += n.transpose();
+      if (b.rigid())
+        md.J(row, offset[k] + 2) += cross(c.point - b.position, n);
+    }
+  }
+  return md;
+}
+
+MatrixXd Model::A() const {
+  return J * inverse_mass.asDiagonal() * J.transpose();
+}
+
+VectorXd solve(const MatrixXd& A, const VectorXd& B) {
+  if (A.rows() == 0)
+    return VectorXd(0);
+  return Eigen::CompleteOrthogonalDecomposition<MatrixXd>(A).solve(B);
+}
+
+double inconsistency(const MatrixXd& A, const VectorXd& B) {
+  const VectorXd x = solve(A, B);
+  const double scale = A.norm() * x.norm() + B.norm();
+  return scale == 0 ? 0.0 : (A * x - B).norm() / scale;
+}
+
+ContactEnergy contact_energy(const Scene& scene, const VectorXd& F, std::size_t body,
+                             std::size_t contact) {
+  const Contact& cv = scene.contacts[contact];
+  const Body& b = scene.bodies[body];
+  const std::size_t other = cv.a == body ? cv.b : cv.a;
+  const Vector2d nv = cv.a == body ? cv.n : Vector2d(-cv.n);
+  double pair = 0, all = 0, spin = 0;
+  for (std::size_t k = 0; k < scene.contacts.size(); ++k) {
+    const Contact& c = scene.contacts[k];
+    if (c.a != body && c.b != body)
+      continue;
+    const Vector2d own = c.a == body ? c.n : Vector2d(-c.n);
+    const Vector2d impulse = -own * F(static_cast<Eigen::Index>(k));
+    all += impulse.dot(nv);
+    if (c.a == other || c.b == other)
+      pair += impulse.dot(nv);
+    if (b.rigid())
+      spin += cross(c.point - b.position, impulse);
+  }
+  ContactEnergy e;
+  e.pair_impulse = pair;
+  e.translational = pair * (all / 2 + b.p.dot(nv)) / b.m;
+  if (b.rigid()) {
+    e.rotational = cross(cv.point - b.position, nv) * pair * (spin / 2 + b.L) / b.I;
+  }
+  return e;
+}
+
+}  // namespace impulse::derivations::many

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// An independent model of many bodies in contact for the checks of sections 4 and 5: bodies,
+// contacts, the global Jacobian built from the definitions (each contact's generalised normals),
+// and the bodies after a set of impulses. The checks build A and B from the paper's printed
+// coefficients and judge the result with this model.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "numeric.hpp"
+
+namespace impulse::derivations::many {
+
+struct Body {
+  double m = 1;  ///< mass; 0 for a static body
+  double I = 0;  ///< moment of inertia about the centre; 0 for a point mass or a static body
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();
+  Eigen::Vector2d p = Eigen::Vector2d::Zero();
+  double L = 0;
+  [[nodiscard]] bool is_static() const { return m == 0; }
+  [[nodiscard]] bool rigid() const { return I > 0; }
+  [[nodiscard]] Eigen::Vector2d velocity_at(const Eigen::Vector2d& point) const;
+  [[nodiscard]] double energy() const;
+};
+
+struct Contact {
+  std::size_t a = 0, b = 0;  ///< a's outward normal is n, b's is -n
+  Eigen::Vector2d n = Eigen::Vector2d::UnitX();
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();
+};
+
+struct Scene {
+  std::vector<Body> bodies;
+  std::vector<Contact> contacts;
+};
+
+/// Random bodies (point masses, or rigid bodies too) and contacts between random pairs. Rigid
+/// bodies' radii of gyration follow their contact arms (contact points are on the body).
+Scene random_scene(num::Random& r, bool rigid, bool with_static, int max_bodies, int max_contacts);
+
+/// Two point masses touching at 1 to `max_contacts` points with random normals.
+Scene random_pair(num::Random& r, int max_contacts);
+
+/// The bodies after the impulses: -n F_v on body a, +n F_v on body b of each contact v.
+Scene after(const Scene& scene, const Eigen::VectorXd& F);
+
+double energy(const Scene& scene);
+Eigen::Vector2d momentum(const Scene& scene);
+
+/// Each contact's approach speed: a's point velocity along n plus b's along -n.
+Eigen::VectorXd approach(const Scene& scene);
+
+/// The largest speed of a contact point (the scale of the approach speeds).
+double speed_scale(const Scene& scene);
+
+/// J (contacts x degrees of freedom) with approach = J v, and the inverse masses: the system
+/// A = J M^-1 J^T of the definitions, and B = J (e v) for elasticity e.
+struct Model {
+  Eigen::MatrixXd J;
+  Eigen::VectorXd velocity;      ///< generalised velocities
+  Eigen::VectorXd inverse_mass;  ///< per degree of freedom
+  [[nodiscard]] Eigen::MatrixXd A() const;
+};
+Model model(const Scene& scene);
+
+/// The minimum-norm least-squares solution (complete orthogonal decomposition).
+Eigen::VectorXd solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& B);
+
+/// Whether B lies in the range of A: the least-squares residual relative to |A||x| + |B|.
+double inconsistency(const Eigen::MatrixXd& A, const Eigen::VectorXd& B);
+
+/// The paper's per-contact energies of body k at contact v (sections 4.1 and 5.1): with J_i the
+/// impulses exchanged with the other body of contact v, K all of body k's impulses, both cast on
+/// k's own normal at v: translational J_i (K/2 + p_v)/m, rotational d_v J_i (dL/2 + L)/I.
+struct ContactEnergy {
+  double translational = 0;
+  double rotational = 0;
+  double pair_impulse = 0;  ///< J_i, the impulses exchanged with the other body, cast on n_v
+};
+ContactEnergy contact_energy(const Scene& scene, const Eigen::VectorXd& F, std::size_t body,
+                             std::size_t contact);
+
+}  // namespace impulse::derivations::many

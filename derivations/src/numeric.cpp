@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "numeric.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <stdexcept>
+
+namespace impulse::derivations::num {
+
+void quiet_gsl() {
+  static const bool once = [] {
+    gsl_set_error_handler_off();
+    return true;
+  }();
+  (void)once;
+}
+
+Random::Random(std::uint64_t seed) : rng_(gsl_rng_alloc(gsl_rng_mt19937), gsl_rng_free) {
+  if (!rng_) {
+    throw std::runtime_error("gsl_rng_alloc failed");
+  }
+  // gsl_rng_set takes an unsigned long; fold the 64 bits so every bit of the seed counts.
+  gsl_rng_set(rng_.get(), static_cast<unsigned long>(seed ^ (seed >> 32)));
+}
+
+double Random::uniform(double low, double high) {
+  return low + (high - low) * gsl_rng_uniform(rng_.get());
+}
+
+double Random::log_uniform(double low, double high) {
+  return std::exp(uniform(std::log(low), std::log(high)));
+}
+
+int Random::integer(int low, int high) {
+  const auto span = static_cast<unsigned long>(high - low + 1);
+  return low + static_cast<int>(gsl_rng_uniform_int(rng_.get(), span));
+}
+
+Eigen::Vector2d Random::unit_vector() {
+  const double angle = uniform(0.0, 2.0 * std::numbers::pi);
+  return {std::cos(angle), std::sin(angle)};
+}
+
+Eigen::Vector2d Random::vector(double scale) {
+  return {uniform(-scale, scale), uniform(-scale, scale)};
+}
+
+double relative_error(double a, double b, double scale) {
+  if ((a == 0.0 || b == 0.0) && scale == 0.0 && a != b) {
+    throw std::invalid_argument("relative_error: comparing with zero needs a scale");
+  }
+  const double size = std::max({std::abs(a), std::abs(b), std::abs(scale)});
+  if (size == 0.0) {
+    return 0.0;
+  }
+  return std::abs(a - b) / size;
+}
+
+double integrate(const std::function<double(double)>& f, double a, double b) {
+  quiet_gsl();
+  constexpr std::size_t limit = 1000;
+  std::unique_ptr<gsl_integration_workspace, void (*)(gsl_integration_workspace*)> workspace(
+      gsl_integration_workspace_alloc(limit), gsl_integration_workspace_free);
+  gsl_function function;
+  function.function = [](double x, void* params) {
+    return (*static_cast<const std::function<double(double)>*>(params))(x);
+  };
+  function.params = const_cast<std::function<double(double)>*>(&f);
+  double result = 0.0;
+  double error = 0.0;
+  const int status = gsl_integration_qag(&function, a, b, 0.0, 1e-12, limit, GSL_INTEG_GAUSS61,
+                                         workspace.get(), &result, &error);
+  // Rounding may stop qag short of 1e-12; its own error estimate then says how far it got.
+  const bool close_enough = status == GSL_EROUND && error <= 1e-10 * std::abs(result);
+  if (status != GSL_SUCCESS && !close_enough) {
+    throw std::runtime_error(std::string("quadrature failed: ") + gsl_strerror(status) +
+                             " (estimated error " + brief(error) + " of " + brief(result) + ")");
+  }
+  return result;
+}
+
+OdeResult integrate_until(const OdeRhs& rhs, std::vector<double> y0, const OdeEvent& event,
+                          double initial_step, double t_max, double event_tolerance) {
+  quiet_gsl();
+  const std::size_t n = y0.size();
+  gsl_odeiv2_system system;
+  system.function = [](double t, const double y[], double dydt[], void* params) -> int {
+    (*static_cast<const OdeRhs*>(params))(t, y, dydt);
+    return GSL_SUCCESS;
+  };
+  system.jacobian = nullptr;
+  system.dimension = n;
+  system.params = const_cast<OdeRhs*>(&rhs);
+  std::unique_ptr<gsl_odeiv2_driver, void (*)(gsl_odeiv2_driver*)> driver(
+      gsl_odeiv2_driver_alloc_y_new(&system, gsl_odeiv2_step_rk8pd, initial_step, 1e-13, 1e-13),
+      gsl_odeiv2_driver_free);
+  if (!driver) {
+    throw std::runtime_error("gsl_odeiv2_driver_alloc_y_new failed");
+  }
+  OdeResult result;
+  double t = 0.0;
+  std::vector<double> y = std::move(y0);
+  // March in output intervals of the initial step; when the event turns non-positive, bisect
+  // the last interval by re-integrating from its start.
+  const double interval = initial_step;
+  while (t < t_max) {
+    std::vector<double> saved = y;
+    const double t_saved = t;
+    double t_next = t + interval;
+    const int status = gsl_odeiv2_driver_apply(driver.get(), &t, t_next, y.data());
+    ++result.steps;
+    if (status != GSL_SUCCESS) {
+      throw std::runtime_error(std::string("ODE integration failed: ") + gsl_strerror(status));
+    }
+    if (event(t, y.data()) <= 0.0) {
+      double low = t_saved;
+      double high = t;
+      std::vector<double> y_low = saved;
+      while (high - low > event_tolerance) {
+        const double mid = 0.5 * (low + high);
+        std::vector<double> y_mid = y_low;
+        double t_mid = low;
+        gsl_odeiv2_driver_reset(driver.get());
+        const int s = gsl_odeiv2_driver_apply(driver.get(), &t_mid, mid, y_mid.data());
+        if (s != GSL_SUCCESS) {
+          throw std::runtime_error(std::string("ODE integration failed: ") + gsl_strerror(s));
+        }
+        if (event(mid, y_mid.data()) > 0.0) {
+          low = mid;
+          y_low = y_mid;
+        } else {
+          high = mid;
+        }
+      }
+      result.t = low;
+      result.y = y_low;
+      return result;
+    }
+  }
+  throw std::runtime_error("ODE integration: the event did not occur before t = " + brief(t_max));
+}
+
+double minimise(const std::function<double(double)>& f, double lower, double upper, double guess) {
+  quiet_gsl();
+  std::unique_ptr<gsl_min_fminimizer, void (*)(gsl_min_fminimizer*)> minimizer(
+      gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent), gsl_min_fminimizer_free);
+  gsl_function function;
+  function.function = [](double x, void* params) {
+    return (*static_cast<const std::function<double(double)>*>(params))(x);
+  };
+  function.params = const_cast<std::function<double(double)>*>(&f);
+  int status = gsl_min_fminimizer_set(minimizer.get(), &function, guess, lower, upper);
+  if (status != GSL_SUCCESS) {
+    throw std::runtime_error(std::string("minimisation failed to start: ") + gsl_strerror(status));
+  }
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    status = gsl_min_fminimizer_iterate(minimizer.get());
+    if (status != GSL_SUCCESS) {
+      throw std::runtime_error(std::string("minimisation failed: ") + gsl_strerror(status));
+    }
+    const double a = gsl_min_fminimizer_x_lower(minimizer.get());
+    const double b = gsl_min_fminimizer_x_upper(minimizer.get());
+    if (gsl_min_test_interval(a, b, 0.0, 1e-10) == GSL_SUCCESS) {
+      break;
+    }
+  }
+  return gsl_min_fminimizer_x_minimum(minimizer.get());
+}
+
+std::string number(double value) {
+  std::array<char, 32> buffer{};
+  const auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  return error == std::errc{} ? std::string(buffer.data(), end) : std::string("?");
+}
+
+std::string brief(double value, int digits) {
+  std::array<char, 32> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "%.*g", digits, value);
+  return buffer.data();
+}
+
+}  // namespace impulse::derivations::num

@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "symbolic.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace impulse::derivations::sym {
+
+using GiNaC::is_a;
+
+ex simplify(const ex& e) {
+  return GiNaC::normal(GiNaC::expand(e));
+}
+
+bool holds(const Equation& equation) {
+  return simplify(equation.difference()).is_zero();
+}
+
+namespace {
+
+bool declared_nonzero(const ex& e, const Assumptions& assumptions) {
+  for (const ex& s : assumptions.nonzero) {
+    if (s.is_equal(e)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+bool definitely_positive(const ex& e, const Assumptions& assumptions) {
+  if (is_a<GiNaC::numeric>(e)) {
+    return GiNaC::ex_to<GiNaC::numeric>(e).is_positive();
+  }
+  if (is_a<GiNaC::symbol>(e)) {
+    return e.info(GiNaC::info_flags::positive);
+  }
+  if (is_a<GiNaC::power>(e)) {
+    const ex base = e.op(0);
+    const ex exponent = e.op(1);
+    if (exponent.info(GiNaC::info_flags::even) && base.info(GiNaC::info_flags::real)) {
+      return definitely_nonzero(base, assumptions);
+    }
+    return definitely_positive(base, assumptions);
+  }
+  if (is_a<GiNaC::mul>(e) || is_a<GiNaC::add>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      if (!definitely_positive(e.op(i), assumptions)) {
+        return false;
+      }
+    }
+    return e.nops() > 0;
+  }
+  return false;
+}
+
+bool definitely_nonzero(const ex& e, const Assumptions& assumptions) {
+  if (is_a<GiNaC::numeric>(e)) {
+    return !e.is_zero();
+  }
+  if (is_a<GiNaC::symbol>(e)) {
+    return e.info(GiNaC::info_flags::positive) || declared_nonzero(e, assumptions);
+  }
+  if (is_a<GiNaC::power>(e)) {
+    return definitely_nonzero(e.op(0), assumptions);
+  }
+  if (is_a<GiNaC::mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      if (!definitely_nonzero(e.op(i), assumptions)) {
+        return false;
+      }
+    }
+    return true;
+  }
+  if (is_a<GiNaC::add>(e)) {
+    // A sum is non-zero here when all its terms are positive, or all negative.
+    return definitely_positive(e, assumptions) || definitely_positive(-e, assumptions) ||
+           definitely_positive(GiNaC::expand(-e), assumptions);
+  }
+  return false;
+}
+
+std::optional<ex> nonzero_multiple(const Equation& step, const Equation& previous,
+                                   const Assumptions& assumptions) {
+  const ex previous_difference = simplify(previous.difference());
+  const ex step_difference = simplify(step.difference());
+  if (previous_difference.is_zero()) {
+    return step_difference.is_zero() ? std::optional<ex>(1) : std::nullopt;
+  }
+  if (step_difference.is_zero()) {
+    return std::nullopt;
+  }
+  const ex ratio = GiNaC::normal(step_difference / previous_difference);
+  const ex parts = GiNaC::numer_denom(ratio);
+  const ex numerator = GiNaC::factor(parts.op(0));
+  const ex denominator = GiNaC::factor(parts.op(1));
+  if (definitely_nonzero(numerator, assumptions) && definitely_nonzero(denominator, assumptions)) {
+    return ratio;
+  }
+  return std::nullopt;
+}
+
+ex solve_for(const Equation& equation, const ex& unknown) {
+  return GiNaC::lsolve(equation.lhs == equation.rhs, unknown);
+}
+
+std::string latex(const ex& e) {
+  std::ostringstream out;
+  out << GiNaC::latex << e;
+  return out.str();
+}
+
+std::string latex(const Equation& equation) {
+  return latex(equation.lhs) + " = " + latex(equation.rhs);
+}
+
+double Compiled::operator()(std::span<const double> arguments) const {
+  if (arguments.size() != arguments_) {
+    throw std::invalid_argument("compiled expression takes " + std::to_string(arguments_) +
+                                " arguments, got " + std::to_string(arguments.size()));
+  }
+  double stack[64];
+  std::size_t top = 0;
+  for (const Instruction& in : program_) {
+    switch (in.op) {
+      case Op::constant:
+        stack[top++] = in.value;
+        break;
+      case Op::variable:
+        stack[top++] = arguments[in.index];
+        break;
+      case Op::add: {
+        double sum = 0.0;
+        for (std::size_t k = 0; k < in.index; ++k) {
+          sum += stack[--top];
+        }
+        stack[top++] = sum;
+        break;
+      }
+      case Op::mul: {
+        double product = 1.0;
+        for (std::size_t k = 0; k < in.index; ++k) {
+          product *= stack[--top];
+        }
+        stack[top++] = product;
+        break;
+      }
+      case Op::power: {
+        const double base = stack[--top];
+        const double exponent = in.value;
+        stack[top++] = exponent == 2.0    ? base * base
+                       : exponent == -1.0 ? 1.0 / base
+                                          : std::pow(base, exponent);
+        break;
+      }
+    }
+  }
+  return stack[top - 1];
+}
+
+namespace {
+
+std::size_t depth(const ex& e) {
+  std::size_t deepest = 0;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    deepest = std::max(deepest, depth(e.op(i)) + i);
+  }
+  return deepest + 1;
+}
+
+void emit(const ex& e, const std::vector<ex>& symbols,
+          std::vector<Compiled::Instruction>& program) {
+  using Op = Compiled::Op;
+  if (is_a<GiNaC::numeric>(e)) {
+    program.push_back({Op::constant, GiNaC::ex_to<GiNaC::numeric>(e).to_double(), 0});
+    return;
+  }
+  if (is_a<GiNaC::symbol>(e)) {
+    for (std::size_t i = 0; i < symbols.size(); ++i) {
+      if (symbols[i].is_equal(e)) {
+        program.push_back({Op::variable, 0.0, i});
+        return;
+      }
+    }
+    throw std::invalid_argument("compile: unbound symbol " + latex(e));
+  }
+  if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      emit(e.op(i), symbols, program);
+    }
+    program.push_back({is_a<GiNaC::add>(e) ? Op::add : Op::mul, 0.0, e.nops()});
+    return;
+  }
+  if (is_a<GiNaC::power>(e) && is_a<GiNaC::numeric>(e.op(1))) {
+    emit(e.op(0), symbols, program);
+    program.push_back({Op::power, GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_double(), 0});
+    return;
+  }
+  throw std::invalid_argument("compile: unsupported expression " + latex(e));
+}
+
+}  // namespace
+
+Compiled compile(const ex& e, const std::vector<ex>& symbols) {
+  if (depth(e) > 60) {
+    throw std::invalid_argument("compile: expression too deep");
+  }
+  Compiled compiled;
+  compiled.arguments_ = symbols.size();
+  emit(e, symbols, compiled.program_);
+  return compiled;
+}
+
+}  // namespace impulse::derivations::sym

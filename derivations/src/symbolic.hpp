@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Exact algebra for the checks (GiNaC), and a compiler from an expression to a fast double
+// function so that the numeric methods evaluate the very transcription the symbolic ones check.
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace impulse::derivations::sym {
+
+using GiNaC::ex;
+
+/// An equation lhs = rhs as printed (GiNaC's relational would evaluate too eagerly).
+struct Equation {
+  ex lhs;
+  ex rhs;
+  [[nodiscard]] ex difference() const { return lhs - rhs; }
+  [[nodiscard]] Equation subs(const GiNaC::exmap& map) const {
+    return {lhs.subs(map), rhs.subs(map)};
+  }
+};
+
+/// What a derivation step may assume: symbols declared non-zero (possymbols are positive by
+/// their type, e.g. masses and moments of inertia).
+struct Assumptions {
+  std::vector<ex> nonzero;
+};
+
+/// Rational simplification to a canonical form; zero means zero.
+[[nodiscard]] ex simplify(const ex& e);
+
+/// The equation holds identically (its difference simplifies to zero).
+[[nodiscard]] bool holds(const Equation& equation);
+
+/// Whether @p e is non-zero for every value the assumptions allow: products and powers of
+/// non-zero factors, and sums whose terms are all positive (products of positive symbols, even
+/// powers of real non-zero symbols and positive numbers).
+[[nodiscard]] bool definitely_nonzero(const ex& e, const Assumptions& assumptions);
+[[nodiscard]] bool definitely_positive(const ex& e, const Assumptions& assumptions);
+
+/// If step.lhs - step.rhs = c (previous.lhs - previous.rhs) with c non-zero under the
+/// assumptions, returns c: the step follows from the previous line (and back).
+[[nodiscard]] std::optional<ex> nonzero_multiple(const Equation& step, const Equation& previous,
+                                                 const Assumptions& assumptions);
+
+/// Solves an equation linear in @p unknown.
+[[nodiscard]] ex solve_for(const Equation& equation, const ex& unknown);
+
+/// LaTeX of an expression or an equation.
+[[nodiscard]] std::string latex(const ex& e);
+[[nodiscard]] std::string latex(const Equation& equation);
+
+/// An expression compiled to a function of doubles: sums, products, powers and numbers only.
+class Compiled {
+ public:
+  Compiled() = default;
+  /// The value at the given arguments (one per symbol, in the order given to compile()).
+  [[nodiscard]] double operator()(std::span<const double> arguments) const;
+  [[nodiscard]] double operator()(std::initializer_list<double> arguments) const {
+    return (*this)(std::span<const double>(arguments.begin(), arguments.size()));
+  }
+
+  /// A stack machine: operands are pushed, operations pop theirs and push the result.
+  enum class Op { constant, variable, add, mul, power };
+  struct Instruction {
+    Op op;
+    double value;       // constant, or the exponent of power
+    std::size_t index;  // variable index, or the operand count of add / mul
+  };
+
+ private:
+  friend Compiled compile(const ex& e, const std::vector<ex>& symbols);
+  std::vector<Instruction> program_;
+  std::size_t arguments_ = 0;
+};
+
+/// Compiles @p e; throws std::invalid_argument on anything but numbers, the given symbols,
+/// sums, products and numeric powers.
+[[nodiscard]] Compiled compile(const ex& e, const std::vector<ex>& symbols);
+
+}  // namespace impulse::derivations::sym
