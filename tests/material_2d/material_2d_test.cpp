@@ -139,7 +139,8 @@ TEST_CASE("An elasticity in (1, 2) loses the restitution law's share of energy",
   }
 }
 
-TEST_CASE("Elasticity 0 gives no impulse; the residual is at round-off", "[section2][property]") {
+TEST_CASE("Elasticity 0 gives no impulse, and the residual is at round-off",
+          "[section2][property]") {
   impulse::test::Sampler sample("material_2d zero");
   for (int i = 0; i < impulse::test::configurations; ++i) {
     const auto [bumper, wedge, n] = random_pair(sample);

@@ -191,7 +191,8 @@ TEST_CASE("An elasticity in (1, 2) loses energy as the restitution law says",
   }
 }
 
-TEST_CASE("Elasticity 0 gives no impulse; the residual is at round-off", "[section3][property]") {
+TEST_CASE("Elasticity 0 gives no impulse, and the residual is at round-off",
+          "[section3][property]") {
   impulse::test::Sampler sample("rigid_2d zero");
   for (int i = 0; i < impulse::test::configurations; ++i) {
     const auto h = random_hit(sample);
