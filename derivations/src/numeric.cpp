@@ -62,7 +62,7 @@ double relative_error(double a, double b, double scale) {
   return std::abs(a - b) / size;
 }
 
-double integrate(const std::function<double(double)>& f, double a, double b) {
+double integrate(const std::function<double(double)>& f, double a, double b, double scale) {
   quiet_gsl();
   constexpr std::size_t limit = 1000;
   std::unique_ptr<gsl_integration_workspace, void (*)(gsl_integration_workspace*)> workspace(
@@ -74,10 +74,12 @@ double integrate(const std::function<double(double)>& f, double a, double b) {
   function.params = const_cast<std::function<double(double)>*>(&f);
   double result = 0.0;
   double error = 0.0;
-  const int status = gsl_integration_qag(&function, a, b, 0.0, 1e-12, limit, GSL_INTEG_GAUSS61,
+  const double absolute = 1e-13 * std::abs(scale);
+  const int status = gsl_integration_qag(&function, a, b, absolute, 1e-12, limit, GSL_INTEG_GAUSS61,
                                          workspace.get(), &result, &error);
-  // Rounding may stop qag short of 1e-12; its own error estimate then says how far it got.
-  const bool close_enough = status == GSL_EROUND && error <= 1e-10 * std::abs(result);
+  // Rounding may stop qag short of its tolerance; its own error estimate says how far it got.
+  const bool close_enough =
+      status == GSL_EROUND && error <= 1e-10 * std::max(std::abs(result), std::abs(scale));
   if (status != GSL_SUCCESS && !close_enough) {
     throw std::runtime_error(std::string("quadrature failed: ") + gsl_strerror(status) +
                              " (estimated error " + brief(error) + " of " + brief(result) + ")");

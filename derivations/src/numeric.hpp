@@ -61,9 +61,11 @@ struct Errors {
 inline constexpr double holds_below = 1e-9;  ///< worst relative error of a statement that holds
 inline constexpr double fails_above = 1e-6;  ///< smallest worst error of one that does not
 
-/// ∫_a^b f with GSL's adaptive Gauss–Kronrod (qag, 61 points), relative tolerance 1e-12.
-/// Throws std::runtime_error with GSL's message if it does not converge.
-double integrate(const std::function<double(double)>& f, double a, double b);
+/// ∫_a^b f with GSL's adaptive Gauss–Kronrod (qag, 61 points), to a relative tolerance of 1e-12
+/// or an absolute one of 1e-13 times `scale` (the size of the terms the integral is compared
+/// with: a small result of large cancelling contributions is judged against those). Throws
+/// std::runtime_error with GSL's message if it does not converge.
+double integrate(const std::function<double(double)>& f, double a, double b, double scale = 0.0);
 
 /// An ODE y' = f(t, y) integrated with GSL's rk8pd until an event function g(t, y) crosses
 /// from positive to zero (located by bisection to `event_tolerance` in t).

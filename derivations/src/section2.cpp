@@ -144,7 +144,8 @@ Outcome claim_sign(const Context& c) {
                      num::number(p.dot(n)) + ", neither positive nor negative.";
   }
   return judge(ClaimVerdict{
-      {search(c.samples, failures, "random momenta, every fourth along the tangent")},
+      {search(1, counterexample ? 1 : 0, "the worked counterexample"),
+       search(c.samples, failures, "random momenta, every fourth along the tangent")},
       counterexample,
       "p_n is zero for every motion along the contact's tangent, not only for a body at rest; "
       "its sign does tell whether the body moves towards (+) or away from (-) the other side.",
@@ -219,7 +220,8 @@ Outcome claim_opposes_motion(const Context& c) {
         ", 0), along its own motion; it speeds up to (" +
         num::number((h.bumper.p + on_bumper).x() / h.bumper.m) + ", 0).";
   }
-  return judge(ClaimVerdict{{search(c.samples, failures, "colliding pucks at random")},
+  return judge(ClaimVerdict{{search(1, counterexample ? 1 : 0, "the worked counterexample"),
+                             search(c.samples, failures, "colliding pucks at random")},
                             counterexample,
                             "The impulse on a body is minus its own outward normal times Fdt: it "
                             "pushes the body away from the contact, which is along the body's "

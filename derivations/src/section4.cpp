@@ -49,8 +49,8 @@ const std::vector<Pulse>& pulses() {
 }
 
 // The integral over the collision time [0, 1], split where the triangular pulse has its kink.
-double over_pulse(const std::function<double(double)>& f) {
-  return num::integrate(f, 0, 0.5) + num::integrate(f, 0.5, 1);
+double over_pulse(const std::function<double(double)>& f, double scale = 0.0) {
+  return num::integrate(f, 0, 0.5, scale) + num::integrate(f, 0.5, 1, scale);
 }
 
 // A body's momentum along n_v, p_v, receiving the impulse J along n_v with pulse shape f over a
@@ -132,12 +132,13 @@ Outcome equation_4_1(const Context& c) {
   // along n_v, for every pulse shape (the work-energy theorem).
   num::Random r(c.seed);
   num::Errors errors;
-  const std::size_t runs = std::max<std::size_t>(1, c.samples / 50);
+  const std::size_t runs = c.share(50);
   for (std::size_t i = 0; i < runs; ++i) {
     const Push x = sample_push(r);
     for (const Pulse& pulse : pulses()) {
       const double work =
-          over_pulse([&](double t) { return x.J * pulse.f(t) * (x.p + x.J * pulse.g(t)) / x.m; });
+          over_pulse([&](double t) { return x.J * pulse.f(t) * (x.p + x.J * pulse.g(t)) / x.m; },
+                     (std::abs(x.p) * std::abs(x.J) + x.J * x.J) / x.m);
       errors.add(work, x.energy_change(), (std::abs(x.p) * std::abs(x.J) + x.J * x.J) / x.m);
     }
   }
@@ -157,7 +158,7 @@ Outcome force_reading(const Context& c) {
   for (int i = 0; i < 20; ++i) {
     const Push x = sample_push(r);
     for (const Pulse& pulse : pulses()) {
-      errors.add(over_pulse([&](double t) { return x.J * pulse.f(t); }), x.J);
+      errors.add(over_pulse([&](double t) { return x.J * pulse.f(t); }, x.J), x.J);
     }
   }
   return judge(EquationVerdict{{numeric(Method::quadrature, errors)},
@@ -177,7 +178,8 @@ Outcome path_step(const Context& c) {
     const Push x = sample_push(r);
     for (const Pulse& pulse : pulses()) {
       const double displacement =
-          over_pulse([&](double t) { return (x.p + x.J * pulse.g(t)) / x.m; });
+          over_pulse([&](double t) { return (x.p + x.J * pulse.g(t)) / x.m; },
+                     (std::abs(x.p) + std::abs(x.J)) / x.m);
       printed.add((x.p + x.J) / x.m * 1.0, displacement, (std::abs(x.p) + std::abs(x.J)) / x.m);
       // The correction S(t) = integral of v: against the motion integrated as an ODE.
       const auto end = num::integrate_until(
@@ -204,7 +206,7 @@ Outcome equation_4_2(const Context& c) {
   // change, for each pulse shape; the correction dS_v = v_v(t) dt for the same pulses.
   num::Random r(c.seed);
   num::Errors printed, corrected, rectangle;
-  const std::size_t runs = std::max<std::size_t>(1, c.samples / 50);
+  const std::size_t runs = c.share(50);
   for (std::size_t i = 0; i < runs; ++i) {
     const Push x = sample_push(r);
     if (std::abs(x.J) < 1e-3 * (std::abs(x.p) + 1e-300))
@@ -212,9 +214,10 @@ Outcome equation_4_2(const Context& c) {
     const double scale = (std::abs(x.p) * std::abs(x.J) + x.J * x.J) / x.m;
     for (const Pulse& pulse : pulses()) {
       const auto F = [&](double t) { return x.J * pulse.f(t); };
-      const double paper = over_pulse([&](double t) { return F(t) * (F(t) * t + x.p) / x.m; });
+      const double paper =
+          over_pulse([&](double t) { return F(t) * (F(t) * t + x.p) / x.m; }, scale);
       const double correct =
-          over_pulse([&](double t) { return F(t) * (x.p + x.J * pulse.g(t)) / x.m; });
+          over_pulse([&](double t) { return F(t) * (x.p + x.J * pulse.g(t)) / x.m; }, scale);
       if (std::string(pulse.name) == "rectangle") {
         rectangle.add(paper, x.energy_change(), scale);
       } else {
@@ -257,7 +260,7 @@ Outcome energy_closed_form(const Context& c) {
   // dS = v dt for each pulse shape: the result must not depend on the shape.
   num::Random r(c.seed);
   num::Errors errors;
-  const std::size_t runs = std::max<std::size_t>(1, c.samples / 50);
+  const std::size_t runs = c.share(50);
   const GiNaC::realsymbol J("J"), p("p");
   const GiNaC::possymbol m("m");
   const auto printed = sym::compile((J * J + 2 * p * J) / (2 * m), {J, p, m});
@@ -265,7 +268,8 @@ Outcome energy_closed_form(const Context& c) {
     const Push x = sample_push(r);
     for (const Pulse& pulse : pulses()) {
       const double work =
-          over_pulse([&](double t) { return x.J * pulse.f(t) * (x.p + x.J * pulse.g(t)) / x.m; });
+          over_pulse([&](double t) { return x.J * pulse.f(t) * (x.p + x.J * pulse.g(t)) / x.m; },
+                     (std::abs(x.p) * std::abs(x.J) + x.J * x.J) / x.m);
       errors.add(printed({x.J, x.p, x.m}), work, (std::abs(x.p) * std::abs(x.J) + x.J * x.J) / x.m);
     }
   }
@@ -282,19 +286,20 @@ Outcome energy_closed_form(const Context& c) {
 struct PairSolution {
   many::Scene scene;
   VectorXd F;
+  System system;
 };
 
 PairSolution solve_pair(num::Random& r, bool elastic, int max_contacts) {
   many::Scene s = many::random_pair(r, max_contacts);
   const auto k = printed_material(elastic);
   const System sys = assemble_printed(s, k);
-  return {s, many::solve(sys.A, sys.B)};
+  return {s, many::solve(sys.A, sys.B), sys};
 }
 
 Outcome equation_4_3(const Context& c) {
   num::Random r(c.seed);
   num::Errors errors;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const PairSolution x = solve_pair(r, true, 4);
     for (std::size_t v = 0; v < x.scene.contacts.size(); ++v) {
       const double mine = many::contact_energy(x.scene, x.F, 0, v).translational;
@@ -334,14 +339,10 @@ const Symbols44& s44() {
   return s;
 }
 
-}  // namespace
-
-sym::Equation printed_4_4() {
+Equation printed_4_4() {
   const auto& s = s44();
   return {s.S / s.m, 2 * s.p / s.m + s.dEo / (2 * s.S)};
 }
-
-namespace {
 
 Equation corrected_4_4() {
   const auto& s = s44();
@@ -353,7 +354,7 @@ Equation corrected_4_4() {
 template <typename Visit>
 void pair_contacts(const Context& c, int max_contacts, Visit visit) {
   num::Random r(c.seed);
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const PairSolution x = solve_pair(r, true, max_contacts);
     const many::Body& b = x.scene.bodies[0];
     for (std::size_t v = 0; v < x.scene.contacts.size(); ++v) {
@@ -363,7 +364,9 @@ void pair_contacts(const Context& c, int max_contacts, Visit visit) {
         S += x.F(static_cast<Eigen::Index>(k)) * x.scene.contacts[k].n.dot(nv);
       }
       const double dEo = many::contact_energy(x.scene, x.F, 1, v).translational;
-      visit(S, b.p.dot(nv), b.m, dEo);
+      const double terms =
+          x.system.A.row(static_cast<Eigen::Index>(v)).cwiseAbs().dot(x.F.cwiseAbs());
+      visit(S, b.p.dot(nv), b.m, dEo, terms);
     }
   }
 }
@@ -380,10 +383,10 @@ Outcome equation_4_4(const Context& c) {
   const auto rhs_printed = sym::compile(printed_4_4().rhs, {s.S, s.p, s.dEo, s.m});
   const auto rhs_corrected = sym::compile(corrected_4_4().rhs, {s.S, s.p, s.dEo, s.m});
   num::Errors printed, corrected;
-  pair_contacts(c, 4, [&](double S, double p, double m, double dEo) {
+  pair_contacts(c, 4, [&](double S, double p, double m, double dEo, double terms) {
     if (std::abs(S) < 1e-9 * (std::abs(p) + 1e-300))
       return;  // no impulse along n_v: nothing to divide by
-    const double scale = std::abs(S / m) + std::abs(2 * p / m) + std::abs(2 * dEo / S);
+    const double scale = std::abs(S / m) + std::abs(2 * p / m) + std::abs(2 * dEo / S) + terms;
     printed.add(lhs({S, p, dEo, m}), rhs_printed({S, p, dEo, m}), scale);
     corrected.add(lhs({S, p, dEo, m}), rhs_corrected({S, p, dEo, m}), scale);
   });
@@ -437,7 +440,7 @@ Outcome material_equation(const Context& c, bool elastic) {
   const auto k = printed_material(elastic);
   num::Random r(c.seed);
   num::Errors physics, model_agreement, library;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const many::Scene s = many::random_scene(r, false, true, 5, 6);
     const System sys = assemble_printed(s, k);
     const many::Model md = many::model(s);
@@ -497,11 +500,11 @@ Outcome equation_4_6(const Context& c) {
   const auto k = printed_material(false);
   num::Random r(c.seed);
   num::Errors printed, corrected;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const PairSolution x = [&] {
       many::Scene s = many::random_pair(r, 1);
       const System sys = assemble_printed(s, k);
-      return PairSolution{s, many::solve(sys.A, sys.B)};
+      return PairSolution{s, many::solve(sys.A, sys.B), sys};
     }();
     const many::Scene after = many::after(x.scene, x.F);
     const Vector2d va = after.bodies[0].p / after.bodies[0].m;
@@ -537,7 +540,7 @@ Outcome equation_4_7(const Context& c) {
   const auto k = printed_material(false);
   num::Random r(c.seed);
   num::Errors printed_err, corrected_err;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     many::Scene s = many::random_pair(r, 3);
     const System sys = assemble_printed(s, k);
     const VectorXd F = many::solve(sys.A, sys.B);
@@ -587,7 +590,7 @@ Outcome two_body_sum(const Context& c) {
   num::Errors errors;
   for (const bool elastic : {true, false}) {
     const auto k = printed_material(elastic);
-    for (std::size_t i = 0; i < c.samples / 8; ++i) {
+    for (std::size_t i = 0; i < c.share(8); ++i) {
       const many::Scene s = many::random_pair(r, 4);
       const System sys = assemble_printed(s, k);
       const many::Model md = many::model(s);
@@ -608,7 +611,7 @@ Outcome impulse_direction(const Context& c) {
   const auto k = printed_material(true);
   num::Random r(c.seed);
   num::Errors printed, corrected;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const many::Scene s = many::random_scene(r, false, true, 4, 5);
     const System sys = assemble_printed(s, k);
     const VectorXd F = many::solve(sys.A, sys.B);
@@ -741,7 +744,7 @@ Outcome claim_equal_impulses(const Context& c) {
   // split solves them.
   num::Random r(c.seed);
   std::size_t failures = 0, tried = 0;
-  for (std::size_t i = 0; i < c.samples / 10; ++i) {
+  for (std::size_t i = 0; i < c.share(10); ++i) {
     many::Scene x;
     x.bodies = {many::Body{r.mass(), 0, {0, 0}, {0, 0}, 0}, many::Body{0, 0, {0, 0}, {0, 0}, 0}};
     x.bodies[0].p = x.bodies[0].m * r.vector(10);
@@ -780,7 +783,7 @@ Outcome many_bodies(const Context& c, bool elastic) {
   const auto k = printed_material(elastic);
   num::Random r(c.seed);
   num::Errors physics;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const many::Scene s = many::random_scene(r, false, true, 6, 8);
     const System sys = assemble_printed(s, k);
     const VectorXd F = many::solve(sys.A, sys.B);
@@ -854,7 +857,7 @@ Outcome many_4_4(const Context& c) {
   const auto k = printed_material(true);
   num::Random r(c.seed);
   num::Errors printed, corrected;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const many::Scene s = many::random_scene(r, false, false, 5, 6);
     const System sys = assemble_printed(s, k);
     const VectorXd F = many::solve(sys.A, sys.B);
@@ -877,8 +880,10 @@ Outcome many_4_4(const Context& c) {
         continue;
       const double dEo = many::contact_energy(s, F, other, v).translational;
       const double lhs = all / b.m;
-      const double scale =
-          std::abs(lhs) + std::abs(2 * b.p.dot(nv) / b.m) + std::abs(2 * dEo / pair);
+      // Row v of the system is what the balance rests on; its rounding scales with its terms.
+      const double scale = std::abs(lhs) + std::abs(2 * b.p.dot(nv) / b.m) +
+                           std::abs(2 * dEo / pair) +
+                           sys.A.row(static_cast<Eigen::Index>(v)).cwiseAbs().dot(F.cwiseAbs());
       printed.add(lhs, 2 * b.p.dot(nv) / b.m + dEo / (2 * pair), scale);
       corrected.add(lhs, 2 * b.p.dot(nv) / b.m - 2 * dEo / pair, scale);
     }
@@ -897,7 +902,7 @@ Outcome oplus(const Context& c) {
   const auto k = printed_material(true);
   num::Random r(c.seed);
   num::Errors errors;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const many::Scene s = many::random_scene(r, false, true, 6, 8);
     const System sys = assemble_printed(s, k);
     const many::Model md = many::model(s);

@@ -106,7 +106,7 @@ Outcome claim_pinned(const Context& c) {
   // bodies of point masses; for a free body, by contrast, (3.1) needs the centre of mass.
   num::Random r(c.seed);
   num::Errors energy, steiner;
-  for (std::size_t i = 0; i < c.samples / 10; ++i) {
+  for (std::size_t i = 0; i < c.share(10); ++i) {
     const int count = r.integer(3, 6);
     std::vector<double> m;
     std::vector<Vector2d> x;
@@ -163,7 +163,7 @@ Outcome energy_balance(const Context& c) {
   // impulses of the summed (5.3); the per-contact energies are the paper's closed forms.
   num::Random r(c.seed);
   num::Errors errors;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const Solved x = solve_scene(r, true, false, 2, 4, true);
     for (std::size_t v = 0; v < x.scene.contacts.size(); ++v) {
       const auto mine = many::contact_energy(x.scene, x.F, x.scene.contacts[v].a, v);
@@ -232,8 +232,8 @@ const std::vector<Pulse>& pulses() {
   };
   return p;
 }
-double over_pulse(const std::function<double(double)>& f) {
-  return num::integrate(f, 0, 0.5) + num::integrate(f, 0.5, 1);
+double over_pulse(const std::function<double(double)>& f, double scale = 0.0) {
+  return num::integrate(f, 0, 0.5, scale) + num::integrate(f, 0.5, 1, scale);
 }
 
 Outcome angle_step(const Context& c) {
@@ -244,7 +244,8 @@ Outcome angle_step(const Context& c) {
   for (int i = 0; i < 50; ++i) {
     const double I = r.mass(), L = I * r.uniform(-10, 10), dL = I * r.uniform(-10, 10);
     for (const Pulse& p : pulses()) {
-      const double angle = over_pulse([&](double t) { return (L + dL * p.g(t)) / I; });
+      const double angle = over_pulse([&](double t) { return (L + dL * p.g(t)) / I; },
+                                      (std::abs(L) + std::abs(dL)) / I);
       printed.add((L + dL) / I, angle, (std::abs(L) + std::abs(dL)) / I);
       const auto end = num::integrate_until(
           [&](double t, const double* y, double* dy) {
@@ -269,7 +270,7 @@ Outcome dalpha_step(const Context& c) {
   // rotational work d_v F_v d(alpha) integrated for each pulse against the closed form.
   num::Random r(c.seed);
   num::Errors printed, corrected, rectangle;
-  for (std::size_t i = 0; i < std::max<std::size_t>(1, c.samples / 50); ++i) {
+  for (std::size_t i = 0; i < c.share(50); ++i) {
     const double I = r.mass(), L = I * r.uniform(-10, 10), dL = I * r.uniform(-10, 10);
     const double d = r.uniform(-2, 2), J = dL / (std::abs(d) > 1e-3 ? d : 1.0);
     // A single contact: the torque d J f(t) turns the body; the work is the energy change.
@@ -279,9 +280,9 @@ Outcome dalpha_step(const Context& c) {
       const Pulse& p = pulses()[k];
       const auto torque = [&](double t) { return dL * p.f(t); };
       const double paper =
-          over_pulse([&](double t) { return torque(t) * (torque(t) * t + L) / I; });
+          over_pulse([&](double t) { return torque(t) * (torque(t) * t + L) / I; }, scale);
       const double correct =
-          over_pulse([&](double t) { return torque(t) * (L + dL * p.g(t)) / I; });
+          over_pulse([&](double t) { return torque(t) * (L + dL * p.g(t)) / I; }, scale);
       (k == 0 ? rectangle : printed).add(paper, change, scale);
       corrected.add(correct, change, scale);
     }
@@ -306,7 +307,7 @@ Outcome angular_impulse(const Context& c) {
   // given the body's response, changes by the printed sum.
   num::Random r(c.seed);
   num::Errors errors;
-  for (std::size_t i = 0; i < c.samples / 10; ++i) {
+  for (std::size_t i = 0; i < c.share(10); ++i) {
     const cloud::Cloud body = cloud::sample(r);
     std::vector<cloud::Kick> kicks;
     double printed = 0;
@@ -342,13 +343,14 @@ Outcome equation_5_1(const Context& c) {
   const bool exact = sym::simplify(integral - d * F * T * (tau * T / (2 * I) + L / I)).is_zero();
   num::Random r(c.seed);
   num::Errors errors;
-  for (std::size_t i = 0; i < std::max<std::size_t>(1, c.samples / 50); ++i) {
+  for (std::size_t i = 0; i < c.share(50); ++i) {
     const double Iv = r.mass(), Lv = Iv * r.uniform(-10, 10);
     const double lever = r.uniform(-2, 2), Ji = r.uniform(-10, 10), dL = Iv * r.uniform(-10, 10);
     const double closed = lever * Ji * (dL / (2 * Iv) + Lv / Iv);
     for (const Pulse& p : pulses()) {
       const double work =
-          over_pulse([&](double s) { return lever * Ji * p.f(s) * (Lv + dL * p.g(s)) / Iv; });
+          over_pulse([&](double s) { return lever * Ji * p.f(s) * (Lv + dL * p.g(s)) / Iv; },
+                     std::abs(lever * Ji) * (std::abs(dL) + std::abs(Lv)) / Iv);
       errors.add(work, closed, std::abs(lever * Ji) * (std::abs(dL) + std::abs(Lv)) / Iv);
     }
   }
@@ -381,7 +383,7 @@ Outcome equation_5_2(const Context& c) {
   // Numbers: two bodies at the impulses of the summed (5.3).
   num::Random r(c.seed);
   num::Errors printed_err, corrected_err;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const Solved x = solve_scene(r, true, false, 2, 4, true);
     for (std::size_t v = 0; v < x.scene.contacts.size(); ++v) {
       const std::size_t body = x.scene.contacts[v].a;
@@ -402,7 +404,9 @@ Outcome equation_5_2(const Context& c) {
       const auto other = many::contact_energy(x.scene, x.F, x.scene.contacts[v].b, v);
       const double dEov = other.translational + other.rotational;
       const double base = (b.rigid() ? 2 * b.L * dv / b.I : 0.0) + 2 * b.p.dot(nv) / b.m;
-      const double scale = std::abs(lhs) + std::abs(base) + std::abs(2 * dEov / Pv);
+      const double scale =
+          std::abs(lhs) + std::abs(base) + std::abs(2 * dEov / Pv) +
+          x.system.A.row(static_cast<Eigen::Index>(v)).cwiseAbs().dot(x.F.cwiseAbs());
       printed_err.add(lhs, base + dEov / (2 * Pv), scale);
       corrected_err.add(lhs, base - 2 * dEov / Pv, scale);
     }
@@ -454,7 +458,7 @@ Outcome rigid_equation(const Context& c, bool elastic) {
   const auto k = printed_rigid(elastic);
   num::Random r(c.seed);
   num::Errors physics, model_agreement, library;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const many::Scene s = many::random_scene(r, true, true, 5, 6);
     const System sys = assemble_printed(s, k);
     const many::Model md = many::model(s);
@@ -516,7 +520,7 @@ Outcome equation_5_4(const Context& c) {
   // impulse at a time) and point_velocity.
   num::Random r(c.seed);
   num::Errors errors;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const double m = r.mass(), gyration = r.log_uniform(0.1, 10), I = m * gyration * gyration;
     const Vector2d p = m * r.vector(10);
     const double L = I * r.uniform(-10, 10) / gyration;
@@ -540,7 +544,7 @@ Outcome equation_5_4(const Context& c) {
   }
   // The same with a body of point masses hit at several of its points (Gauss's principle).
   num::Errors physics;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const cloud::Cloud body = cloud::sample(r);
     std::vector<cloud::Kick> kicks;
     Vector2d total = Vector2d::Zero();
@@ -581,15 +585,18 @@ Outcome equalisation_sign(const Context& c) {
   // +v'_vo . n_v.
   num::Random r(c.seed);
   num::Errors printed, corrected;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const Solved x = solve_scene(r, false, false, 2, 3, true);
     const many::Scene after = many::after(x.scene, x.F);
     for (std::size_t v = 0; v < x.scene.contacts.size(); ++v) {
       const auto& ct = x.scene.contacts[v];
       const double own = after.bodies[ct.a].velocity_at(ct.point).dot(ct.n);
       const double other = after.bodies[ct.b].velocity_at(ct.point).dot(ct.n);
+      // The speeds before, and the terms sum_k |A_vk F_k| of the change the impulses bring.
+      const auto row = static_cast<Eigen::Index>(v);
       const double scale = x.scene.bodies[ct.a].velocity_at(ct.point).norm() +
-                           x.scene.bodies[ct.b].velocity_at(ct.point).norm();
+                           x.scene.bodies[ct.b].velocity_at(ct.point).norm() +
+                           x.system.A.row(row).cwiseAbs().dot(x.F.cwiseAbs());
       printed.add(own, -other, scale);
       corrected.add(own, other, scale);
     }
@@ -614,29 +621,31 @@ Outcome substituted_sign(const Context& c) {
   const bool corrected_follows = sym::nonzero_multiple(corrected, condition, {}).has_value();
   num::Random r(c.seed);
   num::Errors printed_err, corrected_err;
-  for (std::size_t i = 0; i < c.samples / 4; ++i) {
+  for (std::size_t i = 0; i < c.share(4); ++i) {
     const Solved x = solve_scene(r, false, false, 2, 3, true);
     const many::Scene after = many::after(x.scene, x.F);
     for (std::size_t v = 0; v < x.scene.contacts.size(); ++v) {
       const auto& ct = x.scene.contacts[v];
-      const double lhs = (x.system.A.row(static_cast<Eigen::Index>(v)) * x.F)(0);
       // The body's own part of row v: its block times the impulses.
       const many::Body& b = x.scene.bodies[ct.a];
-      double own_lhs = 0;
+      double own_lhs = 0, own_terms = 0;
       const double dv = b.rigid() ? cross(ct.point - b.position, ct.n) : 0.0;
       for (std::size_t k = 0; k < x.scene.contacts.size(); ++k) {
         const auto& c2 = x.scene.contacts[k];
         if (c2.a != ct.a && c2.b != ct.a)
           continue;
         const Vector2d own = c2.a == ct.a ? c2.n : Vector2d(-c2.n);
-        own_lhs += x.F(static_cast<Eigen::Index>(k)) *
-                   ((b.rigid() ? cross(c2.point - b.position, own) * dv / b.I : 0.0) +
-                    own.dot(ct.n) / b.m);
+        const double term = x.F(static_cast<Eigen::Index>(k)) *
+                            ((b.rigid() ? cross(c2.point - b.position, own) * dv / b.I : 0.0) +
+                             own.dot(ct.n) / b.m);
+        own_lhs += term;
+        own_terms += std::abs(term);
       }
       const double base_v = b.p.dot(ct.n) / b.m + (b.rigid() ? b.L * dv / b.I : 0.0);
       const double w_v = after.bodies[ct.b].velocity_at(ct.point).dot(ct.n);
       const double scale =
-          std::abs(own_lhs) + std::abs(base_v) + std::abs(w_v) + 1e-300 * std::abs(lhs);
+          own_terms + std::abs(base_v) + std::abs(w_v) +
+          x.system.A.row(static_cast<Eigen::Index>(v)).cwiseAbs().dot(x.F.cwiseAbs());
       printed_err.add(own_lhs, base_v + w_v, scale);
       corrected_err.add(own_lhs, base_v - w_v, scale);
     }
@@ -659,7 +668,7 @@ Outcome claim_elasticity(const Context& c) {
   num::Random r(c.seed);
   num::Errors kept, stopped;
   std::size_t gained = 0, tried = 0;
-  for (std::size_t i = 0; i < c.samples / 8; ++i) {
+  for (std::size_t i = 0; i < c.share(8); ++i) {
     const many::Scene s = many::random_scene(r, true, true, 5, 6);
     const double E = many::energy(s);
     if (E == 0)

@@ -32,9 +32,6 @@ const LineSymbols& line_symbols();
 sym::Equation printed_1_1();
 std::vector<Finding> elastic_line_findings(const sym::Equation& candidate, const Context& context);
 
-/// (4.4) as printed and the findings on a candidate (per-contact energy balance of two bodies).
-sym::Equation printed_4_4();
-
 /// Shorthand to build checks.
 Check make_check(std::string id, std::string section, std::optional<std::string> equation,
                  Kind kind, std::string statement, std::function<Outcome(const Context&)> evaluate);

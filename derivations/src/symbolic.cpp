@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "symbolic.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -170,6 +171,30 @@ std::size_t depth(const ex& e) {
   return deepest + 1;
 }
 
+// A key that orders an expression's operands the same way in every run. GiNaC orders the
+// terms of a sum by hash values that may differ between processes; floating-point sums in
+// different orders differ in their last bits, and a report must not change with the run.
+std::string canonical(const ex& e) {
+  if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
+    std::vector<std::string> parts;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      parts.push_back(canonical(e.op(i)));
+    }
+    std::sort(parts.begin(), parts.end());
+    std::string key = is_a<GiNaC::add>(e) ? "+(" : "*(";
+    for (const auto& part : parts) {
+      key += part + ",";
+    }
+    return key + ")";
+  }
+  if (is_a<GiNaC::power>(e)) {
+    return "^(" + canonical(e.op(0)) + "," + canonical(e.op(1)) + ")";
+  }
+  std::ostringstream out;
+  out << e;
+  return out.str();
+}
+
 void emit(const ex& e, const std::vector<ex>& symbols,
           std::vector<Compiled::Instruction>& program) {
   using Op = Compiled::Op;
@@ -187,8 +212,14 @@ void emit(const ex& e, const std::vector<ex>& symbols,
     throw std::invalid_argument("compile: unbound symbol " + latex(e));
   }
   if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
+    std::vector<std::pair<std::string, ex>> operands;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      emit(e.op(i), symbols, program);
+      operands.emplace_back(canonical(e.op(i)), e.op(i));
+    }
+    std::sort(operands.begin(), operands.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& operand : operands) {
+      emit(operand.second, symbols, program);
     }
     program.push_back({is_a<GiNaC::add>(e) ? Op::add : Op::mul, 0.0, e.nops()});
     return;

@@ -11,6 +11,11 @@ Finding symbolic(bool holds, std::string detail) {
 
 Finding numeric(Method method, const num::Errors& errors, double holds_below, std::string detail) {
   Finding f{method, false, errors.worst, errors.samples, std::move(detail), true};
+  if (errors.samples == 0) {
+    f.conclusive = false;  // nothing was compared: no verdict either way
+    f.detail += f.detail.empty() ? "no samples" : " (no samples)";
+    return f;
+  }
   if (errors.worst <= holds_below) {
     f.holds = true;
   } else if (errors.worst < num::fails_above) {
@@ -24,7 +29,8 @@ Finding search(std::size_t tried, std::size_t failures, std::string detail) {
   if (!detail.empty()) {
     text += ", " + detail;
   }
-  return {Method::search, failures == 0, std::nullopt, tried, std::move(text), true};
+  // A search that tried nothing proves nothing.
+  return {Method::search, failures == 0, std::nullopt, tried, std::move(text), tried > 0};
 }
 
 namespace {

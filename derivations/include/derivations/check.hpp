@@ -71,6 +71,12 @@ struct Outcome {
 struct Context {
   std::size_t samples = 10000;  ///< random samples per numeric method
   std::uint64_t seed = 1;       ///< this check's seed (derived from the run's seed and the id)
+  /// @brief A share of the samples for a costlier method: samples / divisor, at least 1.
+  /// @param divisor how many times costlier one sample is
+  /// @return the number of samples to draw
+  [[nodiscard]] std::size_t share(std::size_t divisor) const {
+    return samples / divisor > 0 ? samples / divisor : 1;
+  }
 };
 
 /// @brief One check: data plus the function that evaluates it.
