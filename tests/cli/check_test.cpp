@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// impulselab check run as a user runs it: the formats, the section filter, the exit statuses.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli/program.hpp"
+
+namespace t = impulselab::test;
+using Catch::Matchers::Contains;
+using nlohmann::json;
+
+TEST_CASE("check --format json: one section, parsed by a program", "[cli]") {
+  const t::Run r = t::run("check --section 1.1 --samples 200 --format json");
+  REQUIRE(r.status == 0);
+  REQUIRE(r.err.empty());
+  const json report = json::parse(r.out);
+  REQUIRE(report.at("samples") == 200);
+  REQUIRE_FALSE(report.at("checks").empty());
+  for (const json& c : report.at("checks")) {
+    CHECK(c.at("section") == "1.1");
+  }
+  CHECK(report.at("summary").at("failed") == 0);
+}
+
+TEST_CASE("check as text ends with the summary and the errata", "[cli]") {
+  const t::Run r = t::run("check --section 4 --samples 200");
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.out, Contains("Summary: "));
+  CHECK_THAT(r.out, Contains("Errata:"));
+  CHECK_THAT(r.out, Contains("eq-4.4 (4.4)"));
+  CHECK(r.out.find('\033') == std::string::npos);  // not a terminal: no colour
+}
+
+TEST_CASE("check --format markdown and --output", "[cli]") {
+  const auto folder = t::fresh_folder("check-output");
+  const auto file = folder / "report.md";
+  const t::Run r = t::run("check --section 2 --samples 100 --format markdown --output " +
+                          t::quote(file.string()));
+  REQUIRE(r.status == 0);
+  REQUIRE(r.out.empty());
+  const std::string md = t::read_text(file);
+  CHECK_THAT(md, Contains("# Derivation check report"));
+  CHECK_THAT(md, Contains("{#check-claim-2-sign}"));
+}
+
+TEST_CASE("check refuses bad usage with exit status 2", "[cli]") {
+  const t::Run unknown = t::run("check --section 9");
+  CHECK(unknown.status == 2);
+  CHECK_THAT(unknown.err, Contains("--section 9: no check is in that section"));
+  CHECK_THAT(unknown.err, Contains("1.1"));
+  CHECK(t::run("check --samples 0").status == 2);
+  CHECK(t::run("check --samples many").status == 2);
+  CHECK(t::run("check --format xml").status == 2);
+  CHECK(t::run("check --bogus").status == 2);
+  const t::Run help = t::run("check --help");
+  CHECK(help.status == 0);
+  CHECK_THAT(help.out, Contains("--samples"));
+}
+
+TEST_CASE("The same seed gives the same report", "[cli]") {
+  const auto first = t::run("check --section 3.1 --samples 100 --seed 5 --format json");
+  const auto second = t::run("check --section 3.1 --samples 100 --seed 5 --format json");
+  REQUIRE(first.status == 0);
+  auto a = json::parse(first.out), b = json::parse(second.out);
+  // Timings differ from run to run; everything else is the same.
+  for (auto* report : {&a, &b}) {
+    report->erase("seconds");
+    for (auto& c : report->at("checks"))
+      c.erase("seconds");
+  }
+  CHECK(a == b);
+}
