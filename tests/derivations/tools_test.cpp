@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The checker's tools: the rules from findings to a verdict, exact algebra, the compiled
+// expressions, the error measure.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "numeric.hpp"
+#include "symbolic.hpp"
+#include "verdict.hpp"
+
+namespace check = impulse::derivations;
+namespace sym = impulse::derivations::sym;
+namespace num = impulse::derivations::num;
+using check::Finding;
+using check::Method;
+using check::Status;
+
+namespace {
+Finding holds(Method m) {
+  return {m, true, std::nullopt, 1, {}, true};
+}
+Finding fails(Method m) {
+  return {m, false, std::nullopt, 1, {}, true};
+}
+Finding unsure(Method m) {
+  return {m, false, 1e-7, 1, {}, false};
+}
+}  // namespace
+
+TEST_CASE("Equations: verified, erratum or failed by the findings alone", "[derivations]") {
+  using check::EquationVerdict;
+  CHECK(check::judge(
+            EquationVerdict{{holds(Method::symbolic), holds(Method::numeric)}, {}, {}, {}, {}})
+            .status == Status::verified);
+  // An erratum needs every method to reject the print and to accept the correction.
+  CHECK(check::judge(EquationVerdict{{fails(Method::symbolic), fails(Method::numeric)},
+                                     {holds(Method::numeric)},
+                                     "x = 1",
+                                     "why",
+                                     {}})
+            .status == Status::erratum);
+  // Methods that disagree are a defect to look at, not a verdict.
+  CHECK(check::judge(EquationVerdict{{holds(Method::symbolic), fails(Method::numeric)},
+                                     {holds(Method::numeric)},
+                                     "x = 1",
+                                     "why",
+                                     {}})
+            .status == Status::failed);
+  // A correction that does not hold, or is missing, leaves the check failed.
+  CHECK(check::judge(
+            EquationVerdict{{fails(Method::numeric)}, {fails(Method::numeric)}, "x", "why", {}})
+            .status == Status::failed);
+  CHECK(check::judge(EquationVerdict{{fails(Method::numeric)}, {}, {}, {}, {}}).status ==
+        Status::failed);
+  // An error between "holds" and "fails" decides nothing.
+  CHECK(check::judge(EquationVerdict{{unsure(Method::numeric)}, {}, {}, {}, {}}).status ==
+        Status::failed);
+  // No findings at all verify nothing.
+  CHECK(check::judge(EquationVerdict{}).status == Status::failed);
+}
+
+TEST_CASE("Claims: a counterexample refutes unless a proof says otherwise", "[derivations]") {
+  using check::ClaimVerdict;
+  CHECK(check::judge(ClaimVerdict{{holds(Method::search)}, std::nullopt, {}, {}}).status ==
+        Status::verified);
+  CHECK(
+      check::judge(ClaimVerdict{{fails(Method::search), holds(Method::search)}, "x = 1", "why", {}})
+          .status == Status::refuted);
+  CHECK(check::judge(
+            ClaimVerdict{{fails(Method::search), holds(Method::symbolic)}, "x = 1", "why", {}})
+            .status == Status::failed);
+  // A counterexample no finding stands behind is not enough.
+  CHECK(check::judge(ClaimVerdict{{holds(Method::search)}, "x = 1", "why", {}}).status ==
+        Status::failed);
+}
+
+TEST_CASE("Numeric findings: thresholds, and nothing from no samples", "[derivations]") {
+  num::Errors none;
+  CHECK_FALSE(check::numeric(Method::numeric, none).conclusive);
+  num::Errors small;
+  small.add_relative(1e-12);
+  CHECK(check::numeric(Method::numeric, small).holds);
+  num::Errors large;
+  large.add_relative(0.5);
+  const Finding f = check::numeric(Method::numeric, large);
+  CHECK(f.conclusive);
+  CHECK_FALSE(f.holds);
+  num::Errors nan;
+  nan.add_relative(std::nan(""));
+  CHECK_FALSE(check::numeric(Method::numeric, nan).holds);
+  CHECK_FALSE(check::search(0, 0).conclusive);
+  CHECK(check::search(10, 0).holds);
+  CHECK_FALSE(check::search(10, 1).holds);
+}
+
+TEST_CASE("A step follows when it is a non-zero multiple of the line before", "[derivations]") {
+  const GiNaC::realsymbol x("x"), F("F");
+  const GiNaC::possymbol m("m");
+  const sym::Equation previous{x + 1, 3};  // x = 2
+  // Twice the equation, or divided by a positive mass: it follows.
+  CHECK(sym::nonzero_multiple({2 * x + 2, 6}, previous, {}));
+  CHECK(sym::nonzero_multiple({(x + 1) / m, 3 / m}, previous, {}));
+  // Multiplied by F, which may be zero, it follows only if F != 0 is assumed.
+  CHECK_FALSE(sym::nonzero_multiple({F * (x + 1), 3 * F}, previous, {}));
+  CHECK(sym::nonzero_multiple({F * (x + 1), 3 * F}, previous, {{F}}));
+  // Multiplied by 1 + m^2 (positive) it follows; by x - 2 (zero at the solution) it does not.
+  CHECK(sym::nonzero_multiple({(x + 1) * (1 + m * m), 3 * (1 + m * m)}, previous, {}));
+  CHECK_FALSE(sym::nonzero_multiple({(x + 1) * (x - 2), 3 * (x - 2)}, previous, {}));
+  // A different equation does not follow.
+  CHECK_FALSE(sym::nonzero_multiple({x, 3}, previous, {}));
+  CHECK(sym::holds({GiNaC::pow(x + 1, 2), x * x + 2 * x + 1}));
+  CHECK_FALSE(sym::holds({GiNaC::pow(x + 1, 2), x * x + 1}));
+}
+
+TEST_CASE("Compiled expressions agree with GiNaC's own evaluation", "[derivations]") {
+  const GiNaC::realsymbol a("a"), b("b"), c("c");
+  const GiNaC::ex e = (a * a + 2 * b) / (3 * c) - GiNaC::pow(a - c, 3) + GiNaC::sqrt(b * b + 1) / a;
+  const auto f = sym::compile(e, {a, b, c});
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.5, 3.0);
+  for (int i = 0; i < 200; ++i) {
+    const double x = u(rng), y = u(rng), z = u(rng);
+    const double exact =
+        GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(GiNaC::lst{a == x, b == y, c == z})))
+            .to_double();
+    CHECK(f({x, y, z}) == Approx(exact).epsilon(1e-13));
+  }
+  CHECK_THROWS_AS(sym::compile(GiNaC::sin(a), {a}), std::invalid_argument);
+  CHECK_THROWS_AS(sym::compile(a + b, {a}), std::invalid_argument);  // b unbound
+  CHECK_THROWS_AS(f({1.0, 2.0}), std::invalid_argument);
+}
+
+TEST_CASE("Relative errors need a scale to compare with zero", "[derivations]") {
+  CHECK(num::relative_error(1.0, 1.0 + 1e-12) == Approx(1e-12).epsilon(1e-3));
+  CHECK(num::relative_error(1e-12, 0.0, 1.0) == Approx(1e-12));
+  CHECK(num::relative_error(0.0, 0.0) == 0.0);
+  CHECK_THROWS_AS(num::relative_error(1e-12, 0.0), std::invalid_argument);
+}
+
+TEST_CASE("Quadrature and minimisation against known answers", "[derivations]") {
+  // The integral of sin over [0, pi] is 2; the minimum of (x - 0.3)^2 + 1 is at 0.3.
+  CHECK(num::integrate([](double x) { return std::sin(x); }, 0, M_PI) ==
+        Approx(2.0).epsilon(1e-12));
+  CHECK(num::minimise([](double x) { return (x - 0.3) * (x - 0.3) + 1; }, 0, 1, 0.5) ==
+        Approx(0.3).epsilon(1e-6));
+  // A harmonic oscillator x'' = -x from x = 0, x' = 1 leaves x > 0 at t = pi.
+  const auto end = num::integrate_until(
+      [](double, const double* y, double* dy) {
+        dy[0] = y[1];
+        dy[1] = -y[0];
+      },
+      {0.0, 1.0}, [](double t, const double* y) { return t <= 0 ? 1.0 : y[0]; }, 0.01, 10, 1e-12);
+  CHECK(end.t == Approx(M_PI).epsilon(1e-9));
+}
