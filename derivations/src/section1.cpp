@@ -107,6 +107,8 @@ Finding library_agreement(const sym::Compiled& printed_F, double e1, double e2, 
 struct ContactRun {
   double impulse = 0;  // the integral of the contact force
   double approach_after = 0;
+  double momentum_1 = 0;  // body 1's momentum along the axis at the end, as integrated
+  double momentum_2 = 0;  // body 2's
 };
 
 ContactRun spring_damper(const LineSample& x, double k, double c) {
@@ -136,7 +138,7 @@ ContactRun spring_damper(const LineSample& x, double k, double c) {
   };
   const auto end = num::integrate_until(rhs, {0.0, x.p1, -x.p2, 0.0}, ended, time_scale / 50,
                                         1e4 * time_scale, 1e-12 * time_scale);
-  return {end.y[3], end.y[1] / x.m1 - end.y[2] / x.m2};
+  return {end.y[3], end.y[1] / x.m1 - end.y[2] / x.m2, end.y[1], end.y[2]};
 }
 
 // ---- the checks ------------------------------------------------------------------------------
@@ -147,17 +149,15 @@ Outcome momentum_update(const Context& c) {
   const bool exact = sym::simplify((p1x - F) + (p2x + F) - (p1x + p2x)).is_zero();
   num::Random r(c.seed);
   num::Errors errors;
-  for (std::size_t i = 0; i < c.samples; ++i) {
-    const LineSample x = sample_line(r);
-    const LineSample& y = x;
-    // An independent model of the same collision: a spring-damper contact. The momenta it
-    // returns differ from the ones before by -J and +J, J the integrated force.
-    if (i < 20) {
-      const ContactRun run = spring_damper(y, 1e4, 10.0 * static_cast<double>(i % 3));
-      const double after1 = y.p1 - run.impulse;
-      const double after2_axis = -y.p2 + run.impulse;
-      errors.add(after1 + after2_axis, y.p1 - y.p2, std::abs(y.p1) + std::abs(y.p2) + run.impulse);
-    }
+  for (int i = 0; i < 20; ++i) {
+    // An independent model of the same collision: a spring-damper contact, integrated. The
+    // momenta it ends with must differ from the ones before by -J and +J, J the integral of the
+    // contact force (integrated as a separate quantity of the same ODE).
+    const LineSample x = sample_line(r, true);
+    const ContactRun run = spring_damper(x, 1e4, 10.0 * (i % 3));
+    const double scale = std::abs(x.p1) + std::abs(x.p2) + std::abs(run.impulse);
+    errors.add(run.momentum_1, x.p1 - run.impulse, scale);
+    errors.add(run.momentum_2, -x.p2 + run.impulse, scale);
   }
   return judge(EquationVerdict{{symbolic(exact), numeric(Method::ode, errors, 1e-9,
                                                          "spring-damper contacts: the momenta "
