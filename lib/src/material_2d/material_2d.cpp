@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "impulse/material_2d/material_2d.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "impulse/core/error.hpp"
@@ -14,6 +15,9 @@ PointMass from_velocity(double mass, const Eigen::Vector2d& velocity) {
 }
 
 void validate(const PointMass& body, const char* name) {
+  if (is_positive(body.mass) && std::isfinite(body.p.x()) && std::isfinite(body.p.y())) [[likely]] {
+    return;  // the common case: no message, no string built
+  }
   const std::string prefix(name);
   require_positive(prefix + ".mass", body.mass);
   require_finite(prefix + ".p", body.p);
@@ -41,12 +45,19 @@ double normal_velocity(const PointMass& body, const Eigen::Vector2d& n) {
   return body.p.dot(n) / body.mass;  // p_n / m, with p_n = p . n (section 2)
 }
 
+namespace {
+// (1.3) on the cast p_n = p . n for a body and normal already validated; (4.5)/(4.8) with a
+// single contact.
+ScalarContribution share(const PointMass& body, const Eigen::Vector2d& n, Elasticity elasticity) {
+  return {n.squaredNorm() / body.mass, elasticity.value() * normal_velocity(body, n)};
+}
+}  // namespace
+
 ScalarContribution contribution(const PointMass& body, const Eigen::Vector2d& n,
                                 Elasticity elasticity) {
   validate(body);
   require_unit_normal("normal", n);
-  // (1.3) on the cast p_n = p . n; (4.5)/(4.8) with a single contact.
-  return {n.squaredNorm() / body.mass, elasticity.value() * normal_velocity(body, n)};
+  return share(body, n, elasticity);
 }
 
 Eigen::Vector2d impulse_vector(const Eigen::Vector2d& n, double Fdt) {
@@ -62,8 +73,9 @@ Collision collide(const PointMass& bumper, Elasticity bumper_elasticity, const P
   validate(bumper, "bumper");
   validate(wedge, "wedge");
   require_unit_normal("normal", n);
+  // Validated once above; the ⊕ of the two shares, then Fdt = B / A.
   const ScalarSolution solution =
-      solve(contribution(bumper, n, bumper_elasticity) + contribution(wedge, -n, wedge_elasticity));
+      solve(share(bumper, n, bumper_elasticity) + share(wedge, -n, wedge_elasticity));
   return {solution, apply_impulse(bumper, n, solution.Fdt), apply_impulse(wedge, -n, solution.Fdt)};
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "impulse/one_d/one_d.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "impulse/core/error.hpp"
@@ -14,6 +15,9 @@ Body from_velocity(double mass, double velocity) {
 }
 
 void validate(const Body& body, const char* name) {
+  if (is_positive(body.mass) && std::isfinite(body.momentum)) [[likely]] {
+    return;  // the common case: no message, no string built
+  }
   const std::string prefix(name);
   require_positive(prefix + ".mass", body.mass);
   require_finite(prefix + ".momentum", body.momentum);
@@ -31,11 +35,18 @@ double normal_velocity(const Body& body, double outward) {
   return outward * body.momentum / body.mass;
 }
 
+namespace {
+// (1.3) for a body already validated: a = 1/m, b = elasticity * p / m, with p cast on the
+// body's outward direction.
+ScalarContribution share(const Body& body, double outward, Elasticity elasticity) {
+  return {1.0 / body.mass, elasticity.value() * normal_velocity(body, outward)};
+}
+}  // namespace
+
 ScalarContribution contribution(const Body& body, double outward, Elasticity elasticity) {
   validate(body);
   require_unit_direction("outward direction", outward);
-  // (1.3): a = 1/m, b = elasticity * p / m, with p cast on the body's outward direction.
-  return {1.0 / body.mass, elasticity.value() * normal_velocity(body, outward)};
+  return share(body, outward, elasticity);  // (1.3)
 }
 
 Body apply_impulse(const Body& body, double outward, double Fdt) {
@@ -48,8 +59,9 @@ Collision collide(const Body& first, Elasticity first_elasticity, const Body& se
   validate(first, "first");
   validate(second, "second");
   require_unit_direction("normal", normal);
-  const ScalarSolution solution = solve(contribution(first, normal, first_elasticity) +
-                                        contribution(second, -normal, second_elasticity));
+  // Validated once above; the ⊕ of the two shares of (1.3), then Fdt = B / A.
+  const ScalarSolution solution =
+      solve(share(first, normal, first_elasticity) + share(second, -normal, second_elasticity));
   return {solution, apply_impulse(first, normal, solution.Fdt),
           apply_impulse(second, -normal, solution.Fdt)};
 }

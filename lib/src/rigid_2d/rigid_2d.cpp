@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "impulse/rigid_2d/rigid_2d.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "impulse/core/error.hpp"
@@ -9,6 +10,11 @@
 namespace impulse::rigid_2d {
 
 void validate(const RigidBody& body, const char* name) {
+  if (is_positive(body.mass) && is_positive(body.inertia) && std::isfinite(body.position.x()) &&
+      std::isfinite(body.position.y()) && std::isfinite(body.p.x()) && std::isfinite(body.p.y()) &&
+      std::isfinite(body.L)) [[likely]] {
+    return;  // the common case: no message, no string built
+  }
   const std::string prefix(name);
   require_positive(prefix + ".mass", body.mass);
   require_positive(prefix + ".inertia", body.inertia);
@@ -44,15 +50,22 @@ double normal_velocity(const RigidBody& body, const Eigen::Vector2d& point,
   return point_velocity(body, point).dot(n);  // (3.8) before the impulse
 }
 
+namespace {
+// (3.6) at elasticity 2, (3.10) at elasticity 1, for a body, point and normal already validated.
+ScalarContribution share(const RigidBody& body, const Eigen::Vector2d& point,
+                         const Eigen::Vector2d& n, Elasticity elasticity) {
+  const double arm = det(point - body.position, n);  // det(r, n)
+  return {arm * arm / body.inertia + n.squaredNorm() / body.mass,
+          elasticity.value() * (body.L * arm / body.inertia + body.p.dot(n) / body.mass)};
+}
+}  // namespace
+
 ScalarContribution contribution(const RigidBody& body, const Eigen::Vector2d& point,
                                 const Eigen::Vector2d& n, Elasticity elasticity) {
   validate(body);
   require_finite("point", point);
   require_unit_normal("normal", n);
-  const double arm = det(point - body.position, n);  // det(r, n)
-  // (3.6) at elasticity 2, (3.10) at elasticity 1.
-  return {arm * arm / body.inertia + n.squaredNorm() / body.mass,
-          elasticity.value() * (body.L * arm / body.inertia + body.p.dot(n) / body.mass)};
+  return share(body, point, n, elasticity);
 }
 
 RigidBody apply_impulse(const RigidBody& body, const Eigen::Vector2d& point,
@@ -72,8 +85,9 @@ Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity, const R
   require_finite("point", point);
   require_unit_normal("normal", n);
   // Section 3.4: Fdt (A1 + A2) = B1 + B2, the wedge with its own normal -n.
-  const ScalarSolution solution = solve(contribution(bumper, point, n, bumper_elasticity) +
-                                        contribution(wedge, point, -n, wedge_elasticity));
+  // Validated once above.
+  const ScalarSolution solution =
+      solve(share(bumper, point, n, bumper_elasticity) + share(wedge, point, -n, wedge_elasticity));
   return {solution, apply_impulse(bumper, point, n, solution.Fdt),
           apply_impulse(wedge, point, -n, solution.Fdt)};
 }

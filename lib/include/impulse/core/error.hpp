@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -29,30 +30,88 @@ class InvalidInput : public std::invalid_argument {
 /// @brief How far a normal's length may be from 1 before it is refused (the scene format's rule).
 inline constexpr double unit_normal_tolerance = 1e-9;
 
+/// @brief Whether @p value is finite and strictly positive (a mass, a moment of inertia).
+/// @param value the value to test
+/// @return true when require_positive() would accept it
+[[nodiscard]] inline bool is_positive(double value) {
+  return std::isfinite(value) && value > 0.0;
+}
+
+/// @brief A cheap test that @p normal is of unit length: no square root.
+///
+/// It compares the squared length with a band a little narrower than
+/// @f$ [(1 - t)^2, (1 + t)^2] @f$ (t = unit_normal_tolerance), so every normal it accepts is
+/// accepted by the exact test of require_unit_normal(); for the few in the margins (and every
+/// refused one) the exact test decides. NaN and infinite coordinates fail it.
+/// @param normal the vector to test
+/// @return true when @p normal is certainly a unit normal
+[[nodiscard]] inline bool is_unit_normal(const Eigen::Vector2d& normal) {
+  // The margin 1e-14 is far above the rounding of the squared length and of its square root.
+  constexpr double t = unit_normal_tolerance;
+  constexpr double low = 1.0 - 2.0 * t + t * t + 1e-14;
+  constexpr double high = 1.0 + 2.0 * t + t * t - 1e-14;
+  const double squared = normal.squaredNorm();
+  return squared >= low && squared <= high;
+}
+
+namespace detail {
+// The out-of-line, cold halves of the checks below: they build the message and throw. Keeping
+// them apart leaves the accepting path a few inlined comparisons, with no string built.
+[[noreturn]] void refuse_positive(std::string_view what, double value);
+[[noreturn]] void refuse_finite(std::string_view what, double value);
+[[noreturn]] void refuse_finite(std::string_view what, const Eigen::Vector2d& value);
+[[noreturn]] void refuse_unit_direction(std::string_view what, double direction);
+// The exact test (length from a square root); throws unless the normal passes it.
+void check_unit_normal(std::string_view what, const Eigen::Vector2d& normal);
+}  // namespace detail
+
 /// @brief Throws InvalidInput unless @p value is finite and strictly positive.
 /// @param what the quantity's name as the message should show it ("mass", "bodies[2].inertia")
 /// @param value the value to check
-void require_positive(std::string_view what, double value);
+inline void require_positive(std::string_view what, double value) {
+  if (!is_positive(value)) [[unlikely]] {
+    detail::refuse_positive(what, value);
+  }
+}
 
 /// @brief Throws InvalidInput unless @p value is finite.
 /// @param what the quantity's name as the message should show it
 /// @param value the value to check
-void require_finite(std::string_view what, double value);
+inline void require_finite(std::string_view what, double value) {
+  if (!std::isfinite(value)) [[unlikely]] {
+    detail::refuse_finite(what, value);
+  }
+}
 
 /// @brief Throws InvalidInput unless both coordinates of @p value are finite.
 /// @param what the quantity's name as the message should show it
 /// @param value the vector to check
-void require_finite(std::string_view what, const Eigen::Vector2d& value);
+inline void require_finite(std::string_view what, const Eigen::Vector2d& value) {
+  if (!(std::isfinite(value.x()) && std::isfinite(value.y()))) [[unlikely]] {
+    detail::refuse_finite(what, value);
+  }
+}
 
 /// @brief Throws InvalidInput unless @p normal is finite and of length 1 within
 /// unit_normal_tolerance.
+///
+/// The accepting path computes no square root (see is_unit_normal()); the message, built only
+/// when the normal is refused, gives the length found.
 /// @param what the quantity's name as the message should show it
 /// @param normal the vector to check
-void require_unit_normal(std::string_view what, const Eigen::Vector2d& normal);
+inline void require_unit_normal(std::string_view what, const Eigen::Vector2d& normal) {
+  if (!is_unit_normal(normal)) [[unlikely]] {
+    detail::check_unit_normal(what, normal);
+  }
+}
 
 /// @brief Throws InvalidInput unless @p direction is +1 or -1 (a normal on a line).
 /// @param what the quantity's name as the message should show it
 /// @param direction the value to check
-void require_unit_direction(std::string_view what, double direction);
+inline void require_unit_direction(std::string_view what, double direction) {
+  if (direction != 1.0 && direction != -1.0) [[unlikely]] {
+    detail::refuse_unit_direction(what, direction);
+  }
+}
 
 }  // namespace impulse
