@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdlib>
+#include <limits>
 #include <new>
 
 #include "impulse/core/error.hpp"
@@ -119,21 +120,31 @@ TEST_CASE("Bad input is still refused with the value and the same message",
       "bumper.mass must be positive and finite, got -1");
 }
 
-TEST_CASE("The cheap unit-normal test accepts only what the exact one accepts",
+TEST_CASE("The unit-normal rule without a square root is |length - 1| <= 1e-9",
           "[allocation][errors]") {
-  // Lengths just inside and just outside 1 +- 1e-9, and the scene format's example values.
+  // Lengths just inside and just outside 1 +- 1e-9 (far from the rounding of either form),
+  // zero and 1.5; the squared-length test and the length test must agree on each.
   for (const double length :
        {1.0, 1.0 + 0.999e-9, 1.0 - 0.999e-9, 1.0 + 1.001e-9, 1.0 - 1.001e-9, 0.0, 1.5}) {
     CAPTURE(length);
     const Vector2d n(length * 0.6, length * 0.8);
-    const bool exact = std::abs(n.norm() - 1.0) <= impulse::unit_normal_tolerance;
-    if (impulse::is_unit_normal(n)) {
-      CHECK(exact);
-    }
-    if (exact) {
+    const bool by_length = std::abs(n.norm() - 1.0) <= impulse::unit_normal_tolerance;
+    CHECK(impulse::is_unit_normal(n) == by_length);
+    if (by_length) {
       CHECK_NOTHROW(impulse::require_unit_normal("normal", n));
     } else {
       CHECK_THROWS_AS(impulse::require_unit_normal("normal", n), impulse::InvalidInput);
     }
   }
+  CHECK_FALSE(impulse::is_unit_normal(Vector2d(std::nan(""), 1.0)));
+  CHECK_FALSE(impulse::is_unit_normal(Vector2d(std::numeric_limits<double>::infinity(), 0.0)));
+}
+
+TEST_CASE("The one-branch finiteness test", "[allocation][errors]") {
+  // x - x is 0 for finite x, NaN otherwise, and a sum of zeros cannot overflow.
+  const double inf = std::numeric_limits<double>::infinity();
+  CHECK(impulse::all_finite(1.0, -2.0, 1e308, 1e308));  // would overflow as a plain sum
+  CHECK_FALSE(impulse::all_finite(1.0, inf));
+  CHECK_FALSE(impulse::all_finite(-inf, 1.0));
+  CHECK_FALSE(impulse::all_finite(std::nan(""), 1.0));
 }

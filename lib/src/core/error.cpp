@@ -43,15 +43,12 @@ void refuse_finite(std::string_view what, const Eigen::Vector2d& value) {
   refuse(what, "finite", format_vector(value));
 }
 
-void check_unit_normal(std::string_view what, const Eigen::Vector2d& normal) {
+void refuse_unit_normal(std::string_view what, const Eigen::Vector2d& normal) {
   if (!normal.allFinite()) {
     refuse(what, "a finite unit vector", format_vector(normal));
   }
-  const double length = normal.norm();
-  if (!(std::abs(length - 1.0) <= unit_normal_tolerance)) {
-    refuse(what, "a unit vector (length 1 within " + format_number(unit_normal_tolerance) + ")",
-           format_vector(normal) + " of length " + format_number(length));
-  }
+  refuse(what, "a unit vector (length 1 within " + format_number(unit_normal_tolerance) + ")",
+         format_vector(normal) + " of length " + format_number(normal.norm()));
 }
 
 void refuse_unit_direction(std::string_view what, double direction) {

@@ -173,27 +173,4 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
   return solution;
 }
 
-ScalarSolution solve(ScalarContribution system) {
-  ScalarSolution solution;
-  solution.A = system.a;
-  solution.B = system.b;
-  if (!std::isfinite(system.a) || !std::isfinite(system.b)) {
-    solution.status = SolveStatus::non_finite;
-    solution.Fdt = std::numeric_limits<double>::quiet_NaN();
-    solution.residual = std::numeric_limits<double>::quiet_NaN();
-    solution.consistent = false;
-    return solution;
-  }
-  if (system.a == 0.0) {
-    // Neither body can move along the normal: every Fdt acts the same; take the least, zero.
-    solution.dependent = true;
-    solution.consistent = system.b == 0.0;
-    solution.Fdt = 0.0;
-  } else {
-    solution.Fdt = system.b / system.a;  // end of section 1.3: Fdt = B / A
-  }
-  solution.residual = std::abs(system.a * solution.Fdt - system.b);
-  return solution;
-}
-
 }  // namespace impulse

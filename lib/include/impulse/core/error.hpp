@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -34,24 +35,31 @@ inline constexpr double unit_normal_tolerance = 1e-9;
 /// @param value the value to test
 /// @return true when require_positive() would accept it
 [[nodiscard]] inline bool is_positive(double value) {
-  return std::isfinite(value) && value > 0.0;
+  return (value > 0.0) & (value <= std::numeric_limits<double>::max());  // NaN fails both
 }
 
-/// @brief A cheap test that @p normal is of unit length: no square root.
+/// @brief A quick test, one comparison, that all of @p values are finite.
 ///
-/// It compares the squared length with a band a little narrower than
-/// @f$ [(1 - t)^2, (1 + t)^2] @f$ (t = unit_normal_tolerance), so every normal it accepts is
-/// accepted by the exact test of require_unit_normal(); for the few in the margins (and every
-/// refused one) the exact test decides. NaN and infinite coordinates fail it.
+/// Each value minus itself is zero when it is finite and NaN when it is NaN or infinite; their
+/// sum cannot overflow.
+/// @param values the numbers to test
+/// @return true exactly when every value is finite
+template <typename... Values>
+[[nodiscard]] inline bool all_finite(Values... values) {
+  return ((values - values) + ...) == 0.0;
+}
+
+/// @brief Whether @p normal is of unit length within unit_normal_tolerance, without a square
+/// root: @f$ (1 - t)^2 \le \|n\|^2 \le (1 + t)^2 @f$. NaN and infinite coordinates fail.
+///
+/// This is the rule require_unit_normal() applies (its message gives the length found).
 /// @param normal the vector to test
-/// @return true when @p normal is certainly a unit normal
+/// @return true when @p normal is a unit normal
 [[nodiscard]] inline bool is_unit_normal(const Eigen::Vector2d& normal) {
-  // The margin 1e-14 is far above the rounding of the squared length and of its square root.
-  constexpr double t = unit_normal_tolerance;
-  constexpr double low = 1.0 - 2.0 * t + t * t + 1e-14;
-  constexpr double high = 1.0 + 2.0 * t + t * t - 1e-14;
+  constexpr double low = (1.0 - unit_normal_tolerance) * (1.0 - unit_normal_tolerance);
+  constexpr double high = (1.0 + unit_normal_tolerance) * (1.0 + unit_normal_tolerance);
   const double squared = normal.squaredNorm();
-  return squared >= low && squared <= high;
+  return (squared >= low) & (squared <= high);  // NaN fails both; one branch for the caller
 }
 
 namespace detail {
@@ -61,8 +69,7 @@ namespace detail {
 [[noreturn]] void refuse_finite(std::string_view what, double value);
 [[noreturn]] void refuse_finite(std::string_view what, const Eigen::Vector2d& value);
 [[noreturn]] void refuse_unit_direction(std::string_view what, double direction);
-// The exact test (length from a square root); throws unless the normal passes it.
-void check_unit_normal(std::string_view what, const Eigen::Vector2d& normal);
+[[noreturn]] void refuse_unit_normal(std::string_view what, const Eigen::Vector2d& normal);
 }  // namespace detail
 
 /// @brief Throws InvalidInput unless @p value is finite and strictly positive.
@@ -95,13 +102,13 @@ inline void require_finite(std::string_view what, const Eigen::Vector2d& value) 
 /// @brief Throws InvalidInput unless @p normal is finite and of length 1 within
 /// unit_normal_tolerance.
 ///
-/// The accepting path computes no square root (see is_unit_normal()); the message, built only
-/// when the normal is refused, gives the length found.
+/// The test computes no square root (see is_unit_normal()); the message, built only when the
+/// normal is refused, gives the length found.
 /// @param what the quantity's name as the message should show it
 /// @param normal the vector to check
 inline void require_unit_normal(std::string_view what, const Eigen::Vector2d& normal) {
   if (!is_unit_normal(normal)) [[unlikely]] {
-    detail::check_unit_normal(what, normal);
+    detail::refuse_unit_normal(what, normal);
   }
 }
 

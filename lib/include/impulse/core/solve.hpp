@@ -4,6 +4,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
+#include <limits>
 #include <string_view>
 #include <vector>
 
@@ -104,6 +106,36 @@ struct ScalarSolution {
 /// @brief Solves the one-contact system. A = 0 gives Fdt = 0, the minimum-norm choice.
 /// @param system the summed contributions (A, B)
 /// @return the impulse magnitude and its diagnostics
-[[nodiscard]] ScalarSolution solve(ScalarContribution system);
+namespace detail {
+// The common case of the single-contact solve in one branch: A and B finite, A not zero.
+inline bool all_finite_and_nonzero(ScalarContribution system) {
+  return ((system.a + system.b) * 0.0 == 0.0) & (system.a != 0.0);
+}
+}  // namespace detail
+
+[[nodiscard]] inline ScalarSolution solve(ScalarContribution system) {
+  // Inline: the single-contact path costs no call (see bench/single_contact.cpp).
+  ScalarSolution solution;
+  solution.A = system.a;
+  solution.B = system.b;
+  if (detail::all_finite_and_nonzero(system)) [[likely]] {
+    solution.Fdt = system.b / system.a;  // end of section 1.3: Fdt = B / A
+  } else if (!std::isfinite(system.a) || !std::isfinite(system.b)) {
+    solution.status = SolveStatus::non_finite;
+    solution.Fdt = std::numeric_limits<double>::quiet_NaN();
+    solution.residual = std::numeric_limits<double>::quiet_NaN();
+    solution.consistent = false;
+    return solution;
+  } else if (system.a == 0.0) {
+    // Neither body can move along the normal: every Fdt acts the same; take the least, zero.
+    solution.dependent = true;
+    solution.consistent = system.b == 0.0;
+    solution.Fdt = 0.0;
+  } else {
+    solution.Fdt = system.b / system.a;  // finite, but too large for the quick test's sum
+  }
+  solution.residual = std::abs(system.a * solution.Fdt - system.b);
+  return solution;
+}
 
 }  // namespace impulse
