@@ -2,6 +2,8 @@
 #include "impulse/core/solve.hpp"
 
 #include <Eigen/QR>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 #include <cmath>
 #include <limits>
 
@@ -123,13 +125,203 @@ void mark_non_finite(Solution& solution) {
   solution.condition_estimate = std::numeric_limits<double>::infinity();
 }
 
+// ---- The sparse method ---------------------------------------------------------------------
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using SparseLDLT = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>>;
+
+// The shift of A + lambda I, relative to A's largest diagonal entry. Small enough that the
+// preconditioner is nearly A's inverse on its range (conjugate gradients then converge in a few
+// steps up to condition numbers near 1e10), large enough that A + lambda I factors stably.
+constexpr double shift = 1e-10;
+// LDLT pivots of A + lambda I up to this many lambdas count as A's null space in the rank
+// estimate (a dependent direction leaves a pivot of about lambda).
+constexpr double null_pivot = 1e3;
+
+struct Shifted {
+  SparseLDLT ldlt;
+  double lambda = 0.0;
+};
+
+// LDLT of M + lambda I with lambda = shift * max diag(M). Returns false if it failed.
+bool factor_shifted(const SparseMatrix& M, Shifted& shifted) {
+  const double scale = M.diagonal().maxCoeff();
+  shifted.lambda = shift * scale;
+  SparseMatrix identity(M.rows(), M.cols());
+  identity.setIdentity();
+  const SparseMatrix K = M + shifted.lambda * identity;
+  shifted.ldlt.compute(K);
+  return shifted.ldlt.info() == Eigen::Success;
+}
+
+// Conjugate gradients on the consistent positive semi-definite system M x = rhs, started from
+// zero, preconditioned by (M + lambda I)^-1. The preconditioner is a function of M, so every
+// iterate stays in the range of M (up to rounding): on a dependent system they converge to the
+// minimum-norm solution, as unpreconditioned CG would, only in far fewer steps.
+//
+// It stops when |rhs - M x| <= tolerance (|M|_F |x| + |rhs|), the backward error the dense
+// method is judged by too (a residual relative to |rhs| alone can be out of reach when the
+// impulses are much larger than the right-hand side, e.g. at the foot of a tall stack). When the
+// recursive residual gets there, the true one is computed; if it is not there yet, the iteration
+// restarts from it, unless the last restart gained less than a factor 2 (rounding level).
+// Returns the number of steps.
+int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs, const Shifted& shifted,
+                        double tolerance, int max_iterations, VectorXd& x) {
+  x = VectorXd::Zero(M.cols());
+  const double M_norm = M.norm();
+  const double rhs_norm = rhs.norm();
+  const auto reached = [&](double residual) {
+    return residual <= tolerance * (M_norm * x.norm() + rhs_norm);
+  };
+  VectorXd r = rhs;
+  VectorXd z(M.rows());
+  VectorXd p(M.rows());
+  VectorXd Mp(M.rows());
+  int steps = 0;
+  double rz = 0.0;
+  double last_true = std::numeric_limits<double>::infinity();
+  bool restart = true;
+  while (steps < max_iterations) {
+    if (restart) {
+      const double true_residual = r.norm();
+      if (reached(true_residual) || !(true_residual < 0.5 * last_true)) {
+        break;
+      }
+      last_true = true_residual;
+      z = shifted.ldlt.solve(r);
+      p = z;
+      rz = r.dot(z);
+      restart = false;
+    }
+    Mp.noalias() = M * p;
+    const double curvature = p.dot(Mp);
+    if (!(curvature > 0.0) || !(rz > 0.0)) {
+      break;  // p has no component in the range of M left: nothing more to gain
+    }
+    const double alpha = rz / curvature;
+    x += alpha * p;
+    r -= alpha * Mp;
+    ++steps;
+    if (reached(r.norm())) {
+      r = rhs;
+      r.noalias() -= M * x;  // the true residual
+      restart = true;
+      continue;
+    }
+    z = shifted.ldlt.solve(r);
+    const double rz_next = r.dot(z);
+    p = z + (rz_next / rz) * p;
+    rz = rz_next;
+  }
+  return steps;
+}
+
+// Solves a system that carries its factor with sparse factorisations only. Leaves solution.A
+// empty and fills sparse_A. Returns false when a factorisation failed (the caller then solves
+// densely).
+bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Solution& solution) {
+  solution.method = SolveMethod::sparse;
+  solution.rank_estimated = true;
+  solution.sparse_A = system.sparse_A();
+  const SparseMatrix& A = solution.sparse_A;
+  const VectorXd& B = solution.B;
+  const Index n = system.size();
+  SparseMatrix G;
+  VectorXd w;
+  system.factor(G, w);
+  const bool finite = Eigen::Map<const VectorXd>(A.valuePtr(), A.nonZeros()).allFinite() &&
+                      Eigen::Map<const VectorXd>(G.valuePtr(), G.nonZeros()).allFinite() &&
+                      B.allFinite() && w.allFinite();
+  if (!finite) {
+    mark_non_finite(solution);
+    return true;
+  }
+  if (n == 0) {
+    solution.Fdt = VectorXd(0);
+    return true;
+  }
+  if (!(A.diagonal().maxCoeff() > 0.0)) {
+    // A = 0 (no body at any contact can move): every Fdt acts the same; take the least, zero.
+    solution.Fdt = VectorXd::Zero(n);
+    solution.rank = 0;
+    solution.dependent = true;
+    solution.condition_estimate = std::numeric_limits<double>::infinity();
+    solution.consistent = B.isZero(0.0);
+    solution.residual = B.norm();
+    return true;
+  }
+
+  // 1. Any solution x of A x = B (the minimum-norm one when A is regular).
+  Shifted shifted;
+  if (!factor_shifted(A, shifted)) {
+    return false;
+  }
+  const VectorXd& pivots = shifted.ldlt.vectorD();
+  const double null_level = null_pivot * shifted.lambda;
+  Index retained = 0;
+  double largest = 0.0;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (Index i = 0; i < pivots.size(); ++i) {
+    if (pivots(i) > null_level) {
+      ++retained;
+      largest = std::max(largest, pivots(i));
+      smallest = std::min(smallest, pivots(i));
+    }
+  }
+  solution.rank = retained;
+  solution.dependent = retained < n;
+  solution.condition_estimate = largest / smallest;
+  VectorXd x;
+  solution.iterations = conjugate_gradients(A, B, shifted, options.sparse_tolerance,
+                                            options.max_iterations, x);
+
+  // 2. On a dependent system, x may carry a part in the null space of A = null space of G (the
+  // preconditioner amplifies rounding there). The minimum-norm solution has the same G x and
+  // lies in the range of G^T: it is G^T y with G G^T y = G x, solved the same way. The rounding
+  // that this second solve leaves in the null space of G^T, G^T removes.
+  if (solution.dependent) {
+    const SparseMatrix GGt = G * G.transpose();
+    Shifted shifted_rows;
+    if (!factor_shifted(GGt, shifted_rows)) {
+      return false;
+    }
+    VectorXd Gx(G.rows());
+    Gx.noalias() = G * x;
+    VectorXd y;
+    solution.iterations += conjugate_gradients(GGt, Gx, shifted_rows, options.sparse_tolerance,
+                                               options.max_iterations, y);
+    x.noalias() = G.transpose() * y;
+  }
+  solution.Fdt = std::move(x);
+  VectorXd residual = B;
+  residual.noalias() -= A * solution.Fdt;
+  solution.residual = residual.norm();
+  solution.consistent = solution.residual <= options.consistency_tolerance *
+                                                 (A.norm() * solution.Fdt.norm() + B.norm());
+  return true;
+}
+
 }  // namespace
 
 Solution solve(const ContactSystem& system, const SolverOptions& options) {
   Solution solution;
-  solution.A = system.A();
   solution.B = system.B();
   solution.options = options;
+  // The sparse method gives the minimum-norm least-squares solution of a system built from
+  // bodies (always consistent: B = G^T w); the other policies need the dense pivoted QR.
+  const bool default_policies = options.dependent == DependentPolicy::minimum_norm &&
+                                options.inconsistent == InconsistentPolicy::least_squares;
+  const bool sparse =
+      system.has_factor() && default_policies &&
+      (options.method == SolveMethod::sparse ||
+       (options.method == SolveMethod::automatic && system.is_sparse()));
+  if (sparse && solve_sparse(system, options, solution)) {
+    return solution;
+  }
+  solution = Solution{};
+  solution.B = system.B();
+  solution.options = options;
+  solution.A = system.is_sparse() ? MatrixXd(system.sparse_A()) : system.A();
   const MatrixXd& A = solution.A;
   const VectorXd& B = solution.B;
   const Index n = system.size();
