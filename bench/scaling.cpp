@@ -5,8 +5,9 @@
 // (validation, every body's block, the ⊕) and impulse::solve, with the library's automatic
 // choices (dense storage and method up to sparse_threshold contacts, sparse above).
 // `assemble_<kind>/N` times the assembly alone, `solve_<kind>_dense/N` forces the dense method
-// for comparison. Scenes are generated once per size, outside the timed loop. Counters report the
-// sparse method's iterations and the relative residual |A Fdt - B| / |B|.
+// for comparison, `solve_<kind>_sparse/N` the sparse one. Scenes are generated once per size,
+// outside the timed loop. Counters report the sparse method's iterations, the rank deficit, the
+// relative residual |A Fdt - B| / |B| and the backward error |A Fdt - B| / (|A| |Fdt| + |B|).
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
@@ -38,7 +39,10 @@ void solve_scene(benchmark::State& state, const char* kind, impulse::SolveMethod
   state.counters["contacts"] = static_cast<double>(scene.contacts.size());
   state.counters["iterations"] = last.iterations;
   state.counters["sparse"] = last.method == impulse::SolveMethod::sparse ? 1 : 0;
+  const double A_norm =
+      last.method == impulse::SolveMethod::sparse ? last.sparse_A.norm() : last.A.norm();
   state.counters["rel_residual"] = last.residual / last.B.norm();
+  state.counters["backward_error"] = last.residual / (A_norm * last.Fdt.norm() + last.B.norm());
   state.counters["rank_deficit"] = static_cast<double>(last.Fdt.size() - last.rank);
 }
 

@@ -155,20 +155,23 @@ bool factor_shifted(const SparseMatrix& M, Shifted& shifted) {
 }
 
 // Conjugate gradients on the consistent positive semi-definite system M x = rhs, started from
-// zero, preconditioned by (M + lambda I)^-1. The preconditioner is a function of M, so every
-// iterate stays in the range of M (up to rounding): on a dependent system they converge to the
+// zero, preconditioned by (M + lambda I)^-1 (`precondition(r)`, which must be an approximation of
+// a function of M, so that every
+// iterate stays in the range of M, up to rounding): on a dependent system they converge to the
 // minimum-norm solution, as unpreconditioned CG would, only in far fewer steps.
 //
-// It stops when |rhs - M x| <= tolerance (|M|_F |x| + |rhs|), the backward error the dense
-// method is judged by too (a residual relative to |rhs| alone can be out of reach when the
-// impulses are much larger than the right-hand side, e.g. at the foot of a tall stack). When the
-// recursive residual gets there, the true one is computed; if it is not there yet, the iteration
-// restarts from it, unless the last restart gained less than a factor 2 (rounding level).
-// Returns the number of steps.
-int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs, const Shifted& shifted,
-                        double tolerance, int max_iterations, VectorXd& x) {
+// It stops when |rhs - M x| <= tolerance (|M|_F |x| + |rhs|) (or, if relative_to_rhs,
+// tolerance |rhs|), the backward error the dense method is judged by too (a residual relative to
+// |rhs| alone can be out of reach when the impulses are much larger than the right-hand side, e.g.
+// at the foot of a tall stack). When the recursive residual gets there, the true one is computed;
+// if it is not there yet, the iteration restarts from it, unless the last restart gained less than
+// a factor 2 (rounding level). Returns the number of steps.
+template <typename Matrix, typename Preconditioner>
+int conjugate_gradients(const Matrix& M, const VectorXd& rhs, const Preconditioner& precondition,
+                        double tolerance, int max_iterations, VectorXd& x,
+                        bool relative_to_rhs = false) {
   x = VectorXd::Zero(M.cols());
-  const double M_norm = M.norm();
+  const double M_norm = relative_to_rhs ? 0.0 : M.norm();  // Frobenius
   const double rhs_norm = rhs.norm();
   const auto reached = [&](double residual) {
     return residual <= tolerance * (M_norm * x.norm() + rhs_norm);
@@ -188,7 +191,7 @@ int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs, const Shifte
         break;
       }
       last_true = true_residual;
-      z = shifted.ldlt.solve(r);
+      z = precondition(r);
       p = z;
       rz = r.dot(z);
       restart = false;
@@ -208,13 +211,30 @@ int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs, const Shifte
       restart = true;
       continue;
     }
-    z = shifted.ldlt.solve(r);
+    z = precondition(r);
     const double rz_next = r.dot(z);
     p = z + (rz_next / rz) * p;
     rz = rz_next;
   }
   return steps;
 }
+
+// G G^T as an operator for conjugate_gradients, never formed: its product is G (G^T p), its
+// Frobenius norm the norm of A = G^T G (they share their eigenvalues).
+struct GramOperator {
+  const SparseMatrix& G;
+  double frobenius;
+  [[nodiscard]] Index rows() const { return G.rows(); }
+  [[nodiscard]] Index cols() const { return G.rows(); }
+  [[nodiscard]] double norm() const { return frobenius; }
+  [[nodiscard]] VectorXd operator*(const VectorXd& p) const {
+    VectorXd Gtp(G.cols());
+    Gtp.noalias() = G.transpose() * p;
+    VectorXd result(G.rows());
+    result.noalias() = G * Gtp;
+    return result;
+  }
+};
 
 // Solves a system that carries its factor with sparse factorisations only. Leaves solution.A
 // empty and fills sparse_A. Returns false when a factorisation failed (the caller then solves
@@ -272,32 +292,42 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
   solution.dependent = retained < n;
   solution.condition_estimate = largest / smallest;
   VectorXd x;
-  solution.iterations = conjugate_gradients(A, B, shifted, options.sparse_tolerance,
+  const auto shifted_inverse = [&](const VectorXd& r) -> VectorXd { return shifted.ldlt.solve(r); };
+  solution.iterations = conjugate_gradients(A, B, shifted_inverse, options.sparse_tolerance,
                                             options.max_iterations, x);
 
   // 2. On a dependent system, x may carry a part in the null space of A = null space of G (the
   // preconditioner amplifies rounding there). The minimum-norm solution has the same G x and
-  // lies in the range of G^T: it is G^T y with G G^T y = G x, solved the same way. The rounding
-  // that this second solve leaves in the null space of G^T, G^T removes.
+  // lies in the range of G^T: it is G^T y with G G^T y = G x, solved by conjugate gradients
+  // too. Their preconditioner (G G^T + lambda I)^-1 comes from the factorisation already made,
+  // by the Woodbury identity: (G G^T + lambda I)^-1 = (I - G (G^T G + lambda I)^-1 G^T) / lambda.
+  // The rounding that this second solve leaves in the null space of G^T, G^T removes.
   if (solution.dependent) {
-    const SparseMatrix GGt = G * G.transpose();
-    Shifted shifted_rows;
-    if (!factor_shifted(GGt, shifted_rows)) {
-      return false;
-    }
+    const auto woodbury = [&](const VectorXd& r) -> VectorXd {
+      VectorXd Gtr(G.cols());
+      Gtr.noalias() = G.transpose() * r;
+      const VectorXd inner = shifted.ldlt.solve(Gtr);
+      VectorXd z = r;
+      z.noalias() -= G * inner;
+      return z / shifted.lambda;
+    };
     VectorXd Gx(G.rows());
     Gx.noalias() = G * x;
     VectorXd y;
-    solution.iterations += conjugate_gradients(GGt, Gx, shifted_rows, options.sparse_tolerance,
-                                               options.max_iterations, y);
+    // Its residual reaches A x - B multiplied by G^T. It is judged against |G x| alone, the
+    // velocity change: y itself can be large along the null space of G^T (directions no
+    // contact constrains), which G^T removes and which must not loosen the test.
+    solution.iterations +=
+        conjugate_gradients(GramOperator{G, A.norm()}, Gx, woodbury, options.sparse_tolerance,
+                            options.max_iterations, y, true);
     x.noalias() = G.transpose() * y;
   }
   solution.Fdt = std::move(x);
   VectorXd residual = B;
   residual.noalias() -= A * solution.Fdt;
   solution.residual = residual.norm();
-  solution.consistent = solution.residual <= options.consistency_tolerance *
-                                                 (A.norm() * solution.Fdt.norm() + B.norm());
+  solution.consistent = solution.residual <=
+                        options.consistency_tolerance * (A.norm() * solution.Fdt.norm() + B.norm());
   return true;
 }
 
@@ -311,10 +341,9 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
   // bodies (always consistent: B = G^T w); the other policies need the dense pivoted QR.
   const bool default_policies = options.dependent == DependentPolicy::minimum_norm &&
                                 options.inconsistent == InconsistentPolicy::least_squares;
-  const bool sparse =
-      system.has_factor() && default_policies &&
-      (options.method == SolveMethod::sparse ||
-       (options.method == SolveMethod::automatic && system.is_sparse()));
+  const bool sparse = system.has_factor() && default_policies &&
+                      (options.method == SolveMethod::sparse ||
+                       (options.method == SolveMethod::automatic && system.is_sparse()));
   if (sparse && solve_sparse(system, options, solution)) {
     return solution;
   }
