@@ -160,18 +160,17 @@ bool factor_shifted(const SparseMatrix& M, Shifted& shifted) {
 // iterate stays in the range of M, up to rounding): on a dependent system they converge to the
 // minimum-norm solution, as unpreconditioned CG would, only in far fewer steps.
 //
-// It stops when |rhs - M x| <= tolerance (|M|_F |x| + |rhs|) (or, if relative_to_rhs,
-// tolerance |rhs|), the backward error the dense method is judged by too (a residual relative to
-// |rhs| alone can be out of reach when the impulses are much larger than the right-hand side, e.g.
-// at the foot of a tall stack). When the recursive residual gets there, the true one is computed;
-// if it is not there yet, the iteration restarts from it, unless the last restart gained less than
-// a factor 2 (rounding level). Returns the number of steps.
+// It stops when |rhs - M x| <= tolerance (|M|_F |x| + |rhs|), the backward error the dense method
+// is judged by too (a residual relative to |rhs| alone can be out of reach when the impulses are
+// much larger than the right-hand side, e.g. at the foot of a tall stack). When the recursive
+// residual gets there, the true one is computed; if it is not there yet, the iteration restarts
+// from it, unless the last restart gained less than a factor 2 (rounding level). Returns the number
+// of steps.
 template <typename Matrix, typename Preconditioner>
 int conjugate_gradients(const Matrix& M, const VectorXd& rhs, const Preconditioner& precondition,
-                        double tolerance, int max_iterations, VectorXd& x,
-                        bool relative_to_rhs = false) {
+                        double tolerance, int max_iterations, VectorXd& x) {
   x = VectorXd::Zero(M.cols());
-  const double M_norm = relative_to_rhs ? 0.0 : M.norm();  // Frobenius
+  const double M_norm = M.norm();  // Frobenius
   const double rhs_norm = rhs.norm();
   const auto reached = [&](double residual) {
     return residual <= tolerance * (M_norm * x.norm() + rhs_norm);
@@ -219,22 +218,62 @@ int conjugate_gradients(const Matrix& M, const VectorXd& rhs, const Precondition
   return steps;
 }
 
-// G G^T as an operator for conjugate_gradients, never formed: its product is G (G^T p), its
-// Frobenius norm the norm of A = G^T G (they share their eigenvalues).
-struct GramOperator {
-  const SparseMatrix& G;
-  double frobenius;
-  [[nodiscard]] Index rows() const { return G.rows(); }
-  [[nodiscard]] Index cols() const { return G.rows(); }
-  [[nodiscard]] double norm() const { return frobenius; }
-  [[nodiscard]] VectorXd operator*(const VectorXd& p) const {
-    VectorXd Gtp(G.cols());
-    Gtp.noalias() = G.transpose() * p;
-    VectorXd result(G.rows());
-    result.noalias() = G * Gtp;
-    return result;
+// Conjugate gradients on G G^T y = g (g in the range of G), preconditioned by
+// `precondition`, carried out on x = G^T y instead of y: every step adds alpha G^T p to x and
+// the residual is g - G x. y itself, which the preconditioner may fill with large parts along
+// the null space of G^T (directions no contact constrains, amplified by 1/lambda), is never
+// accumulated, and G^T removes those parts from each step. x stays in the range of G^T: it is
+// the minimum-norm solution of G x = g. Stops when |g - G x| <= tolerance |g| or when a restart
+// from the true residual gains less than a factor 2. Returns the number of steps.
+template <typename Preconditioner>
+int range_solution(const SparseMatrix& G, const VectorXd& g, const Preconditioner& precondition,
+                   double tolerance, int max_iterations, VectorXd& x) {
+  x = VectorXd::Zero(G.cols());
+  const double target = tolerance * g.norm();
+  VectorXd r = g;
+  VectorXd z(G.rows());
+  VectorXd p(G.rows());
+  VectorXd q(G.cols());
+  VectorXd Gq(G.rows());
+  int steps = 0;
+  double rz = 0.0;
+  double last_true = std::numeric_limits<double>::infinity();
+  bool restart = true;
+  while (steps < max_iterations) {
+    if (restart) {
+      const double true_residual = r.norm();
+      if (true_residual <= target || !(true_residual < 0.5 * last_true)) {
+        break;
+      }
+      last_true = true_residual;
+      z = precondition(r);
+      p = z;
+      rz = r.dot(z);
+      restart = false;
+    }
+    q.noalias() = G.transpose() * p;
+    const double curvature = q.squaredNorm();  // p^T G G^T p
+    if (!(curvature > 0.0) || !(rz > 0.0)) {
+      break;
+    }
+    const double alpha = rz / curvature;
+    x += alpha * q;
+    Gq.noalias() = G * q;
+    r -= alpha * Gq;
+    ++steps;
+    if (r.norm() <= target) {
+      r = g;
+      r.noalias() -= G * x;  // the true residual
+      restart = true;
+      continue;
+    }
+    z = precondition(r);
+    const double rz_next = r.dot(z);
+    p = z + (rz_next / rz) * p;
+    rz = rz_next;
   }
-};
+  return steps;
+}
 
 // Solves a system that carries its factor with sparse factorisations only. Leaves solution.A
 // empty and fills sparse_A. Returns false when a factorisation failed (the caller then solves
@@ -296,31 +335,31 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
   solution.iterations = conjugate_gradients(A, B, shifted_inverse, options.sparse_tolerance,
                                             options.max_iterations, x);
 
-  // 2. On a dependent system, x may carry a part in the null space of A = null space of G (the
-  // preconditioner amplifies rounding there). The minimum-norm solution has the same G x and
-  // lies in the range of G^T: it is G^T y with G G^T y = G x, solved by conjugate gradients
-  // too. Their preconditioner (G G^T + lambda I)^-1 comes from the factorisation already made,
-  // by the Woodbury identity: (G G^T + lambda I)^-1 = (I - G (G^T G + lambda I)^-1 G^T) / lambda.
-  // The rounding that this second solve leaves in the null space of G^T, G^T removes.
-  if (solution.dependent) {
-    const auto woodbury = [&](const VectorXd& r) -> VectorXd {
+  // 2. x may carry a part in the null space of A = null space of G (the preconditioner
+  // amplifies rounding there by 1/lambda). The minimum-norm solution has the same G x and lies
+  // in the range of G^T: it is G^T y with G G^T y = G x, solved by conjugate gradients too, with
+  // the preconditioner G (G^T G + lambda I)^-2 G^T from the factorisation already made. On the
+  // range of G it is nearly (G G^T)^-1 (eigenvalues s^2 / (s^2 + lambda)^2 for s^2 of G G^T)
+  // and, being G times something, it adds nothing along the null space of G^T: the rounding it
+  // amplifies by 1/lambda^2 lies in the null space of G, which the product with G removes. The
+  // step runs on every system, not only on those whose pivots show a dependency: the pivot of a
+  // dependent direction is about lambda only when the direction is well separated from the
+  // others, so the rank estimate can miss one in an ill-conditioned system; on a regular
+  // system the step returns the same x for a few more iterations.
+  {
+    const auto range_preconditioner = [&](const VectorXd& r) -> VectorXd {
       VectorXd Gtr(G.cols());
       Gtr.noalias() = G.transpose() * r;
-      const VectorXd inner = shifted.ldlt.solve(Gtr);
-      VectorXd z = r;
-      z.noalias() -= G * inner;
-      return z / shifted.lambda;
+      const VectorXd twice = shifted.ldlt.solve(shifted.ldlt.solve(Gtr));
+      VectorXd z(G.rows());
+      z.noalias() = G * twice;
+      return z;
     };
     VectorXd Gx(G.rows());
     Gx.noalias() = G * x;
-    VectorXd y;
-    // Its residual reaches A x - B multiplied by G^T. It is judged against |G x| alone, the
-    // velocity change: y itself can be large along the null space of G^T (directions no
-    // contact constrains), which G^T removes and which must not loosen the test.
-    solution.iterations +=
-        conjugate_gradients(GramOperator{G, A.norm()}, Gx, woodbury, options.sparse_tolerance,
-                            options.max_iterations, y, true);
-    x.noalias() = G.transpose() * y;
+    // Judged against |G x| alone, the velocity change (not |G G^T| |y|).
+    solution.iterations += range_solution(G, Gx, range_preconditioner, options.sparse_tolerance,
+                                          options.max_iterations, x);
   }
   solution.Fdt = std::move(x);
   VectorXd residual = B;

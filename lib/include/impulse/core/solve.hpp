@@ -53,9 +53,10 @@ enum class SolveMethod {
   /// and InconsistentPolicy::drop_equation.
   dense,
   /// Sparse factorisations only, for systems that carry their factor (others are solved dense):
-  /// conjugate gradients on A preconditioned by a sparse LDLᵀ of @f$ A + \lambda I @f$, then,
-  /// when A is found dependent, the minimum-norm solution as @f$ G^T y @f$ with
-  /// @f$ G G^T y = G\,\hat{x} @f$ (solved the same way). Rank and condition number are
+  /// conjugate gradients on A preconditioned by a sparse LDLᵀ of @f$ A + \lambda I @f$
+  /// (@f$ \lambda = 10^{-10} \max_v A_{vv} @f$), which gives any solution @f$ \hat{x} @f$;
+  /// then the minimum-norm one as @f$ G^T y @f$ with @f$ G G^T y = G\,\hat{x} @f$, by
+  /// conjugate gradients preconditioned from the same LDLᵀ. Rank and condition number are
   /// estimates from the pivots of the LDLᵀ.
   sparse,
 };
@@ -105,9 +106,9 @@ struct Solution {
   Eigen::Index rank = 0;
   bool rank_estimated = false;  ///< true when rank and condition_estimate are sparse estimates
   int iterations = 0;           ///< conjugate-gradient steps of the sparse method (0: dense)
-  double residual = 0.0;                      ///< @f$ \|A\,F\,dt - B\|_2 @f$ of the whole system
-  bool dependent = false;                     ///< rank < N: many impulse vectors act the same
-  bool consistent = true;                     ///< B lies in the range of A (within tolerance)
+  double residual = 0.0;        ///< @f$ \|A\,F\,dt - B\|_2 @f$ of the whole system
+  bool dependent = false;       ///< rank < N: many impulse vectors act the same
+  bool consistent = true;       ///< B lies in the range of A (within tolerance)
   /// Largest over smallest retained pivot of the column-pivoted QR of A (or the square of that
   /// ratio for the factor G, when the system carries one): an estimate of the condition number
   /// of A on its range (1 for the empty system, infinity when A is zero but N > 0). Relative
