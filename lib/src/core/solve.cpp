@@ -138,6 +138,14 @@ constexpr double shift = 1e-10;
 // estimate (a dependent direction leaves a pivot of about lambda).
 constexpr double null_pivot = 1e3;
 
+// The largest step length the conjugate gradients below accept. Their preconditioned operators
+// have eigenvalues s / (s + lambda) (or its square) in (0, 1] on the range they work in, so in
+// exact arithmetic every step length is at least 1 and it exceeds 100 only along directions
+// where s < lambda / 99, about 1e-12 of A's largest diagonal entry: numerically the null space.
+// A longer step comes from rounding that the preconditioner amplified (by 1/lambda) along the
+// null space; taking it would throw the impulses far along it, so the iteration stops there.
+constexpr double largest_step = 100.0;
+
 struct Shifted {
   SparseLDLT ldlt;
   double lambda = 0.0;
@@ -197,10 +205,10 @@ int conjugate_gradients(const Matrix& M, const VectorXd& rhs, const Precondition
     }
     Mp.noalias() = M * p;
     const double curvature = p.dot(Mp);
-    if (!(curvature > 0.0) || !(rz > 0.0)) {
-      break;  // p has no component in the range of M left: nothing more to gain
-    }
     const double alpha = rz / curvature;
+    if (!(curvature > 0.0) || !(rz > 0.0) || !(alpha <= largest_step)) {
+      break;  // rounding has taken over the direction (see largest_step): stop before the step
+    }
     x += alpha * p;
     r -= alpha * Mp;
     ++steps;
@@ -253,10 +261,10 @@ int range_solution(const SparseMatrix& G, const VectorXd& g, const Preconditione
     }
     q.noalias() = G.transpose() * p;
     const double curvature = q.squaredNorm();  // p^T G G^T p
-    if (!(curvature > 0.0) || !(rz > 0.0)) {
-      break;
-    }
     const double alpha = rz / curvature;
+    if (!(curvature > 0.0) || !(rz > 0.0) || !(alpha <= largest_step)) {
+      break;  // rounding has taken over the direction (see largest_step): stop before the step
+    }
     x += alpha * q;
     Gq.noalias() = G * q;
     r -= alpha * Gq;
