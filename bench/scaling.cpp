@@ -7,10 +7,13 @@
 // `assemble_<kind>/N` times the assembly alone, `solve_<kind>_dense/N` forces the dense method
 // for comparison, `solve_<kind>_sparse/N` the sparse one. Scenes are generated once per size,
 // outside the timed loop. Counters report the sparse method's iterations, the rank deficit, the
-// relative residual |A Fdt - B| / |B| and the backward error |A Fdt - B| / (|A| |Fdt| + |B|).
+// relative residual |A Fdt - B| / |B|, the componentwise backward error
+// |A Fdt - B| / (| |A| |Fdt| | + |B|) and eps | |A| |Fdt| | / |B|, the relative residual that the
+// rounding of A Fdt alone leaves.
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -39,10 +42,18 @@ void solve_scene(benchmark::State& state, const char* kind, impulse::SolveMethod
   state.counters["contacts"] = static_cast<double>(scene.contacts.size());
   state.counters["iterations"] = last.iterations;
   state.counters["sparse"] = last.method == impulse::SolveMethod::sparse ? 1 : 0;
-  const double A_norm =
-      last.method == impulse::SolveMethod::sparse ? last.sparse_A.norm() : last.A.norm();
+  // |A| |Fdt|: the size of the terms that each row of A Fdt sums, the rounding level of the
+  // residual. The componentwise backward error is the residual against it.
+  Eigen::VectorXd terms(last.Fdt.size());
+  if (last.method == impulse::SolveMethod::sparse) {
+    terms.noalias() = Eigen::SparseMatrix<double>(last.sparse_A.cwiseAbs()) * last.Fdt.cwiseAbs();
+  } else {
+    terms.noalias() = last.A.cwiseAbs() * last.Fdt.cwiseAbs();
+  }
   state.counters["rel_residual"] = last.residual / last.B.norm();
-  state.counters["backward_error"] = last.residual / (A_norm * last.Fdt.norm() + last.B.norm());
+  state.counters["backward_error"] = last.residual / (terms.norm() + last.B.norm());
+  state.counters["eps_terms_over_B"] =
+      std::numeric_limits<double>::epsilon() * terms.norm() / last.B.norm();
   state.counters["rank_deficit"] = static_cast<double>(last.Fdt.size() - last.rank);
 }
 

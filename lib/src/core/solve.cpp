@@ -168,21 +168,22 @@ bool factor_shifted(const SparseMatrix& M, Shifted& shifted) {
 // iterate stays in the range of M, up to rounding): on a dependent system they converge to the
 // minimum-norm solution, as unpreconditioned CG would, only in far fewer steps.
 //
-// It stops when |rhs - M x| <= tolerance (|M|_F |x| + |rhs|), the backward error the dense method
-// is judged by too (a residual relative to |rhs| alone can be out of reach when the impulses are
-// much larger than the right-hand side, e.g. at the foot of a tall stack). When the recursive
-// residual gets there, the true one is computed; if it is not there yet, the iteration restarts
-// from it, unless the last restart gained less than a factor 2 (rounding level). Returns the number
-// of steps.
-template <typename Matrix, typename Preconditioner>
-int conjugate_gradients(const Matrix& M, const VectorXd& rhs, const Preconditioner& precondition,
-                        double tolerance, int max_iterations, VectorXd& x) {
+// It stops when |rhs - M x| <= tolerance (| |M| |x| | + |rhs|): the residual against the size
+// of the terms it is the sum of, the level at which rounding leaves it (a residual relative to
+// |rhs| alone can be out of reach when the impulses are much larger than the right-hand side,
+// e.g. at the foot of a tall stack). That size is taken at each restart; in between, the last
+// one (smaller, as x grows) makes the test stricter. When the recursive residual passes the
+// test, the true one is computed; if it fails, the iteration restarts from it, unless the last
+// restart gained less than a factor 2 (rounding level). Returns the number of steps.
+template <typename Preconditioner>
+int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs,
+                        const Preconditioner& precondition, double tolerance, int max_iterations,
+                        VectorXd& x) {
   x = VectorXd::Zero(M.cols());
-  const double M_norm = M.norm();  // Frobenius
+  const SparseMatrix M_abs = M.cwiseAbs();
   const double rhs_norm = rhs.norm();
-  const auto reached = [&](double residual) {
-    return residual <= tolerance * (M_norm * x.norm() + rhs_norm);
-  };
+  double terms = rhs_norm;  // | |M| |x| | + |rhs| at the last restart
+  const auto reached = [&](double residual) { return residual <= tolerance * terms; };
   VectorXd r = rhs;
   VectorXd z(M.rows());
   VectorXd p(M.rows());
@@ -194,6 +195,9 @@ int conjugate_gradients(const Matrix& M, const VectorXd& rhs, const Precondition
   while (steps < max_iterations) {
     if (restart) {
       const double true_residual = r.norm();
+      VectorXd sizes(M.rows());
+      sizes.noalias() = M_abs * x.cwiseAbs();
+      terms = sizes.norm() + rhs_norm;
       if (reached(true_residual) || !(true_residual < 0.5 * last_true)) {
         break;
       }
@@ -231,13 +235,17 @@ int conjugate_gradients(const Matrix& M, const VectorXd& rhs, const Precondition
 // the residual is g - G x. y itself, which the preconditioner may fill with large parts along
 // the null space of G^T (directions no contact constrains, amplified by 1/lambda), is never
 // accumulated, and G^T removes those parts from each step. x stays in the range of G^T: it is
-// the minimum-norm solution of G x = g. Stops when |g - G x| <= tolerance |g| or when a restart
-// from the true residual gains less than a factor 2. Returns the number of steps.
+// the minimum-norm solution of G x = g. Stops when |g - G x| <= tolerance (| |G| |x| | + |g|)
+// (as conjugate_gradients) or when a restart from the true residual gains less than a factor 2.
+// Returns the number of steps.
 template <typename Preconditioner>
 int range_solution(const SparseMatrix& G, const VectorXd& g, const Preconditioner& precondition,
                    double tolerance, int max_iterations, VectorXd& x) {
   x = VectorXd::Zero(G.cols());
-  const double target = tolerance * g.norm();
+  const SparseMatrix G_abs = G.cwiseAbs();
+  const double g_norm = g.norm();
+  double terms = g_norm;
+  const auto reached = [&](double residual) { return residual <= tolerance * terms; };
   VectorXd r = g;
   VectorXd z(G.rows());
   VectorXd p(G.rows());
@@ -250,7 +258,10 @@ int range_solution(const SparseMatrix& G, const VectorXd& g, const Preconditione
   while (steps < max_iterations) {
     if (restart) {
       const double true_residual = r.norm();
-      if (true_residual <= target || !(true_residual < 0.5 * last_true)) {
+      VectorXd sizes(G.rows());
+      sizes.noalias() = G_abs * x.cwiseAbs();
+      terms = sizes.norm() + g_norm;
+      if (reached(true_residual) || !(true_residual < 0.5 * last_true)) {
         break;
       }
       last_true = true_residual;
@@ -269,7 +280,7 @@ int range_solution(const SparseMatrix& G, const VectorXd& g, const Preconditione
     Gq.noalias() = G * q;
     r -= alpha * Gq;
     ++steps;
-    if (r.norm() <= target) {
+    if (reached(r.norm())) {
       r = g;
       r.noalias() -= G * x;  // the true residual
       restart = true;

@@ -75,8 +75,9 @@ struct SolverOptions {
   /// Dense or sparse (see SolveMethod).
   SolveMethod method = SolveMethod::automatic;
   /// The sparse method's iterations stop when
-  /// @f$ \|B - A\,F\,dt\| \le \tau\,(\|A\|_F\,\|F\,dt\| + \|B\|) @f$ (or when rounding
-  /// stops them from gaining).
+  /// @f$ \|B - A\,F\,dt\| \le \tau\,(\|\,|A|\,|F\,dt|\,\| + \|B\|) @f$: the residual
+  /// against the size of the terms it sums, the level rounding leaves it at (or earlier, when
+  /// rounding stops them from gaining).
   double sparse_tolerance = 1e-13;
   /// The sparse method's limit on iterations, for each of its two solves.
   int max_iterations = 100;
