@@ -14,8 +14,8 @@ ContactSystem::ContactSystem(Eigen::Index contacts, Storage storage) {
   if (contacts < 0) {
     throw InvalidInput("number of contacts must be at least 0, got " + std::to_string(contacts));
   }
-  sparse_ = storage == Storage::sparse ||
-            (storage == Storage::automatic && contacts > sparse_threshold);
+  sparse_ =
+      storage == Storage::sparse || (storage == Storage::automatic && contacts > sparse_threshold);
   if (!sparse_) {
     A_ = Eigen::MatrixXd::Zero(contacts, contacts);
   }

@@ -66,8 +66,8 @@ enum class Storage {
 /// Up to it, the dense method is kept for what it gives: the complete orthogonal decomposition
 /// of the factor G loses half the digits that factoring A does, decides the rank exactly and
 /// serves every policy. Its cost is cubic: on the generated scenes of bench/ it takes about
-/// 1 ms at 100 contacts, 5-13 ms at 256 and 0.25-0.85 s at 1,000 (the sparse method: 0.2 ms at
-/// 256), and its N² storage is 0.5 MiB at 256 but 80 GB at 100,000. 256 keeps the dense cost
+/// 1 ms at 100 contacts, 4-13 ms at 256 and 0.2-0.8 s at 1,000 (the sparse method: 0.2-0.3 ms
+/// at 256), and its N² storage is 0.5 MiB at 256 but 80 GB at 100,000. 256 keeps the dense cost
 /// at a few milliseconds (bench/README.md).
 inline constexpr Eigen::Index sparse_threshold = 256;
 
@@ -152,7 +152,7 @@ class ContactSystem {
   void check(const BlockContribution& block) const;
   // Adds a block's a and b (checked) to A and B.
   void add_matrix(const BlockContribution& block);
-  Eigen::MatrixXd A_;  // dense storage (empty when sparse_)
+  Eigen::MatrixXd A_;                            // dense storage (empty when sparse_)
   std::vector<Eigen::Triplet<double>> entries_;  // sparse storage: every entry added
   Eigen::VectorXd B_;
   std::vector<FactorRows> factor_rows_;
