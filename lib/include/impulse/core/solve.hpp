@@ -99,17 +99,13 @@ struct Solution {
   Eigen::VectorXd Fdt;                        ///< impulse magnitude at each contact
   Eigen::MatrixXd A;                          ///< the system solved (dense method; else 0×0)
   Eigen::VectorXd B;                          ///< its right-hand side
-  Eigen::SparseMatrix<double> sparse_A;       ///< the system solved (sparse method; else 0×0)
-  SolveMethod method = SolveMethod::dense;    ///< the method used: dense or sparse
   /// Numerical rank of A. The dense method reads it from the pivoted QR; the sparse method
   /// estimates it as N minus the count of LDLᵀ pivots of @f$ A + \lambda I @f$ not above
   /// @f$ 10^3 \lambda @f$ (see rank_estimated).
   Eigen::Index rank = 0;
-  bool rank_estimated = false;  ///< true when rank and condition_estimate are sparse estimates
-  int iterations = 0;           ///< conjugate-gradient steps of the sparse method (0: dense)
-  double residual = 0.0;        ///< @f$ \|A\,F\,dt - B\|_2 @f$ of the whole system
-  bool dependent = false;       ///< rank < N: many impulse vectors act the same
-  bool consistent = true;       ///< B lies in the range of A (within tolerance)
+  double residual = 0.0;   ///< @f$ \|A\,F\,dt - B\|_2 @f$ of the whole system
+  bool dependent = false;  ///< rank < N: many impulse vectors act the same
+  bool consistent = true;  ///< B lies in the range of A (within tolerance)
   /// Largest over smallest retained pivot of the column-pivoted QR of A (or the square of that
   /// ratio for the factor G, when the system carries one): an estimate of the condition number
   /// of A on its range (1 for the empty system, infinity when A is zero but N > 0). Relative
@@ -118,6 +114,11 @@ struct Solution {
   double condition_estimate = 1.0;
   std::vector<Eigen::Index> dropped;  ///< equations ignored under InconsistentPolicy::drop_equation
   SolverOptions options;              ///< the policies and tolerances used
+  // Added for the sparse method (issue 7), after the fields above so that their order stays.
+  SolveMethod method = SolveMethod::dense;  ///< the method used: dense or sparse
+  Eigen::SparseMatrix<double> sparse_A;     ///< the system solved (sparse method; else 0×0)
+  bool rank_estimated = false;  ///< true when rank and condition_estimate are sparse estimates
+  int iterations = 0;           ///< conjugate-gradient steps of the sparse method (0: dense)
 };
 
 /// @brief Solves A·Fdt = B under the given policies.
