@@ -29,39 +29,32 @@ std::string format_vector(const Eigen::Vector2d& v) {
 }
 }  // namespace
 
-void require_positive(std::string_view what, double value) {
-  if (!(std::isfinite(value) && value > 0.0)) {
-    refuse(what, "positive and finite", format_number(value));
-  }
+namespace detail {
+
+void refuse_positive(std::string_view what, double value) {
+  refuse(what, "positive and finite", format_number(value));
 }
 
-void require_finite(std::string_view what, double value) {
-  if (!std::isfinite(value)) {
-    refuse(what, "finite", format_number(value));
-  }
+void refuse_finite(std::string_view what, double value) {
+  refuse(what, "finite", format_number(value));
 }
 
-void require_finite(std::string_view what, const Eigen::Vector2d& value) {
-  if (!value.allFinite()) {
-    refuse(what, "finite", format_vector(value));
-  }
+void refuse_finite(std::string_view what, const Eigen::Vector2d& value) {
+  refuse(what, "finite", format_vector(value));
 }
 
-void require_unit_normal(std::string_view what, const Eigen::Vector2d& normal) {
+void refuse_unit_normal(std::string_view what, const Eigen::Vector2d& normal) {
   if (!normal.allFinite()) {
     refuse(what, "a finite unit vector", format_vector(normal));
   }
-  const double length = normal.norm();
-  if (!(std::abs(length - 1.0) <= unit_normal_tolerance)) {
-    refuse(what, "a unit vector (length 1 within " + format_number(unit_normal_tolerance) + ")",
-           format_vector(normal) + " of length " + format_number(length));
-  }
+  refuse(what, "a unit vector (length 1 within " + format_number(unit_normal_tolerance) + ")",
+         format_vector(normal) + " of length " + format_number(normal.norm()));
 }
 
-void require_unit_direction(std::string_view what, double direction) {
-  if (direction != 1.0 && direction != -1.0) {
-    refuse(what, "+1 or -1", format_number(direction));
-  }
+void refuse_unit_direction(std::string_view what, double direction) {
+  refuse(what, "+1 or -1", format_number(direction));
 }
+
+}  // namespace detail
 
 }  // namespace impulse

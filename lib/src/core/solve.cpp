@@ -2,6 +2,8 @@
 #include "impulse/core/solve.hpp"
 
 #include <Eigen/QR>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 #include <cmath>
 #include <limits>
 
@@ -123,13 +125,290 @@ void mark_non_finite(Solution& solution) {
   solution.condition_estimate = std::numeric_limits<double>::infinity();
 }
 
+// ---- The sparse method ---------------------------------------------------------------------
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using SparseLDLT = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>>;
+
+// The shift of A + lambda I, relative to A's largest diagonal entry. Small enough that the
+// preconditioner is nearly A's inverse on its range (conjugate gradients then converge in a few
+// steps up to condition numbers near 1e10), large enough that A + lambda I factors stably.
+constexpr double shift = 1e-10;
+// LDLT pivots of A + lambda I up to this many lambdas count as A's null space in the rank
+// estimate (a dependent direction leaves a pivot of about lambda).
+constexpr double null_pivot = 1e3;
+
+// The largest step length the conjugate gradients below accept. Their preconditioned operators
+// have eigenvalues s / (s + lambda) (or its square) in (0, 1] on the range they work in, so in
+// exact arithmetic every step length is at least 1 and it exceeds 100 only along directions
+// where s < lambda / 99, about 1e-12 of A's largest diagonal entry: numerically the null space.
+// A longer step comes from rounding that the preconditioner amplified (by 1/lambda) along the
+// null space; taking it would throw the impulses far along it, so the iteration stops there.
+constexpr double largest_step = 100.0;
+
+struct Shifted {
+  SparseLDLT ldlt;
+  double lambda = 0.0;
+};
+
+// LDLT of M + lambda I with lambda = shift * max diag(M). Returns false if it failed.
+bool factor_shifted(const SparseMatrix& M, Shifted& shifted) {
+  const double scale = M.diagonal().maxCoeff();
+  shifted.lambda = shift * scale;
+  SparseMatrix identity(M.rows(), M.cols());
+  identity.setIdentity();
+  const SparseMatrix K = M + shifted.lambda * identity;
+  shifted.ldlt.compute(K);
+  return shifted.ldlt.info() == Eigen::Success;
+}
+
+// Conjugate gradients on the consistent positive semi-definite system M x = rhs, started from
+// zero, preconditioned by (M + lambda I)^-1 (`precondition(r)`, which must be an approximation of
+// a function of M, so that every
+// iterate stays in the range of M, up to rounding): on a dependent system they converge to the
+// minimum-norm solution, as unpreconditioned CG would, only in far fewer steps.
+//
+// It stops when |rhs - M x| <= tolerance (| |M| |x| | + |rhs|): the residual against the size
+// of the terms it is the sum of, the level at which rounding leaves it (a residual relative to
+// |rhs| alone can be out of reach when the impulses are much larger than the right-hand side,
+// e.g. at the foot of a tall stack). That size is taken at each restart; in between, the last
+// one (smaller, as x grows) makes the test stricter. When the recursive residual passes the
+// test, the true one is computed; if it fails, the iteration restarts from it, unless the last
+// restart gained less than a factor 2 (rounding level). Returns the number of steps.
+template <typename Preconditioner>
+int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs,
+                        const Preconditioner& precondition, double tolerance, int max_iterations,
+                        VectorXd& x) {
+  x = VectorXd::Zero(M.cols());
+  const SparseMatrix M_abs = M.cwiseAbs();
+  const double rhs_norm = rhs.norm();
+  double terms = rhs_norm;  // | |M| |x| | + |rhs| at the last restart
+  const auto reached = [&](double residual) { return residual <= tolerance * terms; };
+  VectorXd r = rhs;
+  VectorXd z(M.rows());
+  VectorXd p(M.rows());
+  VectorXd Mp(M.rows());
+  int steps = 0;
+  double rz = 0.0;
+  double last_true = std::numeric_limits<double>::infinity();
+  bool restart = true;
+  while (steps < max_iterations) {
+    if (restart) {
+      const double true_residual = r.norm();
+      VectorXd sizes(M.rows());
+      sizes.noalias() = M_abs * x.cwiseAbs();
+      terms = sizes.norm() + rhs_norm;
+      if (reached(true_residual) || !(true_residual < 0.5 * last_true)) {
+        break;
+      }
+      last_true = true_residual;
+      z = precondition(r);
+      p = z;
+      rz = r.dot(z);
+      restart = false;
+    }
+    Mp.noalias() = M * p;
+    const double curvature = p.dot(Mp);
+    const double alpha = rz / curvature;
+    if (!(curvature > 0.0) || !(rz > 0.0) || !(alpha <= largest_step)) {
+      break;  // rounding has taken over the direction (see largest_step): stop before the step
+    }
+    x += alpha * p;
+    r -= alpha * Mp;
+    ++steps;
+    if (reached(r.norm())) {
+      r = rhs;
+      r.noalias() -= M * x;  // the true residual
+      restart = true;
+      continue;
+    }
+    z = precondition(r);
+    const double rz_next = r.dot(z);
+    p = z + (rz_next / rz) * p;
+    rz = rz_next;
+  }
+  return steps;
+}
+
+// Conjugate gradients on G G^T y = g (g in the range of G), preconditioned by
+// `precondition`, carried out on x = G^T y instead of y: every step adds alpha G^T p to x and
+// the residual is g - G x. y itself, which the preconditioner may fill with large parts along
+// the null space of G^T (directions no contact constrains, amplified by 1/lambda), is never
+// accumulated, and G^T removes those parts from each step. x stays in the range of G^T: it is
+// the minimum-norm solution of G x = g. Stops when |g - G x| <= tolerance (| |G| |x| | + |g|)
+// (as conjugate_gradients) or when a restart from the true residual gains less than a factor 2.
+// Returns the number of steps.
+template <typename Preconditioner>
+int range_solution(const SparseMatrix& G, const VectorXd& g, const Preconditioner& precondition,
+                   double tolerance, int max_iterations, VectorXd& x) {
+  x = VectorXd::Zero(G.cols());
+  const SparseMatrix G_abs = G.cwiseAbs();
+  const double g_norm = g.norm();
+  double terms = g_norm;
+  const auto reached = [&](double residual) { return residual <= tolerance * terms; };
+  VectorXd r = g;
+  VectorXd z(G.rows());
+  VectorXd p(G.rows());
+  VectorXd q(G.cols());
+  VectorXd Gq(G.rows());
+  int steps = 0;
+  double rz = 0.0;
+  double last_true = std::numeric_limits<double>::infinity();
+  bool restart = true;
+  while (steps < max_iterations) {
+    if (restart) {
+      const double true_residual = r.norm();
+      VectorXd sizes(G.rows());
+      sizes.noalias() = G_abs * x.cwiseAbs();
+      terms = sizes.norm() + g_norm;
+      if (reached(true_residual) || !(true_residual < 0.5 * last_true)) {
+        break;
+      }
+      last_true = true_residual;
+      z = precondition(r);
+      p = z;
+      rz = r.dot(z);
+      restart = false;
+    }
+    q.noalias() = G.transpose() * p;
+    const double curvature = q.squaredNorm();  // p^T G G^T p
+    const double alpha = rz / curvature;
+    if (!(curvature > 0.0) || !(rz > 0.0) || !(alpha <= largest_step)) {
+      break;  // rounding has taken over the direction (see largest_step): stop before the step
+    }
+    x += alpha * q;
+    Gq.noalias() = G * q;
+    r -= alpha * Gq;
+    ++steps;
+    if (reached(r.norm())) {
+      r = g;
+      r.noalias() -= G * x;  // the true residual
+      restart = true;
+      continue;
+    }
+    z = precondition(r);
+    const double rz_next = r.dot(z);
+    p = z + (rz_next / rz) * p;
+    rz = rz_next;
+  }
+  return steps;
+}
+
+// Solves a system that carries its factor with sparse factorisations only. Leaves solution.A
+// empty and fills sparse_A. Returns false when a factorisation failed (the caller then solves
+// densely).
+bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Solution& solution) {
+  solution.method = SolveMethod::sparse;
+  solution.rank_estimated = true;
+  solution.sparse_A = system.sparse_A();
+  const SparseMatrix& A = solution.sparse_A;
+  const VectorXd& B = solution.B;
+  const Index n = system.size();
+  SparseMatrix G;
+  VectorXd w;
+  system.factor(G, w);
+  const bool finite = Eigen::Map<const VectorXd>(A.valuePtr(), A.nonZeros()).allFinite() &&
+                      Eigen::Map<const VectorXd>(G.valuePtr(), G.nonZeros()).allFinite() &&
+                      B.allFinite() && w.allFinite();
+  if (!finite) {
+    mark_non_finite(solution);
+    return true;
+  }
+  if (n == 0) {
+    solution.Fdt = VectorXd(0);
+    return true;
+  }
+  if (!(A.diagonal().maxCoeff() > 0.0)) {
+    // A = 0 (no body at any contact can move): every Fdt acts the same; take the least, zero.
+    solution.Fdt = VectorXd::Zero(n);
+    solution.rank = 0;
+    solution.dependent = true;
+    solution.condition_estimate = std::numeric_limits<double>::infinity();
+    solution.consistent = B.isZero(0.0);
+    solution.residual = B.norm();
+    return true;
+  }
+
+  // 1. Any solution x of A x = B (the minimum-norm one when A is regular).
+  Shifted shifted;
+  if (!factor_shifted(A, shifted)) {
+    return false;
+  }
+  const VectorXd& pivots = shifted.ldlt.vectorD();
+  const double null_level = null_pivot * shifted.lambda;
+  Index retained = 0;
+  double largest = 0.0;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (Index i = 0; i < pivots.size(); ++i) {
+    if (pivots(i) > null_level) {
+      ++retained;
+      largest = std::max(largest, pivots(i));
+      smallest = std::min(smallest, pivots(i));
+    }
+  }
+  solution.rank = retained;
+  solution.dependent = retained < n;
+  solution.condition_estimate = largest / smallest;
+  VectorXd x;
+  const auto shifted_inverse = [&](const VectorXd& r) -> VectorXd { return shifted.ldlt.solve(r); };
+  solution.iterations = conjugate_gradients(A, B, shifted_inverse, options.sparse_tolerance,
+                                            options.max_iterations, x);
+
+  // 2. x may carry a part in the null space of A = null space of G (the preconditioner
+  // amplifies rounding there by 1/lambda). The minimum-norm solution has the same G x and lies
+  // in the range of G^T: it is G^T y with G G^T y = G x, solved by conjugate gradients too, with
+  // the preconditioner G (G^T G + lambda I)^-2 G^T from the factorisation already made. On the
+  // range of G it is nearly (G G^T)^-1 (eigenvalues s^2 / (s^2 + lambda)^2 for s^2 of G G^T)
+  // and, being G times something, it adds nothing along the null space of G^T: the rounding it
+  // amplifies by 1/lambda^2 lies in the null space of G, which the product with G removes. The
+  // step runs on every system, not only on those whose pivots show a dependency: the pivot of a
+  // dependent direction is about lambda only when the direction is well separated from the
+  // others, so the rank estimate can miss one in an ill-conditioned system; on a regular
+  // system the step returns the same x for a few more iterations.
+  {
+    const auto range_preconditioner = [&](const VectorXd& r) -> VectorXd {
+      VectorXd Gtr(G.cols());
+      Gtr.noalias() = G.transpose() * r;
+      const VectorXd twice = shifted.ldlt.solve(shifted.ldlt.solve(Gtr));
+      VectorXd z(G.rows());
+      z.noalias() = G * twice;
+      return z;
+    };
+    VectorXd Gx(G.rows());
+    Gx.noalias() = G * x;
+    // Judged against |G x| alone, the velocity change (not |G G^T| |y|).
+    solution.iterations += range_solution(G, Gx, range_preconditioner, options.sparse_tolerance,
+                                          options.max_iterations, x);
+  }
+  solution.Fdt = std::move(x);
+  VectorXd residual = B;
+  residual.noalias() -= A * solution.Fdt;
+  solution.residual = residual.norm();
+  solution.consistent = solution.residual <=
+                        options.consistency_tolerance * (A.norm() * solution.Fdt.norm() + B.norm());
+  return true;
+}
+
 }  // namespace
 
 Solution solve(const ContactSystem& system, const SolverOptions& options) {
   Solution solution;
-  solution.A = system.A();
   solution.B = system.B();
   solution.options = options;
+  // The sparse method gives the minimum-norm least-squares solution of a system built from
+  // bodies (always consistent: B = G^T w); the other policies need the dense pivoted QR.
+  const bool default_policies = options.dependent == DependentPolicy::minimum_norm &&
+                                options.inconsistent == InconsistentPolicy::least_squares;
+  const bool sparse = system.has_factor() && default_policies &&
+                      (options.method == SolveMethod::sparse ||
+                       (options.method == SolveMethod::automatic && system.is_sparse()));
+  if (sparse && solve_sparse(system, options, solution)) {
+    return solution;
+  }
+  solution = Solution{};
+  solution.B = system.B();
+  solution.options = options;
+  solution.A = system.is_sparse() ? MatrixXd(system.sparse_A()) : system.A();
   const MatrixXd& A = solution.A;
   const VectorXd& B = solution.B;
   const Index n = system.size();
@@ -170,29 +449,6 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
     solution.Fdt = drop_contradicting_equations(solution, options);
   }
   solution.residual = (A * solution.Fdt - B).norm();
-  return solution;
-}
-
-ScalarSolution solve(ScalarContribution system) {
-  ScalarSolution solution;
-  solution.A = system.a;
-  solution.B = system.b;
-  if (!std::isfinite(system.a) || !std::isfinite(system.b)) {
-    solution.status = SolveStatus::non_finite;
-    solution.Fdt = std::numeric_limits<double>::quiet_NaN();
-    solution.residual = std::numeric_limits<double>::quiet_NaN();
-    solution.consistent = false;
-    return solution;
-  }
-  if (system.a == 0.0) {
-    // Neither body can move along the normal: every Fdt acts the same; take the least, zero.
-    solution.dependent = true;
-    solution.consistent = system.b == 0.0;
-    solution.Fdt = 0.0;
-  } else {
-    solution.Fdt = system.b / system.a;  // end of section 1.3: Fdt = B / A
-  }
-  solution.residual = std::abs(system.a * solution.Fdt - system.b);
   return solution;
 }
 

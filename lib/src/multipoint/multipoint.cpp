@@ -46,8 +46,28 @@ void require_elasticities(std::span<const Body> bodies, std::span<const Elastici
 
 }  // namespace
 
+namespace {
+// Every check of validate() for one body or contact, in one branch: no name is built unless a
+// check fails.
+bool acceptable(const Body& body) {
+  return std::visit(
+      Overloaded{[](const PointMass& b) { return material_2d::detail::acceptable(b); },
+                 [](const RigidBody& b) { return rigid_2d::detail::acceptable(b); },
+                 [](const StaticBody&) { return true; }},
+      body);
+}
+
+bool acceptable(const Contact& c, std::size_t bodies) {
+  return (c.bumper < bodies) & (c.wedge < bodies) & (c.bumper != c.wedge) &
+         is_unit_normal(c.normal) & all_finite(c.point.x(), c.point.y());
+}
+}  // namespace
+
 void validate(std::span<const Body> bodies, std::span<const Contact> contacts) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (acceptable(bodies[i])) [[likely]] {
+      continue;
+    }
     const std::string name = place("bodies", i);
     std::visit(Overloaded{[&](const PointMass& b) { material_2d::validate(b, name.c_str()); },
                           [&](const RigidBody& b) { rigid_2d::validate(b, name.c_str()); },
@@ -56,6 +76,9 @@ void validate(std::span<const Body> bodies, std::span<const Contact> contacts) {
   }
   for (std::size_t v = 0; v < contacts.size(); ++v) {
     const Contact& c = contacts[v];
+    if (acceptable(c, bodies.size())) [[likely]] {
+      continue;
+    }
     const std::string name = place("contacts", v);
     for (const auto& [role, index] :
          {std::pair{".bumper", c.bumper}, std::pair{".wedge", c.wedge}}) {
@@ -140,9 +163,14 @@ BlockContribution contribution(const Body& body, std::span<const Touch> touches,
 
 ContactSystem assemble(std::span<const Body> bodies, std::span<const Elasticity> elasticities,
                        std::span<const Contact> contacts) {
+  return assemble(bodies, elasticities, contacts, Storage::automatic);
+}
+
+ContactSystem assemble(std::span<const Body> bodies, std::span<const Elasticity> elasticities,
+                       std::span<const Contact> contacts, Storage storage) {
   validate(bodies, contacts);
   require_elasticities(bodies, elasticities);
-  ContactSystem system(static_cast<Eigen::Index>(contacts.size()));
+  ContactSystem system(static_cast<Eigen::Index>(contacts.size()), storage);
   const auto grouped = touches_by_body(bodies.size(), contacts);
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     if (!grouped[k].empty()) {

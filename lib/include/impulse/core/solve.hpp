@@ -4,6 +4,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <cmath>
+#include <limits>
 #include <string_view>
 #include <vector>
 
@@ -39,6 +42,25 @@ enum class InconsistentPolicy {
 /// @return its name
 [[nodiscard]] std::string_view to_string(InconsistentPolicy policy);
 
+/// @brief Which method solves a many-contact system.
+enum class SolveMethod {
+  /// The sparse method for systems kept sparse (ContactSystem::is_sparse(), i.e. above
+  /// sparse_threshold contacts) that carry their factor and use the default policies; the
+  /// dense one otherwise.
+  automatic,
+  /// The complete orthogonal decomposition of G (or of A without a factor): exact rank,
+  /// twice the digits, cubic cost and N² storage. The only method for DependentPolicy::basic
+  /// and InconsistentPolicy::drop_equation.
+  dense,
+  /// Sparse factorisations only, for systems that carry their factor (others are solved dense):
+  /// conjugate gradients on A preconditioned by a sparse LDLᵀ of @f$ A + \lambda I @f$
+  /// (@f$ \lambda = 10^{-10} \max_v A_{vv} @f$), which gives any solution @f$ \hat{x} @f$;
+  /// then the minimum-norm one as @f$ G^T y @f$ with @f$ G G^T y = G\,\hat{x} @f$, by
+  /// conjugate gradients preconditioned from the same LDLᵀ. Rank and condition number are
+  /// estimates from the pivots of the LDLᵀ.
+  sparse,
+};
+
 /// @brief How to solve: the two policies and the tolerances behind the diagnostics.
 struct SolverOptions {
   DependentPolicy dependent = DependentPolicy::minimum_norm;            ///< many solutions
@@ -50,6 +72,15 @@ struct SolverOptions {
   /// The system counts as consistent when
   /// @f$ \|A\,F\,dt - B\| \le \tau\,(\|A\|_F\,\|F\,dt\| + \|B\|) @f$ with this @f$ \tau @f$.
   double consistency_tolerance = 1e-9;
+  /// Dense or sparse (see SolveMethod).
+  SolveMethod method = SolveMethod::automatic;
+  /// The sparse method's iterations stop when
+  /// @f$ \|B - A\,F\,dt\| \le \tau\,(\|\,|A|\,|F\,dt|\,\| + \|B\|) @f$: the residual
+  /// against the size of the terms it sums, the level rounding leaves it at (or earlier, when
+  /// rounding stops them from gaining).
+  double sparse_tolerance = 1e-13;
+  /// The sparse method's limit on iterations, for each of its two solves.
+  int max_iterations = 100;
 };
 
 /// @brief Whether the numbers allowed a solution. Bad input is an exception instead.
@@ -59,22 +90,35 @@ enum class SolveStatus {
 };
 
 /// @brief The impulses, and the system they solve with its diagnostics.
+///
+/// A system solved by the sparse method (`method == SolveMethod::sparse`) leaves `A` empty
+/// (0×0) and gives A in `sparse_A` instead; its `rank` and `condition_estimate` are estimates
+/// (`rank_estimated`), `iterations` counts its conjugate-gradient steps.
 struct Solution {
   SolveStatus status = SolveStatus::success;  ///< whether Fdt is meaningful
   Eigen::VectorXd Fdt;                        ///< impulse magnitude at each contact
-  Eigen::MatrixXd A;                          ///< the system solved
+  Eigen::MatrixXd A;                          ///< the system solved (dense method; else 0×0)
   Eigen::VectorXd B;                          ///< its right-hand side
-  Eigen::Index rank = 0;                      ///< numerical rank of A
-  double residual = 0.0;                      ///< @f$ \|A\,F\,dt - B\|_2 @f$ of the whole system
-  bool dependent = false;                     ///< rank < N: many impulse vectors act the same
-  bool consistent = true;                     ///< B lies in the range of A (within tolerance)
+  /// Numerical rank of A. The dense method reads it from the pivoted QR; the sparse method
+  /// estimates it as N minus the count of LDLᵀ pivots of @f$ A + \lambda I @f$ not above
+  /// @f$ 10^3 \lambda @f$ (see rank_estimated).
+  Eigen::Index rank = 0;
+  double residual = 0.0;   ///< @f$ \|A\,F\,dt - B\|_2 @f$ of the whole system
+  bool dependent = false;  ///< rank < N: many impulse vectors act the same
+  bool consistent = true;  ///< B lies in the range of A (within tolerance)
   /// Largest over smallest retained pivot of the column-pivoted QR of A (or the square of that
   /// ratio for the factor G, when the system carries one): an estimate of the condition number
   /// of A on its range (1 for the empty system, infinity when A is zero but N > 0). Relative
-  /// errors of Fdt are bounded by roughly this times the input's.
+  /// errors of Fdt are bounded by roughly this times the input's. The sparse method gives the
+  /// ratio of the largest to the smallest retained LDLᵀ pivot, a rougher estimate.
   double condition_estimate = 1.0;
   std::vector<Eigen::Index> dropped;  ///< equations ignored under InconsistentPolicy::drop_equation
   SolverOptions options;              ///< the policies and tolerances used
+  // Added for the sparse method (issue 7), after the fields above so that their order stays.
+  SolveMethod method = SolveMethod::dense;  ///< the method used: dense or sparse
+  Eigen::SparseMatrix<double> sparse_A;     ///< the system solved (sparse method; else 0×0)
+  bool rank_estimated = false;  ///< true when rank and condition_estimate are sparse estimates
+  int iterations = 0;           ///< conjugate-gradient steps of the sparse method (0: dense)
 };
 
 /// @brief Solves A·Fdt = B under the given policies.
@@ -84,7 +128,8 @@ struct Solution {
 /// @f$ G\,F\,dt \approx w @f$, which has the same minimum-norm solution but is solved from a
 /// QR factorisation of G: the velocities after the collision then carry the rounding of
 /// @f$ \sqrt{\kappa(A)} @f$ rather than of @f$ \kappa(A) @f$. Otherwise A itself is factored.
-/// Rank, residual and consistency always refer to A and B.
+/// Rank, residual and consistency always refer to A and B. Large systems kept sparse are solved
+/// by the sparse method (see SolveMethod), which returns the same minimum-norm impulses.
 /// @param system the assembled system
 /// @param options policies and tolerances
 /// @return the impulses with A, B, rank, residual and the other diagnostics
@@ -104,6 +149,36 @@ struct ScalarSolution {
 /// @brief Solves the one-contact system. A = 0 gives Fdt = 0, the minimum-norm choice.
 /// @param system the summed contributions (A, B)
 /// @return the impulse magnitude and its diagnostics
-[[nodiscard]] ScalarSolution solve(ScalarContribution system);
+namespace detail {
+// The common case of the single-contact solve in one branch: A and B finite, A not zero.
+inline bool all_finite_and_nonzero(ScalarContribution system) {
+  return ((system.a + system.b) * 0.0 == 0.0) & (system.a != 0.0);
+}
+}  // namespace detail
+
+[[nodiscard]] inline ScalarSolution solve(ScalarContribution system) {
+  // Inline: the single-contact path costs no call (see bench/single_contact.cpp).
+  ScalarSolution solution;
+  solution.A = system.a;
+  solution.B = system.b;
+  if (detail::all_finite_and_nonzero(system)) [[likely]] {
+    solution.Fdt = system.b / system.a;  // end of section 1.3: Fdt = B / A
+  } else if (!std::isfinite(system.a) || !std::isfinite(system.b)) {
+    solution.status = SolveStatus::non_finite;
+    solution.Fdt = std::numeric_limits<double>::quiet_NaN();
+    solution.residual = std::numeric_limits<double>::quiet_NaN();
+    solution.consistent = false;
+    return solution;
+  } else if (system.a == 0.0) {
+    // Neither body can move along the normal: every Fdt acts the same; take the least, zero.
+    solution.dependent = true;
+    solution.consistent = system.b == 0.0;
+    solution.Fdt = 0.0;
+  } else {
+    solution.Fdt = system.b / system.a;  // finite, but too large for the quick test's sum
+  }
+  solution.residual = std::abs(system.a * solution.Fdt - system.b);
+  return solution;
+}
 
 }  // namespace impulse

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 
 #include "impulse/core/elasticity.hpp"
+#include "impulse/core/error.hpp"
 #include "impulse/core/solve.hpp"
 #include "impulse/core/system.hpp"
 
@@ -31,17 +33,17 @@ struct PointMass {
 /// @brief Throws InvalidInput unless the mass is positive and finite and the momentum finite.
 /// @param body the body to check
 /// @param name how the message names it
-void validate(const PointMass& body, const char* name = "body");
+inline void validate(const PointMass& body, const char* name = "body");
 
 /// @brief @f$ \vec{v} = \vec{p}/m @f$.
 /// @param body the body
 /// @return its velocity
-[[nodiscard]] Eigen::Vector2d velocity(const PointMass& body);
+[[nodiscard]] inline Eigen::Vector2d velocity(const PointMass& body);
 
 /// @brief @f$ E_t = \|\vec{p}\|^2 / 2m @f$.
 /// @param body the body
 /// @return its kinetic energy
-[[nodiscard]] double kinetic_energy(const PointMass& body);
+[[nodiscard]] inline double kinetic_energy(const PointMass& body);
 
 /// @brief The paper's cast of @p v onto the direction of @p direction:
 /// @f$ \vec{v}\cdot\vec{d}/\|\vec{d}\| @f$ (a plain dot product when @p direction is a unit
@@ -55,7 +57,7 @@ void validate(const PointMass& body, const char* name = "body");
 /// @param body the body
 /// @param n its outward unit normal
 /// @return the normal velocity
-[[nodiscard]] double normal_velocity(const PointMass& body, const Eigen::Vector2d& n);
+[[nodiscard]] inline double normal_velocity(const PointMass& body, const Eigen::Vector2d& n);
 
 /// @brief The body's share of (1.3) on the cast: @f$ a = \|\vec{n}\|^2/m @f$,
 /// @f$ b = e\,(\vec{p}\cdot\vec{n})/m @f$ (the single-contact form of (4.5)/(4.8)).
@@ -63,21 +65,23 @@ void validate(const PointMass& body, const char* name = "body");
 /// @param n its own outward unit normal (validated)
 /// @param elasticity its elasticity
 /// @return (a, b)
-[[nodiscard]] ScalarContribution contribution(const PointMass& body, const Eigen::Vector2d& n,
-                                              Elasticity elasticity);
+[[nodiscard]] inline ScalarContribution contribution(const PointMass& body,
+                                                     const Eigen::Vector2d& n,
+                                                     Elasticity elasticity);
 
 /// @brief The vectorised impulse on a body of outward normal @p n: @f$ -\vec{n}\,F\,dt @f$.
 /// @param n the body's outward unit normal
 /// @param Fdt the impulse magnitude
 /// @return the impulse vector
-[[nodiscard]] Eigen::Vector2d impulse_vector(const Eigen::Vector2d& n, double Fdt);
+[[nodiscard]] inline Eigen::Vector2d impulse_vector(const Eigen::Vector2d& n, double Fdt);
 
 /// @brief The body after the impulse: @f$ \vec{p}' = \vec{p} - \vec{n}\,F\,dt @f$.
 /// @param body the body before
 /// @param n its outward unit normal
 /// @param Fdt the impulse magnitude
 /// @return the body after
-[[nodiscard]] PointMass apply_impulse(const PointMass& body, const Eigen::Vector2d& n, double Fdt);
+[[nodiscard]] inline PointMass apply_impulse(const PointMass& body, const Eigen::Vector2d& n,
+                                             double Fdt);
 
 /// @brief A two-body collision in the plane, solved.
 struct Collision {
@@ -93,8 +97,77 @@ struct Collision {
 /// @param wedge_elasticity its elasticity
 /// @param n unit normal, outward from the bumper
 /// @return the impulse and both bodies after
-[[nodiscard]] Collision collide(const PointMass& bumper, Elasticity bumper_elasticity,
-                                const PointMass& wedge, Elasticity wedge_elasticity,
-                                const Eigen::Vector2d& n);
+[[nodiscard]] inline Collision collide(const PointMass& bumper, Elasticity bumper_elasticity,
+                                       const PointMass& wedge, Elasticity wedge_elasticity,
+                                       const Eigen::Vector2d& n);
+
+// The single-contact path is defined here, inline, so that the caller's compiler sees the whole
+// formula: bench/single_contact.cpp measures it against the same impulse written by hand.
+
+namespace detail {
+// The test behind validate(), the same as its checks one by one, in one branch for the caller.
+inline bool acceptable(const PointMass& body) {
+  return is_positive(body.mass) & all_finite(body.p.x(), body.p.y());
+}
+// Throws InvalidInput naming the first bad field of a body that failed the test.
+[[noreturn]] void refuse(const PointMass& body, const char* name);
+// Runs the checks of collide() one by one and throws the first failing one's message.
+[[noreturn]] void refuse_collision(const PointMass& bumper, const PointMass& wedge,
+                                   const Eigen::Vector2d& n);
+}  // namespace detail
+
+inline void validate(const PointMass& body, const char* name) {
+  if (!detail::acceptable(body)) [[unlikely]] {
+    detail::refuse(body, name);  // builds the message only now
+  }
+}
+
+inline Eigen::Vector2d velocity(const PointMass& body) {
+  return body.p / body.mass;
+}
+
+inline double kinetic_energy(const PointMass& body) {
+  return body.p.squaredNorm() / (2.0 * body.mass);
+}
+
+inline double normal_velocity(const PointMass& body, const Eigen::Vector2d& n) {
+  return body.p.dot(n) / body.mass;  // p_n / m, with p_n = p . n (section 2)
+}
+
+namespace detail {
+// (1.3) on the cast p_n = p . n for a body and normal already validated; (4.5)/(4.8) with a
+// single contact.
+inline ScalarContribution share(const PointMass& body, const Eigen::Vector2d& n,
+                                Elasticity elasticity) {
+  return {n.squaredNorm() / body.mass, elasticity.value() * normal_velocity(body, n)};
+}
+}  // namespace detail
+
+inline ScalarContribution contribution(const PointMass& body, const Eigen::Vector2d& n,
+                                       Elasticity elasticity) {
+  validate(body);
+  require_unit_normal("normal", n);
+  return detail::share(body, n, elasticity);
+}
+
+inline Eigen::Vector2d impulse_vector(const Eigen::Vector2d& n, double Fdt) {
+  return -n * Fdt;
+}
+
+inline PointMass apply_impulse(const PointMass& body, const Eigen::Vector2d& n, double Fdt) {
+  return {body.mass, body.p + impulse_vector(n, Fdt)};
+}
+
+inline Collision collide(const PointMass& bumper, Elasticity bumper_elasticity,
+                         const PointMass& wedge, Elasticity wedge_elasticity,
+                         const Eigen::Vector2d& n) {
+  if (!(detail::acceptable(bumper) & detail::acceptable(wedge) & is_unit_normal(n))) [[unlikely]] {
+    detail::refuse_collision(bumper, wedge, n);  // the checks one by one, with messages
+  }
+  // Validated once above; the ⊕ of the two shares, then Fdt = B / A.
+  const ScalarSolution solution = solve(detail::share(bumper, n, bumper_elasticity) +
+                                        detail::share(wedge, -n, wedge_elasticity));
+  return {solution, apply_impulse(bumper, n, solution.Fdt), apply_impulse(wedge, -n, solution.Fdt)};
+}
 
 }  // namespace impulse::material_2d

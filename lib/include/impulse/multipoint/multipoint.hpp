@@ -102,6 +102,17 @@ void validate(std::span<const Body> bodies, std::span<const Contact> contacts);
                                      std::span<const Elasticity> elasticities,
                                      std::span<const Contact> contacts);
 
+/// @brief The same ⊕, with the storage of A chosen by the caller (e.g. to compare the dense and
+/// sparse methods on one scene).
+/// @param bodies the bodies (validated with the contacts)
+/// @param elasticities one per body (a size mismatch throws InvalidInput)
+/// @param contacts the contacts
+/// @param storage dense, sparse, or automatic (sparse above sparse_threshold contacts)
+/// @return the assembled system
+[[nodiscard]] ContactSystem assemble(std::span<const Body> bodies,
+                                     std::span<const Elasticity> elasticities,
+                                     std::span<const Contact> contacts, Storage storage);
+
 /// @brief The velocity of @p body's material point at @p point (zero for a static body).
 /// @param body any body
 /// @param point world position

@@ -3,7 +3,10 @@
 /// @brief Section 1: material bodies on a line, one contact.
 #pragma once
 
+#include <cmath>
+
 #include "impulse/core/elasticity.hpp"
+#include "impulse/core/error.hpp"
 #include "impulse/core/solve.hpp"
 #include "impulse/core/system.hpp"
 
@@ -30,23 +33,23 @@ struct Body {
 /// @brief Throws InvalidInput unless the mass is positive and finite and the momentum finite.
 /// @param body the body to check
 /// @param name how the message names it ("body", "bumper")
-void validate(const Body& body, const char* name = "body");
+inline void validate(const Body& body, const char* name = "body");
 
 /// @brief v = p / m.
 /// @param body the body
 /// @return its velocity along the axis
-[[nodiscard]] double velocity(const Body& body);
+[[nodiscard]] inline double velocity(const Body& body);
 
 /// @brief @f$ E_k = p^2 / 2m @f$.
 /// @param body the body
 /// @return its kinetic energy
-[[nodiscard]] double kinetic_energy(const Body& body);
+[[nodiscard]] inline double kinetic_energy(const Body& body);
 
 /// @brief The body's velocity cast on its outward direction: @f$ s\,p/m @f$.
 /// @param body the body
 /// @param outward its outward direction at the contact, +1 or -1
 /// @return positive when the body moves towards the other one
-[[nodiscard]] double normal_velocity(const Body& body, double outward);
+[[nodiscard]] inline double normal_velocity(const Body& body, double outward);
 
 /// @brief The body's share of (1.3): @f$ a = 1/m @f$, @f$ b = e\,(s\,p)/m @f$.
 ///
@@ -57,15 +60,15 @@ void validate(const Body& body, const char* name = "body");
 /// @param outward its outward direction at the contact, +1 or -1
 /// @param elasticity the body's own elasticity (the paper's elasticity_1 or elasticity_2)
 /// @return (a, b)
-[[nodiscard]] ScalarContribution contribution(const Body& body, double outward,
-                                              Elasticity elasticity);
+[[nodiscard]] inline ScalarContribution contribution(const Body& body, double outward,
+                                                     Elasticity elasticity);
 
 /// @brief The body after the impulse: @f$ p' = p - s\,F\,dt @f$ (section 1, first display).
 /// @param body the body before
 /// @param outward its outward direction at the contact, +1 or -1
 /// @param Fdt the impulse magnitude
 /// @return the body after
-[[nodiscard]] Body apply_impulse(const Body& body, double outward, double Fdt);
+[[nodiscard]] inline Body apply_impulse(const Body& body, double outward, double Fdt);
 
 /// @brief A two-body collision on a line, solved.
 struct Collision {
@@ -81,7 +84,72 @@ struct Collision {
 /// @param second_elasticity its elasticity
 /// @param normal +1 when @p first is on the left of @p second, -1 otherwise
 /// @return the impulse and both bodies after
-[[nodiscard]] Collision collide(const Body& first, Elasticity first_elasticity, const Body& second,
-                                Elasticity second_elasticity, double normal = 1.0);
+[[nodiscard]] inline Collision collide(const Body& first, Elasticity first_elasticity,
+                                       const Body& second, Elasticity second_elasticity,
+                                       double normal = 1.0);
+
+// The single-contact path is defined here, inline, so that the caller's compiler sees the whole
+// formula: bench/single_contact.cpp measures it against the same impulse written by hand.
+
+namespace detail {
+// The test behind validate(), the same as its checks one by one, in one branch for the caller.
+inline bool acceptable(const Body& body) {
+  return is_positive(body.mass) & all_finite(body.momentum);
+}
+// Throws InvalidInput naming the first bad field of a body that failed the test.
+[[noreturn]] void refuse(const Body& body, const char* name);
+// Runs the checks of collide() one by one and throws the first failing one's message.
+[[noreturn]] void refuse_collision(const Body& first, const Body& second, double normal);
+}  // namespace detail
+
+inline void validate(const Body& body, const char* name) {
+  if (!detail::acceptable(body)) [[unlikely]] {
+    detail::refuse(body, name);  // builds the message only now
+  }
+}
+
+inline double velocity(const Body& body) {
+  return body.momentum / body.mass;
+}
+
+inline double kinetic_energy(const Body& body) {
+  return body.momentum * body.momentum / (2.0 * body.mass);
+}
+
+inline double normal_velocity(const Body& body, double outward) {
+  return outward * body.momentum / body.mass;
+}
+
+namespace detail {
+// (1.3) for a body already validated: a = 1/m, b = elasticity * p / m, with p cast on the
+// body's outward direction.
+inline ScalarContribution share(const Body& body, double outward, Elasticity elasticity) {
+  return {1.0 / body.mass, elasticity.value() * normal_velocity(body, outward)};
+}
+}  // namespace detail
+
+inline ScalarContribution contribution(const Body& body, double outward, Elasticity elasticity) {
+  validate(body);
+  require_unit_direction("outward direction", outward);
+  return detail::share(body, outward, elasticity);  // (1.3)
+}
+
+inline Body apply_impulse(const Body& body, double outward, double Fdt) {
+  // Section 1: p1' = p1 - Fdt, p2' = p2 + Fdt; the sign is the body's outward direction.
+  return {body.mass, body.momentum - outward * Fdt};
+}
+
+inline Collision collide(const Body& first, Elasticity first_elasticity, const Body& second,
+                         Elasticity second_elasticity, double normal) {
+  if (!(detail::acceptable(first) & detail::acceptable(second) &
+        ((normal == 1.0) | (normal == -1.0)))) [[unlikely]] {
+    detail::refuse_collision(first, second, normal);  // the checks one by one, with messages
+  }
+  // Validated once above; the ⊕ of the two shares of (1.3), then Fdt = B / A.
+  const ScalarSolution solution = solve(detail::share(first, normal, first_elasticity) +
+                                        detail::share(second, -normal, second_elasticity));
+  return {solution, apply_impulse(first, normal, solution.Fdt),
+          apply_impulse(second, -normal, solution.Fdt)};
+}
 
 }  // namespace impulse::one_d

@@ -4,8 +4,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 
 #include "impulse/core/elasticity.hpp"
+#include "impulse/core/error.hpp"
+#include "impulse/core/plane.hpp"
 #include "impulse/core/solve.hpp"
 #include "impulse/core/system.hpp"
 
@@ -28,42 +31,43 @@ struct RigidBody {
 /// @brief Throws InvalidInput unless mass and inertia are positive and finite and the rest finite.
 /// @param body the body to check
 /// @param name how the message names it
-void validate(const RigidBody& body, const char* name = "body");
+inline void validate(const RigidBody& body, const char* name = "body");
 
 /// @brief @f$ \vec{v} = \vec{p}/m @f$, the velocity of the origin.
 /// @param body the body
 /// @return its translational velocity
-[[nodiscard]] Eigen::Vector2d velocity(const RigidBody& body);
+[[nodiscard]] inline Eigen::Vector2d velocity(const RigidBody& body);
 
 /// @brief @f$ \omega = L/I @f$.
 /// @param body the body
 /// @return its angular velocity
-[[nodiscard]] double angular_velocity(const RigidBody& body);
+[[nodiscard]] inline double angular_velocity(const RigidBody& body);
 
 /// @brief (3.1): @f$ E_k = E_r + E_t = L^2/2I + \|\vec{p}\|^2/2m @f$.
 /// @param body the body
 /// @return its kinetic energy
-[[nodiscard]] double kinetic_energy(const RigidBody& body);
+[[nodiscard]] inline double kinetic_energy(const RigidBody& body);
 
 /// @brief Angular momentum about the world origin: @f$ L + \det(\text{position}, \vec{p}) @f$.
 /// @param body the body
 /// @return spin plus orbital angular momentum
-[[nodiscard]] double angular_momentum_about_origin(const RigidBody& body);
+[[nodiscard]] inline double angular_momentum_about_origin(const RigidBody& body);
 
 /// @brief The velocity of the body's material point at @p point (section 3.2):
 /// @f$ \vec{v_v} = \frac{L}{I}[-r_y, r_x] + \frac{\vec{p}}{m} @f$.
 /// @param body the body
 /// @param point the point in world coordinates
 /// @return the point's velocity
-[[nodiscard]] Eigen::Vector2d point_velocity(const RigidBody& body, const Eigen::Vector2d& point);
+[[nodiscard]] inline Eigen::Vector2d point_velocity(const RigidBody& body,
+                                                    const Eigen::Vector2d& point);
 
 /// @brief The point velocity cast on the body's outward normal, positive towards the other body.
 /// @param body the body
 /// @param point the contact point in world coordinates
 /// @param n the body's outward unit normal there
 /// @return @f$ \frac{L\det(\vec{r},\vec{n})}{I} + \frac{\vec{p}\cdot\vec{n}}{m} @f$
-[[nodiscard]] double normal_velocity(const RigidBody& body, const Eigen::Vector2d& point,
-                                     const Eigen::Vector2d& n);
+[[nodiscard]] inline double normal_velocity(const RigidBody& body, const Eigen::Vector2d& point,
+                                            const Eigen::Vector2d& n);
 
 /// @brief The body's share at one contact, (3.6) and (3.10) joined by the elasticity:
 /// @f$ a = \frac{\det(\vec{r},\vec{n})^2}{I} + \frac{\|\vec{n}\|^2}{m} @f$,
@@ -73,8 +77,10 @@ void validate(const RigidBody& body, const char* name = "body");
 /// @param n the body's own outward unit normal (validated)
 /// @param elasticity its elasticity (1 gives (3.10), 2 gives (3.6))
 /// @return (a, b)
-[[nodiscard]] ScalarContribution contribution(const RigidBody& body, const Eigen::Vector2d& point,
-                                              const Eigen::Vector2d& n, Elasticity elasticity);
+[[nodiscard]] inline ScalarContribution contribution(const RigidBody& body,
+                                                     const Eigen::Vector2d& point,
+                                                     const Eigen::Vector2d& n,
+                                                     Elasticity elasticity);
 
 /// @brief The body after the impulse @f$ -\vec{n}\,F\,dt @f$ at @p point ((3.2), (3.3)):
 /// @f$ \vec{p}' = \vec{p} - \vec{n}\,F\,dt @f$,
@@ -84,8 +90,8 @@ void validate(const RigidBody& body, const char* name = "body");
 /// @param n the body's outward unit normal there
 /// @param Fdt the impulse magnitude
 /// @return the body after
-[[nodiscard]] RigidBody apply_impulse(const RigidBody& body, const Eigen::Vector2d& point,
-                                      const Eigen::Vector2d& n, double Fdt);
+[[nodiscard]] inline RigidBody apply_impulse(const RigidBody& body, const Eigen::Vector2d& point,
+                                             const Eigen::Vector2d& n, double Fdt);
 
 /// @brief Two rigid bodies colliding at one point, solved.
 struct Collision {
@@ -102,8 +108,112 @@ struct Collision {
 /// @param point the contact point in world coordinates
 /// @param n unit normal, outward from the bumper
 /// @return the impulse and both bodies after
-[[nodiscard]] Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
-                                const RigidBody& wedge, Elasticity wedge_elasticity,
-                                const Eigen::Vector2d& point, const Eigen::Vector2d& n);
+[[nodiscard]] inline Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
+                                       const RigidBody& wedge, Elasticity wedge_elasticity,
+                                       const Eigen::Vector2d& point, const Eigen::Vector2d& n);
+
+// The single-contact path is defined here, inline, so that the caller's compiler sees the whole
+// formula: bench/single_contact.cpp measures it against the same impulse written by hand.
+
+namespace detail {
+// The test behind validate(), the same as its checks one by one, in one branch for the caller:
+// x - x is 0 for a finite x and NaN otherwise; pairs of numbers are packed by the compiler.
+inline bool acceptable(const RigidBody& body) {
+  const Eigen::Array2d masses(body.mass, body.inertia);
+  const Eigen::Array2d probe =
+      (masses - masses) + (body.position - body.position).array() + (body.p - body.p).array();
+  return (masses.x() > 0.0) & (masses.y() > 0.0) & all_finite(probe.x(), probe.y(), body.L);
+}
+// Throws InvalidInput naming the first bad field of a body that failed the test.
+[[noreturn]] void refuse(const RigidBody& body, const char* name);
+// Runs the checks of collide() one by one and throws the first failing one's message.
+[[noreturn]] void refuse_collision(const RigidBody& bumper, const RigidBody& wedge,
+                                   const Eigen::Vector2d& point, const Eigen::Vector2d& n);
+}  // namespace detail
+
+inline void validate(const RigidBody& body, const char* name) {
+  if (!detail::acceptable(body)) [[unlikely]] {
+    detail::refuse(body, name);  // builds the message only now
+  }
+}
+
+inline Eigen::Vector2d velocity(const RigidBody& body) {
+  return body.p / body.mass;
+}
+
+inline double angular_velocity(const RigidBody& body) {
+  return body.L / body.inertia;
+}
+
+inline double kinetic_energy(const RigidBody& body) {
+  // (3.1): E_k = E_r + E_t
+  return body.L * body.L / (2.0 * body.inertia) + body.p.squaredNorm() / (2.0 * body.mass);
+}
+
+inline double angular_momentum_about_origin(const RigidBody& body) {
+  return body.L + det(body.position, body.p);
+}
+
+inline Eigen::Vector2d point_velocity(const RigidBody& body, const Eigen::Vector2d& point) {
+  const Eigen::Vector2d r = point - body.position;
+  return angular_velocity(body) * quarter_turn(r) + velocity(body);  // section 3.2
+}
+
+inline double normal_velocity(const RigidBody& body, const Eigen::Vector2d& point,
+                              const Eigen::Vector2d& n) {
+  return point_velocity(body, point).dot(n);  // (3.8) before the impulse
+}
+
+namespace detail {
+// (3.6) at elasticity 2, (3.10) at elasticity 1, for a body, point and normal already validated.
+inline ScalarContribution share(const RigidBody& body, const Eigen::Vector2d& point,
+                                const Eigen::Vector2d& n, Elasticity elasticity) {
+  const double arm = det(point - body.position, n);  // det(r, n)
+  return {arm * arm / body.inertia + n.squaredNorm() / body.mass,
+          elasticity.value() * (body.L * arm / body.inertia + body.p.dot(n) / body.mass)};
+}
+}  // namespace detail
+
+inline ScalarContribution contribution(const RigidBody& body, const Eigen::Vector2d& point,
+                                       const Eigen::Vector2d& n, Elasticity elasticity) {
+  validate(body);
+  require_finite("point", point);
+  require_unit_normal("normal", n);
+  return detail::share(body, point, n, elasticity);
+}
+
+inline RigidBody apply_impulse(const RigidBody& body, const Eigen::Vector2d& point,
+                               const Eigen::Vector2d& n, double Fdt) {
+  const Eigen::Vector2d impulse = -n * Fdt;  // (3.3)
+  RigidBody after = body;
+  after.p += impulse;                              // (3.2), translation
+  after.L += det(point - body.position, impulse);  // (3.2), rotation
+  return after;
+}
+
+inline Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
+                         const RigidBody& wedge, Elasticity wedge_elasticity,
+                         const Eigen::Vector2d& point, const Eigen::Vector2d& n) {
+  // All the checks in one branch, as in detail::acceptable; only when it fails do they run one
+  // by one, out of line, to throw the first failing one's message.
+  const Eigen::Array2d bumper_masses(bumper.mass, bumper.inertia);
+  const Eigen::Array2d wedge_masses(wedge.mass, wedge.inertia);
+  const Eigen::Array2d spins(bumper.L, wedge.L);
+  const Eigen::Array2d probe =
+      (bumper_masses - bumper_masses) + (wedge_masses - wedge_masses) + (spins - spins) +
+      ((bumper.position - bumper.position) + (bumper.p - bumper.p) +
+       (wedge.position - wedge.position) + (wedge.p - wedge.p) + (point - point))
+          .array();
+  const Eigen::Array2d smallest = bumper_masses.min(wedge_masses);
+  if (!((smallest.x() > 0.0) & (smallest.y() > 0.0) & (probe.x() + probe.y() == 0.0) &
+        is_unit_normal(n))) [[unlikely]] {
+    detail::refuse_collision(bumper, wedge, point, n);
+  }
+  // Section 3.4: Fdt (A1 + A2) = B1 + B2, the wedge with its own normal -n.
+  const ScalarSolution solution = solve(detail::share(bumper, point, n, bumper_elasticity) +
+                                        detail::share(wedge, point, -n, wedge_elasticity));
+  return {solution, apply_impulse(bumper, point, n, solution.Fdt),
+          apply_impulse(wedge, point, -n, solution.Fdt)};
+}
 
 }  // namespace impulse::rigid_2d

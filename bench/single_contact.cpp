@@ -1,0 +1,227 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Goal 1 of issue 7: the A·Fdt = B form costs nothing for a single contact.
+//
+// Each case is measured twice in one run: `<case>/library` goes through the library's public
+// path (validation, each body's contribution, their sum, the solve Fdt = B / A, each body's
+// update: `collide`), `<case>/inlined` writes the same impulse and the same bodies after as one
+// formula, the way an engine would hand-code it, without the checks. Both read their inputs
+// from the same pre-generated array of configurations, cycling through it, and both hand the
+// same outcome, the impulse and the two bodies after (the library's own types), to
+// benchmark::DoNotOptimize, so that neither can be folded away or hoisted out of the loop.
+// The library's diagnostics (A, B, residual, flags) are not part of the outcome: a caller who
+// does not read them does not pay for them, since the path is inline.
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <random>
+
+#include "impulse/material_2d/material_2d.hpp"
+#include "impulse/one_d/one_d.hpp"
+#include "impulse/rigid_2d/rigid_2d.hpp"
+
+namespace {
+
+using Eigen::Vector2d;
+using impulse::Elasticity;
+
+// A power of two, so that the index wraps with a mask; large enough that the branch predictor
+// cannot learn the inputs, small enough (a few tens of KiB) to stay in the L1/L2 caches.
+constexpr std::size_t configurations = 1024;
+constexpr std::size_t mask = configurations - 1;
+
+// One collision, its bodies stored in each section's own type, so that neither side of a pair
+// converts anything in the timed loop.
+struct Configuration {
+  impulse::rigid_2d::RigidBody bumper;
+  impulse::rigid_2d::RigidBody wedge;
+  impulse::material_2d::PointMass bumper_point;  // the rigid bodies' masses and momenta
+  impulse::material_2d::PointMass wedge_point;
+  impulse::one_d::Body first;  // masses and the x components of the momenta
+  impulse::one_d::Body second;
+  Elasticity bumper_elasticity;
+  Elasticity wedge_elasticity;
+  Vector2d point;
+  Vector2d n;
+};
+
+// Masses and inertias over three orders of magnitude, random normals, points and velocities.
+const std::array<Configuration, configurations>& table() {
+  static const auto configs = [] {
+    std::array<Configuration, configurations> result{};
+    std::mt19937_64 engine(20240607);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto log_uniform = [&](double low, double high) {
+      return std::exp(std::log(low) + (unit(engine) + 1.0) / 2.0 * (std::log(high / low)));
+    };
+    for (Configuration& c : result) {
+      const double angle = std::numbers::pi * unit(engine);
+      c.n = {std::cos(angle), std::sin(angle)};
+      c.point = {unit(engine), unit(engine)};
+      for (auto* body : {&c.bumper, &c.wedge}) {
+        body->mass = log_uniform(0.1, 100.0);
+        body->inertia = log_uniform(0.1, 100.0);
+        body->position = {unit(engine), unit(engine)};
+        body->p = body->mass * Vector2d(10 * unit(engine), 10 * unit(engine));
+        body->L = body->inertia * 10 * unit(engine);
+      }
+      c.bumper_point = {c.bumper.mass, c.bumper.p};
+      c.wedge_point = {c.wedge.mass, c.wedge.p};
+      c.first = {c.bumper.mass, c.bumper.p.x()};
+      c.second = {c.wedge.mass, c.wedge.p.x()};
+      c.bumper_elasticity = Elasticity(1.0 + (unit(engine) + 1.0) / 2.0);
+      c.wedge_elasticity = Elasticity(1.0 + (unit(engine) + 1.0) / 2.0);
+    }
+    return result;
+  }();
+  return configs;
+}
+
+struct OneDOutcome {
+  double Fdt;
+  impulse::one_d::Body first, second;
+};
+
+// §1: two bodies on a line, the first on the left (its outward direction +1).
+void one_d_library(benchmark::State& state) {
+  const auto& configs = table();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Configuration& c = configs[i++ & mask];
+    const auto result =
+        impulse::one_d::collide(c.first, c.bumper_elasticity, c.second, c.wedge_elasticity);
+    OneDOutcome outcome{result.solution.Fdt, result.first, result.second};
+    benchmark::DoNotOptimize(outcome);
+  }
+}
+
+void one_d_inlined(benchmark::State& state) {
+  const auto& configs = table();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Configuration& c = configs[i++ & mask];
+    const double m1 = c.first.mass;
+    const double m2 = c.second.mass;
+    const double p1 = c.first.momentum;
+    const double p2 = c.second.momentum;
+    // (1.3) by hand: Fdt (1/m1 + 1/m2) = e1 p1/m1 - e2 p2/m2 (the second body's outward is -1).
+    const double Fdt =
+        (c.bumper_elasticity.value() * p1 / m1 - c.wedge_elasticity.value() * p2 / m2) /
+        (1.0 / m1 + 1.0 / m2);
+    OneDOutcome outcome{Fdt, {m1, p1 - Fdt}, {m2, p2 + Fdt}};
+    benchmark::DoNotOptimize(outcome);
+  }
+}
+
+struct MaterialOutcome {
+  double Fdt;
+  impulse::material_2d::PointMass bumper, wedge;
+};
+
+// §2: two point masses in the plane.
+void material_library(benchmark::State& state) {
+  const auto& configs = table();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Configuration& c = configs[i++ & mask];
+    const auto result = impulse::material_2d::collide(c.bumper_point, c.bumper_elasticity,
+                                                      c.wedge_point, c.wedge_elasticity, c.n);
+    MaterialOutcome outcome{result.solution.Fdt, result.bumper, result.wedge};
+    benchmark::DoNotOptimize(outcome);
+  }
+}
+
+void material_inlined(benchmark::State& state) {
+  const auto& configs = table();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Configuration& c = configs[i++ & mask];
+    const double m1 = c.bumper_point.mass;
+    const double m2 = c.wedge_point.mass;
+    const Vector2d& n = c.n;
+    // The cast onto the normal, then (1.3): each body's normal velocity towards the other.
+    const double u1 = c.bumper_point.p.dot(n) / m1;
+    const double u2 = -c.wedge_point.p.dot(n) / m2;
+    const double Fdt = (c.bumper_elasticity.value() * u1 + c.wedge_elasticity.value() * u2) /
+                       (1.0 / m1 + 1.0 / m2);
+    MaterialOutcome outcome{Fdt, {m1, c.bumper_point.p - n * Fdt}, {m2, c.wedge_point.p + n * Fdt}};
+    benchmark::DoNotOptimize(outcome);
+  }
+}
+
+struct RigidOutcome {
+  double Fdt;
+  impulse::rigid_2d::RigidBody bumper, wedge;
+};
+
+// §3: two rigid bodies, one contact point.
+void rigid_library(benchmark::State& state) {
+  const auto& configs = table();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Configuration& c = configs[i++ & mask];
+    const auto result = impulse::rigid_2d::collide(c.bumper, c.bumper_elasticity, c.wedge,
+                                                   c.wedge_elasticity, c.point, c.n);
+    RigidOutcome outcome{result.solution.Fdt, result.bumper, result.wedge};
+    benchmark::DoNotOptimize(outcome);
+  }
+}
+
+void rigid_inlined(benchmark::State& state) {
+  const auto& configs = table();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Configuration& c = configs[i++ & mask];
+    const auto& b1 = c.bumper;
+    const auto& b2 = c.wedge;
+    const Vector2d& n = c.n;
+    const Vector2d r1 = c.point - b1.position;
+    const Vector2d r2 = c.point - b2.position;
+    const double arm1 = r1.x() * n.y() - r1.y() * n.x();     // det(r1, n)
+    const double arm2 = -(r2.x() * n.y() - r2.y() * n.x());  // det(r2, -n)
+    // Each point's normal velocity towards the other body, then
+    // j = (e1 u1 + e2 u2) / (1/m1 + 1/m2 + (r1 x n)^2/I1 + (r2 x n)^2/I2).
+    const double u1 = b1.L * arm1 / b1.inertia + b1.p.dot(n) / b1.mass;
+    const double u2 = b2.L * arm2 / b2.inertia - b2.p.dot(n) / b2.mass;
+    const double Fdt =
+        (c.bumper_elasticity.value() * u1 + c.wedge_elasticity.value() * u2) /
+        (1.0 / b1.mass + 1.0 / b2.mass + arm1 * arm1 / b1.inertia + arm2 * arm2 / b2.inertia);
+    // The bodies after: p' = p -+ n j, L' = L - det(r, n_own) j.
+    RigidOutcome outcome{Fdt,
+                         {b1.mass, b1.inertia, b1.position, b1.p - n * Fdt, b1.L - arm1 * Fdt},
+                         {b2.mass, b2.inertia, b2.position, b2.p + n * Fdt, b2.L - arm2 * Fdt}};
+    benchmark::DoNotOptimize(outcome);
+  }
+}
+
+// Not a pair: the library's path without its input checks (detail:: functions, not the public
+// API), to show in the table how much of the difference to the inlined formula the checks are.
+void rigid_unchecked(benchmark::State& state) {
+  namespace r2 = impulse::rigid_2d;
+  const auto& configs = table();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Configuration& c = configs[i++ & mask];
+    const auto solution =
+        impulse::solve(r2::detail::share(c.bumper, c.point, c.n, c.bumper_elasticity) +
+                       r2::detail::share(c.wedge, c.point, -c.n, c.wedge_elasticity));
+    RigidOutcome outcome{solution.Fdt, r2::apply_impulse(c.bumper, c.point, c.n, solution.Fdt),
+                         r2::apply_impulse(c.wedge, c.point, -c.n, solution.Fdt)};
+    benchmark::DoNotOptimize(outcome);
+  }
+}
+
+}  // namespace
+
+// Registered in pairs, library first, so that the table reads one case at a time.
+BENCHMARK(one_d_library)->Name("one_d_single_contact/library");
+BENCHMARK(one_d_inlined)->Name("one_d_single_contact/inlined");
+BENCHMARK(material_library)->Name("material_single_contact/library");
+BENCHMARK(material_inlined)->Name("material_single_contact/inlined");
+BENCHMARK(rigid_library)->Name("rigid_single_contact/library");
+BENCHMARK(rigid_inlined)->Name("rigid_single_contact/inlined");
+BENCHMARK(rigid_unchecked)->Name("rigid_single_contact_breakdown/unchecked");
+
+BENCHMARK_MAIN();
