@@ -184,9 +184,10 @@ void print(const char* what, const Velocities& v) {
 
 // One row per ball: its velocity after, by each method.
 void cradle(const std::filesystem::path& out, std::size_t balls) {
-  const impulse::Elasticity elastic = impulse::Elasticity::elastic();
-  const Velocities at_once = simultaneous(balls, elastic);
-  const Serial one_by_one = serial(balls, elastic);
+  // The impulse methods' elasticity (the springs have none: they give back all they store).
+  const impulse::Elasticity elasticity = impulse::Elasticity::elastic();
+  const Velocities at_once = simultaneous(balls, elasticity);
+  const Serial one_by_one = serial(balls, elasticity);
   // Touching balls: the answer does not depend on the stiffness (see the worksheet), so k = 1.
   const Velocities linear_touching = continuous(balls, uniform(balls, 1.0, linear, 0.0));
   const Velocities hertz_touching = continuous(balls, uniform(balls, 1.0, hertz, 0.0));
@@ -200,7 +201,8 @@ void cradle(const std::filesystem::path& out, std::size_t balls) {
     csv.row({static_cast<double>(i + 1), before[i], at_once[i], one_by_one.v[i], linear_touching[i],
              hertz_touching[i], linear_gapped[i]});
   }
-  std::printf("%zu balls, velocities after (elasticity 2):\n", balls);
+  std::printf("%zu balls, velocities after (impulse methods at elasticity %g):\n", balls,
+              elasticity.value());
   print("simultaneous (multipoint::resolve)", at_once);
   print(("serial (" + std::to_string(one_by_one.collisions) + " collisions)").c_str(),
         one_by_one.v);
