@@ -13,3 +13,14 @@
 #include "impulse/one_d/one_d.hpp"
 #include "impulse/rigid_2d/rigid_2d.hpp"
 #include "impulse/scene/scene.hpp"
+
+/// @brief The ImpulseLab library: the collision impulses of the paper *Collision handling*, in the
+/// form A·Fdt = B.
+///
+/// This namespace holds what every section shares: the elasticity (impulse::Elasticity), the
+/// system and its ⊕ (impulse::ContactSystem), and its solution (impulse::solve). The bodies of
+/// each paper section live in a namespace of their own: impulse::one_d (section 1),
+/// impulse::material_2d (section 2), impulse::rigid_2d (section 3), impulse::multipoint
+/// (sections 4 and 5); impulse::scene turns a scene file's bodies and contacts into a solved
+/// collision.
+namespace impulse {}
