@@ -146,9 +146,6 @@ struct ScalarSolution {
   bool consistent = true;                     ///< false when A = 0 but B ≠ 0
 };
 
-/// @brief Solves the one-contact system. A = 0 gives Fdt = 0, the minimum-norm choice.
-/// @param system the summed contributions (A, B)
-/// @return the impulse magnitude and its diagnostics
 namespace detail {
 // The common case of the single-contact solve in one branch: A and B finite, A not zero.
 inline bool all_finite_and_nonzero(ScalarContribution system) {
@@ -156,6 +153,9 @@ inline bool all_finite_and_nonzero(ScalarContribution system) {
 }
 }  // namespace detail
 
+/// @brief Solves the one-contact system. A = 0 gives Fdt = 0, the minimum-norm choice.
+/// @param system the summed contributions (A, B)
+/// @return the impulse magnitude and its diagnostics
 [[nodiscard]] inline ScalarSolution solve(ScalarContribution system) {
   // Inline: the single-contact path costs no call (see bench/single_contact.cpp).
   ScalarSolution solution;

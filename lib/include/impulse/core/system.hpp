@@ -37,7 +37,7 @@ struct ScalarContribution {
 ///
 /// A body's block is a Gram matrix: @f$ a = G^T G @f$ and @f$ b = G^T w @f$, where column v of
 /// @f$ G @f$ is the body's generalised normal at contact v scaled by @f$ M^{-1/2} @f$ (one row per
-/// degree of freedom) and @f$ w = e\,M^{1/2}\,	ext{velocity} @f$. When a block carries `G` and
+/// degree of freedom) and @f$ w = e\,M^{1/2}\,\text{velocity} @f$. When a block carries `G` and
 /// `w`, the solver can factor the stacked @f$ G @f$ instead of @f$ A @f$, which halves the digits
 /// that an ill-conditioned system loses (see impulse::solve). Hand-made blocks may leave them
 /// empty.
