@@ -383,7 +383,6 @@ RodRun rod_on_ground(double k, double damping, double theta, double elasticity) 
     dy[6] = f;
   };
   const std::vector<double> y0{0, 0, theta, 0, -1, 0.3, 0};
-  const double scale = 1 / std::sqrt(k);
   const auto ended = [&](double t, const double* y) {
     if (t <= 0)
       return 1.0;
@@ -393,7 +392,9 @@ RodRun rod_on_ground(double k, double damping, double theta, double elasticity) 
     }
     return ground - (y[1] + arm.y());  // the end is out of the ground again
   };
-  const double time_scale = k > 0 ? scale : 1 / damping;
+  // The spring's period, or the damper's time (1/sqrt(k) is not computed for a damper alone:
+  // it would be 1/0, an infinity born for nothing).
+  const double time_scale = k > 0 ? 1 / std::sqrt(k) : 1 / damping;
   const auto end =
       num::integrate_until(rhs, y0, ended, time_scale / 50, 1e4 * time_scale, 1e-12 * time_scale);
   // The closed form from (3.6)/(3.10): the rod's outward normal at its end is (0, -1), the

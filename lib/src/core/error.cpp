@@ -44,7 +44,7 @@ void refuse_finite(std::string_view what, const Eigen::Vector2d& value) {
 }
 
 void refuse_unit_normal(std::string_view what, const Eigen::Vector2d& normal) {
-  if (!normal.allFinite()) {
+  if (!all_finite_in(normal)) {
     refuse(what, "a finite unit vector", format_vector(normal));
   }
   refuse(what, "a unit vector (length 1 within " + format_number(unit_normal_tolerance) + ")",

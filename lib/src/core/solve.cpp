@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "impulse/core/error.hpp"
+
 namespace impulse {
 
 std::string_view to_string(DependentPolicy policy) {
@@ -80,8 +82,12 @@ Factored factor_and_solve(const MatrixXd& M, const VectorXd& rhs, double thresho
   return result;
 }
 
+// Norms that do not overflow while their result is a double: entries of A near 1e300 (an
+// inertia near 1e-300) would make the plain sum of squares infinite, and an infinite tolerance
+// would call any residual consistent.
 bool within_tolerance(const MatrixXd& A, const VectorXd& B, const VectorXd& x, double tolerance) {
-  return (A * x - B).norm() <= tolerance * (A.norm() * x.norm() + B.norm());
+  const VectorXd r = A * x - B;
+  return r.stableNorm() <= tolerance * (A.stableNorm() * x.stableNorm() + B.stableNorm());
 }
 
 bool is_consistent(const MatrixXd& A, const VectorXd& B, const SolverOptions& options) {
@@ -307,9 +313,9 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
   SparseMatrix G;
   VectorXd w;
   system.factor(G, w);
-  const bool finite = Eigen::Map<const VectorXd>(A.valuePtr(), A.nonZeros()).allFinite() &&
-                      Eigen::Map<const VectorXd>(G.valuePtr(), G.nonZeros()).allFinite() &&
-                      B.allFinite() && w.allFinite();
+  const bool finite = all_finite_in(Eigen::Map<const VectorXd>(A.valuePtr(), A.nonZeros())) &&
+                      all_finite_in(Eigen::Map<const VectorXd>(G.valuePtr(), G.nonZeros())) &&
+                      all_finite_in(B) && all_finite_in(w);
   if (!finite) {
     mark_non_finite(solution);
     return true;
@@ -325,7 +331,7 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
     solution.dependent = true;
     solution.condition_estimate = std::numeric_limits<double>::infinity();
     solution.consistent = B.isZero(0.0);
-    solution.residual = B.norm();
+    solution.residual = B.stableNorm();
     return true;
   }
 
@@ -348,7 +354,20 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
   }
   solution.rank = retained;
   solution.dependent = retained < n;
-  solution.condition_estimate = largest / smallest;
+  // The pivots of A + lambda I cannot see eigenvalues below about 1e3 lambda (1e-7 of the largest
+  // diagonal entry): those count as null space. The ratio of A's largest to its smallest
+  // diagonal entry is a lower bound of the condition number of a regular A (its extreme
+  // eigenvalues enclose the diagonal), and it sees contacts of very different scales (masses
+  // 1e-9 and 1e9) that the pivots take for a dependency. The estimate is the larger of the two.
+  const VectorXd diagonal = A.diagonal();
+  double smallest_diagonal = std::numeric_limits<double>::infinity();
+  for (Index i = 0; i < diagonal.size(); ++i) {
+    if (diagonal(i) > 0.0) {
+      smallest_diagonal = std::min(smallest_diagonal, diagonal(i));
+    }
+  }
+  solution.condition_estimate =
+      std::max(largest / smallest, diagonal.maxCoeff() / smallest_diagonal);
   VectorXd x;
   const auto shifted_inverse = [&](const VectorXd& r) -> VectorXd { return shifted.ldlt.solve(r); };
   solution.iterations = conjugate_gradients(A, B, shifted_inverse, options.sparse_tolerance,
@@ -383,9 +402,11 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
   solution.Fdt = std::move(x);
   VectorXd residual = B;
   residual.noalias() -= A * solution.Fdt;
-  solution.residual = residual.norm();
-  solution.consistent = solution.residual <=
-                        options.consistency_tolerance * (A.norm() * solution.Fdt.norm() + B.norm());
+  solution.residual = residual.stableNorm();
+  const double A_norm = Eigen::Map<const VectorXd>(A.valuePtr(), A.nonZeros()).stableNorm();
+  solution.consistent =
+      solution.residual <=
+      options.consistency_tolerance * (A_norm * solution.Fdt.stableNorm() + B.stableNorm());
   return true;
 }
 
@@ -413,7 +434,7 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
   const VectorXd& B = solution.B;
   const Index n = system.size();
 
-  if (!A.allFinite() || !B.allFinite()) {
+  if (!all_finite_in(A) || !all_finite_in(B)) {
     mark_non_finite(solution);
     return solution;
   }
@@ -422,6 +443,16 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
     return solution;
   }
 
+  if (A.isZero(0.0)) {
+    // No body at any contact can move along its normal (e.g. a factor without rows): every Fdt
+    // acts the same; take the least, zero. (Eigen's QR of a matrix without rows divides 0 by 0.)
+    solution.Fdt = VectorXd::Zero(n);
+    solution.dependent = true;
+    solution.condition_estimate = std::numeric_limits<double>::infinity();
+    solution.consistent = B.isZero(0.0);
+    solution.residual = B.stableNorm();
+    return solution;
+  }
   Factored f;
   if (system.has_factor()) {
     // A = G^T G and B = G^T w: the impulses are the least-squares solution of G Fdt ~ w, and
@@ -430,7 +461,7 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
     MatrixXd G;
     VectorXd w;
     system.factor(G, w);
-    if (!G.allFinite() || !w.allFinite()) {
+    if (!all_finite_in(G) || !all_finite_in(w)) {
       mark_non_finite(solution);
       return solution;
     }
@@ -448,7 +479,7 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
   if (!solution.consistent && options.inconsistent == InconsistentPolicy::drop_equation) {
     solution.Fdt = drop_contradicting_equations(solution, options);
   }
-  solution.residual = (A * solution.Fdt - B).norm();
+  solution.residual = VectorXd(A * solution.Fdt - B).stableNorm();
   return solution;
 }
 

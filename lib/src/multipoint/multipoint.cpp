@@ -18,6 +18,9 @@ template <typename... Ts>
 struct Overloaded : Ts... {
   using Ts::operator()...;
 };
+// C++20 deduces this for an aggregate by itself; clang 14 (the fuzzing build) does not yet.
+template <typename... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
 
 std::string place(const char* array, std::size_t index) {
   return std::string(array) + "[" + std::to_string(index) + "]";
@@ -58,8 +61,10 @@ bool acceptable(const Body& body) {
 }
 
 bool acceptable(const Contact& c, std::size_t bodies) {
-  return (c.bumper < bodies) & (c.wedge < bodies) & (c.bumper != c.wedge) &
-         is_unit_normal(c.normal) & all_finite(c.point.x(), c.point.y());
+  const bool indices_ok = (c.bumper < bodies) & (c.wedge < bodies) & (c.bumper != c.wedge);
+  const bool normal_ok = is_unit_normal(c.normal);
+  const bool point_ok = all_finite(c.point.x(), c.point.y());
+  return indices_ok & normal_ok & point_ok;
 }
 }  // namespace
 

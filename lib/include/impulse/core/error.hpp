@@ -32,25 +32,46 @@ class InvalidInput : public std::invalid_argument {
 inline constexpr double unit_normal_tolerance = 1e-9;
 
 /// @brief Whether @p value is finite and strictly positive (a mass, a moment of inertia).
+///
+/// The comparisons are the quiet ones (std::isgreater, std::islessequal): a NaN fails both
+/// without raising the invalid-operation exception, which `<` and `>` raise for a NaN (GCC
+/// compiles them to the signalling `comisd` on x86-64). A caller that traps floating-point
+/// exceptions thus gets the refusal, not a SIGFPE.
 /// @param value the value to test
 /// @return true when require_positive() would accept it
 [[nodiscard]] inline bool is_positive(double value) {
-  return (value > 0.0) & (value <= std::numeric_limits<double>::max());  // NaN fails both
+  const bool above_zero = std::isgreater(value, 0.0);
+  const bool not_infinite = std::islessequal(value, std::numeric_limits<double>::max());
+  return above_zero & not_infinite;  // NaN fails both; one branch for the caller
 }
 
-/// @brief A quick test, one comparison, that all of @p values are finite.
+/// @brief A quick test, without a branch, that all of @p values are finite.
 ///
-/// Each value minus itself is zero when it is finite and NaN when it is NaN or infinite; their
-/// sum cannot overflow.
+/// std::isfinite looks at the exponent (or compares quietly): no floating-point exception is
+/// raised for a NaN or an infinity, unlike the arithmetic test `x - x == 0`, whose
+/// `inf - inf` raises the invalid-operation exception.
 /// @param values the numbers to test
 /// @return true exactly when every value is finite
 template <typename... Values>
 [[nodiscard]] inline bool all_finite(Values... values) {
-  return ((values - values) + ...) == 0.0;
+  return (static_cast<unsigned>(std::isfinite(values)) & ...) != 0U;
+}
+
+/// @brief Whether every coefficient of @p values is finite, raising no floating-point exception.
+///
+/// Eigen's `allFinite()` tests `x - x == 0`, which raises the invalid-operation exception for an
+/// infinity; this tests each coefficient with std::isfinite instead, so that a caller that traps
+/// floating-point exceptions gets the library's refusal or its non_finite status.
+/// @param values a vector, matrix or array expression
+/// @return true when no coefficient is a NaN or an infinity
+template <typename Derived>
+[[nodiscard]] inline bool all_finite_in(const Eigen::DenseBase<Derived>& values) {
+  return values.derived().array().isFinite().all();
 }
 
 /// @brief Whether @p normal is of unit length within unit_normal_tolerance, without a square
-/// root: @f$ (1 - t)^2 \le \|n\|^2 \le (1 + t)^2 @f$. NaN and infinite coordinates fail.
+/// root: @f$ (1 - t)^2 \le \|n\|^2 \le (1 + t)^2 @f$. NaN and infinite coordinates fail
+/// (without raising a floating-point exception).
 ///
 /// This is the rule require_unit_normal() applies (its message gives the length found).
 /// @param normal the vector to test
@@ -59,7 +80,10 @@ template <typename... Values>
   constexpr double low = (1.0 - unit_normal_tolerance) * (1.0 - unit_normal_tolerance);
   constexpr double high = (1.0 + unit_normal_tolerance) * (1.0 + unit_normal_tolerance);
   const double squared = normal.squaredNorm();
-  return (squared >= low) & (squared <= high);  // NaN fails both; one branch for the caller
+  // Quiet comparisons, as in is_positive(): a NaN fails both without raising an exception.
+  const bool long_enough = std::isgreaterequal(squared, low);
+  const bool short_enough = std::islessequal(squared, high);
+  return long_enough & short_enough;  // one branch for the caller
 }
 
 namespace detail {

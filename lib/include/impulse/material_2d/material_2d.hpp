@@ -107,7 +107,9 @@ struct Collision {
 namespace detail {
 // The test behind validate(), the same as its checks one by one, in one branch for the caller.
 inline bool acceptable(const PointMass& body) {
-  return is_positive(body.mass) & all_finite(body.p.x(), body.p.y());
+  const bool mass_ok = is_positive(body.mass);
+  const bool momentum_ok = all_finite(body.p.x(), body.p.y());
+  return mass_ok & momentum_ok;
 }
 // Throws InvalidInput naming the first bad field of a body that failed the test.
 [[noreturn]] void refuse(const PointMass& body, const char* name);
@@ -161,7 +163,10 @@ inline PointMass apply_impulse(const PointMass& body, const Eigen::Vector2d& n, 
 inline Collision collide(const PointMass& bumper, Elasticity bumper_elasticity,
                          const PointMass& wedge, Elasticity wedge_elasticity,
                          const Eigen::Vector2d& n) {
-  if (!(detail::acceptable(bumper) & detail::acceptable(wedge) & is_unit_normal(n))) [[unlikely]] {
+  const bool bumper_ok = detail::acceptable(bumper);
+  const bool wedge_ok = detail::acceptable(wedge);
+  const bool normal_ok = is_unit_normal(n);
+  if (!(bumper_ok & wedge_ok & normal_ok)) [[unlikely]] {
     detail::refuse_collision(bumper, wedge, n);  // the checks one by one, with messages
   }
   // Validated once above; the ⊕ of the two shares, then Fdt = B / A.

@@ -94,7 +94,9 @@ struct Collision {
 namespace detail {
 // The test behind validate(), the same as its checks one by one, in one branch for the caller.
 inline bool acceptable(const Body& body) {
-  return is_positive(body.mass) & all_finite(body.momentum);
+  const bool mass_ok = is_positive(body.mass);
+  const bool momentum_ok = all_finite(body.momentum);
+  return mass_ok & momentum_ok;
 }
 // Throws InvalidInput naming the first bad field of a body that failed the test.
 [[noreturn]] void refuse(const Body& body, const char* name);
@@ -141,8 +143,9 @@ inline Body apply_impulse(const Body& body, double outward, double Fdt) {
 
 inline Collision collide(const Body& first, Elasticity first_elasticity, const Body& second,
                          Elasticity second_elasticity, double normal) {
-  if (!(detail::acceptable(first) & detail::acceptable(second) &
-        ((normal == 1.0) | (normal == -1.0)))) [[unlikely]] {
+  const bool first_ok = detail::acceptable(first);
+  const bool second_ok = detail::acceptable(second);
+  if (!(first_ok & second_ok & ((normal == 1.0) | (normal == -1.0)))) [[unlikely]] {
     detail::refuse_collision(first, second, normal);  // the checks one by one, with messages
   }
   // Validated once above; the ⊕ of the two shares of (1.3), then Fdt = B / A.

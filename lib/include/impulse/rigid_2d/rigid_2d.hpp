@@ -116,13 +116,15 @@ struct Collision {
 // formula: bench/single_contact.cpp measures it against the same impulse written by hand.
 
 namespace detail {
-// The test behind validate(), the same as its checks one by one, in one branch for the caller:
-// x - x is 0 for a finite x and NaN otherwise; pairs of numbers are packed by the compiler.
+// The test behind validate(), the same as its checks one by one, in one branch for the caller.
+// No test raises a floating-point exception for a NaN or an infinity (see is_positive and
+// all_finite), so a caller that traps them gets the refusal.
 inline bool acceptable(const RigidBody& body) {
-  const Eigen::Array2d masses(body.mass, body.inertia);
-  const Eigen::Array2d probe =
-      (masses - masses) + (body.position - body.position).array() + (body.p - body.p).array();
-  return (masses.x() > 0.0) & (masses.y() > 0.0) & all_finite(probe.x(), probe.y(), body.L);
+  const bool mass_ok = is_positive(body.mass);
+  const bool inertia_ok = is_positive(body.inertia);
+  const bool rest_ok =
+      all_finite(body.position.x(), body.position.y(), body.p.x(), body.p.y(), body.L);
+  return mass_ok & inertia_ok & rest_ok;
 }
 // Throws InvalidInput naming the first bad field of a body that failed the test.
 [[noreturn]] void refuse(const RigidBody& body, const char* name);
@@ -196,17 +198,11 @@ inline Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
                          const Eigen::Vector2d& point, const Eigen::Vector2d& n) {
   // All the checks in one branch, as in detail::acceptable; only when it fails do they run one
   // by one, out of line, to throw the first failing one's message.
-  const Eigen::Array2d bumper_masses(bumper.mass, bumper.inertia);
-  const Eigen::Array2d wedge_masses(wedge.mass, wedge.inertia);
-  const Eigen::Array2d spins(bumper.L, wedge.L);
-  const Eigen::Array2d probe =
-      (bumper_masses - bumper_masses) + (wedge_masses - wedge_masses) + (spins - spins) +
-      ((bumper.position - bumper.position) + (bumper.p - bumper.p) +
-       (wedge.position - wedge.position) + (wedge.p - wedge.p) + (point - point))
-          .array();
-  const Eigen::Array2d smallest = bumper_masses.min(wedge_masses);
-  if (!((smallest.x() > 0.0) & (smallest.y() > 0.0) & (probe.x() + probe.y() == 0.0) &
-        is_unit_normal(n))) [[unlikely]] {
+  const bool bumper_ok = detail::acceptable(bumper);
+  const bool wedge_ok = detail::acceptable(wedge);
+  const bool point_ok = all_finite(point.x(), point.y());
+  const bool normal_ok = is_unit_normal(n);
+  if (!(bumper_ok & wedge_ok & point_ok & normal_ok)) [[unlikely]] {
     detail::refuse_collision(bumper, wedge, point, n);
   }
   // Section 3.4: Fdt (A1 + A2) = B1 + B2, the wedge with its own normal -n.
