@@ -1,5 +1,6 @@
 # Installs the build tree's ImpulseLab into WORK_DIR/prefix, then configures, builds and runs a
-# separate project that finds it with find_package(ImpulseLab CONFIG).
+# separate project that finds it with find_package(ImpulseLab CONFIG), compiled by
+# CONSUMER_COMPILER with CONSUMER_FLAGS (the sanitizers, when the library was built with them).
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(
   COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix
@@ -10,6 +11,8 @@ endif()
 execute_process(
   COMMAND ${CMAKE_COMMAND} -S ${CONSUMER_DIR} -B ${WORK_DIR}/build
     -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release
+    -DCMAKE_CXX_COMPILER=${CONSUMER_COMPILER}
+    "-DCMAKE_CXX_FLAGS=${CONSUMER_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${CONSUMER_FLAGS}"
   RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "configuring the consumer failed (${status})")
