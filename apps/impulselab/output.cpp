@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdlib>
@@ -30,11 +31,15 @@ std::string system_error(std::string_view what, const std::string& path, int err
   return message;
 }
 
+// At most one byte more than a scene may hold: parse_scene then refuses it as too large.
 std::string read_stdin() {
+  constexpr std::size_t max_bytes = impulse::scene::ReadLimits{}.max_bytes;
   std::string text;
   std::array<char, 65536> buffer{};
   std::size_t count = 0;
-  while ((count = std::fread(buffer.data(), 1, buffer.size(), stdin)) > 0) {
+  while (text.size() <= max_bytes &&
+         (count = std::fread(buffer.data(), 1, std::min(buffer.size(), max_bytes + 1 - text.size()),
+                             stdin)) > 0) {
     text.append(buffer.data(), count);
   }
   if (std::ferror(stdin) != 0) {

@@ -93,6 +93,10 @@ const std::map<std::string, std::string> expected_messages{
     // Numbers beyond doubles.
     {"momentum-overflow.json", "bodies[0].velocity: mass times velocity overflows a double"},
     {"energy-overflow.json", "the numbers overflow"},  // m 1e200 at 1e100: p^2 = 1e600
+    // Resource limits (the others are generated in limits_test.cpp): the scene's { is level 1,
+    // the 64th [ of line 3 (column 13 + 63) is level 65.
+    {"nesting-too-deep.json",
+     "line 3, column 76: arrays and objects nested more than 64 deep (a scene needs 4)"},
 };
 
 }  // namespace

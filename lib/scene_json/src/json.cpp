@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cfenv>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -106,7 +107,7 @@ struct Frame {
 
 class Tracker {
  public:
-  explicit Tracker(std::string_view source) : source_(source) {}
+  Tracker(std::string_view source, const ReadLimits& limits) : source_(source), limits_(limits) {}
 
   std::string place() const {
     std::string path;
@@ -150,10 +151,31 @@ class Tracker {
   void next_element() {
     if (!frames_.empty() && !frames_.back().object) {
       ++frames_.back().index;
+      refuse_too_many();
     }
   }
 
+  // The scene's `bodies` and `contacts` are counted as they are read: an array beyond its limit
+  // is refused at the first element too many, before the rest of it is parsed.
+  void refuse_too_many() const {
+    if (frames_.size() != 2 || !frames_[0].object) {
+      return;
+    }
+    const std::string& key = frames_[0].key;
+    const std::size_t limit = key == "bodies"     ? limits_.max_bodies
+                              : key == "contacts" ? limits_.max_contacts
+                                                  : 0;
+    if (limit == 0 || frames_[1].index <= limit) {
+      return;
+    }
+    std::string message(source_);
+    message.append(": ").append(key).append(": more than ").append(std::to_string(limit));
+    message.append(" ").append(key).append(", the most a scene may hold");
+    throw InvalidInput(message);
+  }
+
   std::string source_;
+  ReadLimits limits_;
   std::vector<Frame> frames_;
 };
 
@@ -194,9 +216,67 @@ std::string reason(const json::exception& e) {
   return text;
 }
 
-json parse_document(std::string_view text, std::string_view source) {
-  Tracker tracker(source);
+// Refuses arrays and objects nested deeper than the limit before the parser sees them: every
+// level costs the parser and the document memory. Brackets inside strings do not count; the
+// syntax itself is left to the parser.
+void refuse_deep_nesting(std::string_view text, std::string_view source, std::size_t max_depth) {
+  std::size_t depth = 0;
+  bool in_string = false;
+  bool escaped = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_depth) {
+        const auto [line, column] = line_and_column(text, i + 1);
+        std::string message(source);
+        message.append(": line ").append(std::to_string(line));
+        message.append(", column ").append(std::to_string(column));
+        message.append(": arrays and objects nested more than ").append(std::to_string(max_depth));
+        message.append(" deep (a scene needs 4)");
+        throw InvalidInput(message);
+      }
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+}
+
+// While it lives, floating-point exceptions do not trap, and the flags raised meanwhile are
+// dropped when it goes (the environment before is restored). The parser turns a number beyond
+// the range of doubles ("1e999") into its own error, which the reader reports; the C library's
+// strtod, which reads the number, raises the overflow exception on the way. A caller that traps
+// floating-point exceptions (a Debug test run) must get that report, not a SIGFPE.
+class NonStopFloatingPoint {
+ public:
+  NonStopFloatingPoint() { std::feholdexcept(&saved_); }
+  ~NonStopFloatingPoint() { std::fesetenv(&saved_); }
+  NonStopFloatingPoint(const NonStopFloatingPoint&) = delete;
+  NonStopFloatingPoint& operator=(const NonStopFloatingPoint&) = delete;
+  NonStopFloatingPoint(NonStopFloatingPoint&&) = delete;
+  NonStopFloatingPoint& operator=(NonStopFloatingPoint&&) = delete;
+
+ private:
+  std::fenv_t saved_{};
+};
+
+json parse_document(std::string_view text, std::string_view source, const ReadLimits& limits) {
+  if (text.size() > limits.max_bytes) {
+    throw InvalidInput(too_large_message(source, limits.max_bytes));
+  }
+  refuse_deep_nesting(text, source, limits.max_depth);
+  Tracker tracker(source, limits);
   try {
+    const NonStopFloatingPoint non_stop;
     return json::parse(text.begin(), text.end(), std::ref(tracker));
   } catch (const json::parse_error& e) {
     const auto [line, column] = line_and_column(text, e.byte);
@@ -246,7 +326,7 @@ std::string join(const std::vector<std::string_view>& words) {
 
 class Reader {
  public:
-  explicit Reader(std::string_view source) : source_(source) {}
+  Reader(std::string_view source, const ReadLimits& limits) : source_(source), limits_(limits) {}
 
   Scene scene(const json& document) {
     require_object(document, "", "the scene, an object");
@@ -280,6 +360,7 @@ class Reader {
     if (const json* s = optional(document, "solver")) {
       scene.solver = solver(*s, "solver");
     }
+    refuse_dense_beyond_limit(scene);
     return scene;
   }
 
@@ -517,7 +598,29 @@ class Reader {
     return options;
   }
 
+  // The policies other than the defaults are served by the dense method only (see
+  // impulse::SolveMethod), whose N×N matrices grow as the square of the contacts.
+  void refuse_dense_beyond_limit(const Scene& scene) const {
+    const bool dense_only = scene.solver.dependent != DependentPolicy::minimum_norm ||
+                            scene.solver.inconsistent != InconsistentPolicy::least_squares;
+    if (!dense_only || scene.contacts.size() <= limits_.max_dense_contacts) {
+      return;
+    }
+    std::string message(std::to_string(scene.contacts.size()));
+    message.append(" contacts with the policies \"")
+        .append(to_string(scene.solver.dependent))
+        .append("\" and \"")
+        .append(to_string(scene.solver.inconsistent))
+        .append("\", which only the dense method serves: it takes at most ")
+        .append(std::to_string(limits_.max_dense_contacts))
+        .append(
+            " (its matrices grow as the square of the contacts); the default policies solve "
+            "large scenes with the sparse method");
+    fail("contacts", message);
+  }
+
   std::string source_;
+  ReadLimits limits_;
   int dimension_ = 2;
   std::unordered_map<std::string, std::size_t> names_;
   std::vector<std::string> ordered_names_;
@@ -539,11 +642,21 @@ nlohmann::ordered_json vector_json(const Vector2d& v, int dimension) {
 
 }  // namespace
 
-Scene parse_scene(std::string_view text, std::string_view source) {
-  const json document = parse_document(text, source);
+std::string too_large_message(std::string_view source, std::size_t max_bytes) {
+  std::string message(source);
+  message.append(": holds more than ").append(std::to_string(max_bytes)).append(" bytes");
+  if (max_bytes % (std::size_t{1} << 20U) == 0) {
+    message.append(" (").append(std::to_string(max_bytes >> 20U)).append(" MiB)");
+  }
+  message.append(", the most a scene file may hold");
+  return message;
+}
+
+Scene parse_scene(std::string_view text, std::string_view source, const ReadLimits& limits) {
+  const json document = parse_document(text, source, limits);
   Scene scene;
   try {
-    scene = Reader(source).scene(document);
+    scene = Reader(source, limits).scene(document);
   } catch (const json::exception& e) {
     // Not expected (every access is checked first), but never let it escape unexplained.
     std::string message(source);
@@ -560,7 +673,7 @@ Scene parse_scene(std::string_view text, std::string_view source) {
   return scene;
 }
 
-std::string read_file(const std::string& path) {
+std::string read_file(const std::string& path, std::size_t max_bytes) {
   const auto cannot_read = [&](const std::string& why) {
     std::string message(path);
     message.append(": cannot read: ").append(why);
@@ -575,20 +688,29 @@ std::string read_file(const std::string& path) {
   if (!file) {
     throw cannot_read(std::strerror(errno));
   }
+  // At most one byte more than the limit is read (a pipe or a device has no size to ask first).
   std::string text;
   std::array<char, 65536> buffer{};
   std::size_t count = 0;
-  while ((count = std::fread(buffer.data(), 1, buffer.size(), file.get())) > 0) {
+  const auto room = [&] {  // up to one byte past the limit (no overflow at its largest value)
+    const std::size_t left = max_bytes - text.size();
+    return left < buffer.size() ? left + 1 : buffer.size();
+  };
+  while (text.size() <= max_bytes &&
+         (count = std::fread(buffer.data(), 1, room(), file.get())) > 0) {
     text.append(buffer.data(), count);
   }
   if (std::ferror(file.get()) != 0) {
     throw cannot_read(std::strerror(errno));
   }
+  if (text.size() > max_bytes) {
+    throw InvalidInput(too_large_message(path, max_bytes));
+  }
   return text;
 }
 
-Scene load_scene(const std::string& path) {
-  return parse_scene(read_file(path), path);
+Scene load_scene(const std::string& path, const ReadLimits& limits) {
+  return parse_scene(read_file(path, limits.max_bytes), path, limits);
 }
 
 nlohmann::ordered_json to_json(const Result& result) {
