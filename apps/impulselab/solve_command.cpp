@@ -9,6 +9,7 @@
 #include "impulse/scene/json.hpp"
 #include "output.hpp"
 #include "text_report.hpp"
+#include "warnings.hpp"
 
 namespace impulselab {
 
@@ -35,6 +36,7 @@ void solve(const SolveOptions& options) {
                                                     : text_report(result, scene_name(options.scene),
                                                                   colour_wanted(options.output));
   write_output(options.output, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
+  print_warnings(solve_warnings(result, scene_name(options.scene)));
 }
 
 }  // namespace

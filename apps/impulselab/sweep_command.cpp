@@ -13,6 +13,7 @@
 #include "impulse/core/error.hpp"
 #include "impulse/scene/scene.hpp"
 #include "output.hpp"
+#include "warnings.hpp"
 
 namespace impulselab {
 
@@ -70,7 +71,9 @@ void sweep(const SweepOptions& options) {
   const impulse::scene::Scene scene = read_scene(options.scene);
   // Impulses are linear in the elasticity and energies quadratic: if both ends of the range are
   // finite, so is every value between, and nothing is written before the ends are known good.
-  (void)solve_at(scene, range.at(0), source);
+  // A does not depend on the elasticity: one warning about its conditioning serves every row.
+  const std::vector<std::string> warnings =
+      solve_warnings(solve_at(scene, range.at(0), source), source);
   (void)solve_at(scene, range.at(range.count - 1), source);
 
   const std::size_t contacts = scene.contacts.size();
@@ -102,6 +105,7 @@ void sweep(const SweepOptions& options) {
       }
     }
   });
+  print_warnings(warnings);
 }
 
 }  // namespace

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The warning about an ill-conditioned system: a line on standard error, the normal report on
+// standard output, exit status 0.
+#include <catch2/catch.hpp>
+#include <limits>
+#include <string>
+
+#include "cli/program.hpp"
+#include "warnings.hpp"
+
+namespace t = impulselab::test;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+
+TEST_CASE("The warning starts above the threshold and not for A = 0", "[cli][warnings]") {
+  impulse::scene::Result result;
+  result.system.condition_estimate = impulselab::ill_conditioned;  // at it: no warning
+  CHECK(impulselab::solve_warnings(result, "s.json").empty());
+  result.system.condition_estimate = 1e12;
+  const auto warnings = impulselab::solve_warnings(result, "s.json");
+  REQUIRE(warnings.size() == 1);
+  // 1e12 * 2.2e-16 = 2.2e-4 of the impulses' size.
+  CHECK(warnings[0] ==
+        "s.json: the system A·Fdt = B is ill-conditioned: condition estimate 1e+12, above "
+        "1e+08; rounding may change the impulses by about 0.00022 of their size (the velocities "
+        "after are less affected)");
+  result.system.rank_estimated = true;  // the sparse method's estimate says so
+  result.system.condition_estimate = 1e17;
+  CHECK_THAT(impulselab::solve_warnings(result, "s.json")[0],
+             Contains("condition estimate 1e+17 (estimated), above 1e+08; rounding may change "
+                      "the impulses by about as much as their size"));
+  result.system.condition_estimate = std::numeric_limits<double>::infinity();  // A = 0
+  CHECK(impulselab::solve_warnings(result, "s.json").empty());
+}
+
+TEST_CASE("solve and sweep warn about an ill-conditioned scene and still report it",
+          "[cli][warnings]") {
+  // A body of 1e-9 between two of 1e9: the eigenvalues of A are 1/M and 1/M + 2/m, so its
+  // condition number is 1 + 2M/m = 2e18.
+  const std::string scene = t::cli_tests_path("scenes/ill-conditioned.json");
+  const auto solved = t::run("solve " + t::quote(scene) + " --format json");
+  CHECK(solved.status == 0);
+  CHECK_THAT(solved.out, StartsWith("{"));
+  CHECK(t::lines(solved.err) ==
+        std::vector<std::string>{
+            "impulselab: warning: " + scene +
+            ": the system A·Fdt = B is ill-conditioned: condition estimate 2e+18, above 1e+08; "
+            "rounding may change the impulses by about as much as their size (the velocities "
+            "after are less affected)"});
+
+  // sweep: once, whatever the number of rows (A does not depend on the elasticity).
+  const auto swept = t::run("sweep " + t::quote(scene) + " --elasticity 1:2:0.25");
+  CHECK(swept.status == 0);
+  CHECK(t::lines(swept.out).size() == 6);  // the header and 5 rows
+  REQUIRE(t::lines(swept.err).size() == 1);
+  CHECK_THAT(swept.err, Contains("impulselab: warning: " + scene + ": the system A·Fdt = B"));
+
+  // A well-conditioned scene: nothing on standard error.
+  const auto quiet = t::run("solve " + t::quote(t::scene_path("box-lands-flat.json")));
+  CHECK(quiet.status == 0);
+  CHECK(quiet.err.empty());
+}
+
+TEST_CASE("solve warns when the solution does not satisfy A·Fdt = B", "[cli][warnings]") {
+  // The fuzzer's stack with an inertia of 4e-301 (see tests/scene/fuzz_regression_test.cpp):
+  // the contacts whose A is of order 1 were lost next to 1/I = 2.4e300.
+  const std::string scene =
+      std::string(IMPULSELAB_FUZZ_REGRESSIONS_DIR) + "/stack-inertia-1e-300.json";
+  const auto run = t::run("solve " + t::quote(scene));
+  CHECK(run.status == 0);
+  CHECK_FALSE(run.out.empty());
+  CHECK_THAT(run.err, Contains("impulselab: warning: " + scene +
+                               ": the impulses found do not satisfy A·Fdt = B (residual "));
+  CHECK_THAT(run.err, Contains("do not trust this report"));
+}
