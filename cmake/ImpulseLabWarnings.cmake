@@ -13,3 +13,8 @@ if(IMPULSELAB_SANITIZE)
     -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
   target_link_options(impulselab_warnings INTERFACE -fsanitize=address,undefined)
 endif()
+if(IMPULSELAB_BUILD_FUZZ)
+  # Coverage feedback for libFuzzer in every ImpulseLab target; the harness links the fuzzer's
+  # main (fuzz/CMakeLists.txt).
+  target_compile_options(impulselab_warnings INTERFACE -fsanitize=fuzzer-no-link)
+endif()

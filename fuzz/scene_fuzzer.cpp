@@ -1,0 +1,239 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// libFuzzer harness: arbitrary bytes into the scene reader; an accepted scene is solved and its
+// result held to the physical laws that hold whatever the scene.
+//
+// A refusal (impulse::InvalidInput naming the file) is the expected answer to most inputs. Any
+// other exception, a sanitizer report, a refusal after the reader accepted the scene, or a law
+// broken beyond its tolerance is a finding: the harness prints what it saw and traps, and
+// libFuzzer keeps the input as a crash artifact.
+//
+// The laws, for an accepted scene whose solution is finite (status success):
+//   - every reported number is finite (the condition estimate may be +infinity when A = 0);
+//   - momentum is conserved when no body is static (each impulse acts on two bodies, equal and
+//     opposite);
+// and, only where the system is well conditioned (condition estimate at most
+// max_checked_condition) and the solver found it consistent (see check_well_conditioned):
+//   - the residual |A·Fdt - B| is at the level of rounding;
+//   - one elasticity e for every movable body (B = e·u, u the approach speeds before): the
+//     energy changes by (e/2 - 1)·uᵀFdt and the approach speeds after are (1 - e)·u. At e = 2
+//     the kinetic energy is conserved and each approach speed reverses; at e = 1 each approach
+//     speed after is zero.
+// Where the solution is exact, energy after minus before is Fdtᵀ(A·Fdt/2 - u) and the approach
+// speeds after are u - A·Fdt, which give the laws above when A·Fdt = e·u. A computed solution
+// leaves the residual r = A·Fdt - B, so the laws hold up to |Fdt||r|/2 and |r|, plus the
+// rounding of the sums that compute energies, momenta and speeds from the bodies.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <string_view>
+
+#include "impulse/core/error.hpp"
+#include "impulse/scene/json.hpp"
+#include "impulse/scene/scene.hpp"
+
+namespace {
+
+namespace sc = impulse::scene;
+using Eigen::Vector2d;
+
+constexpr double epsilon = std::numeric_limits<double>::epsilon();
+// The laws that depend on the solver's accuracy are checked up to this condition estimate: the
+// same bound above which `impulselab solve` warns (apps/impulselab/warnings.hpp). Beyond it the
+// impulses may carry more rounding than digits, and the laws hold only to that.
+constexpr double max_checked_condition = 1e8;
+// Rounding allowance per operation summed: each reported quantity is a sum of at most about
+// (contacts + bodies) terms, each carrying a few roundings; 64 leaves room for the constant.
+constexpr double allowance = 64.0;
+
+[[noreturn]] void finding(std::string_view what, double found, double tolerance) {
+  std::fprintf(stderr, "scene_fuzzer: %.*s: found %.17g, tolerance %.17g\n",
+               static_cast<int>(what.size()), what.data(), found, tolerance);
+  __builtin_trap();
+}
+
+[[noreturn]] void finding(std::string_view what, std::string_view detail) {
+  std::fprintf(stderr, "scene_fuzzer: %.*s: %.*s\n", static_cast<int>(what.size()), what.data(),
+               static_cast<int>(detail.size()), detail.data());
+  __builtin_trap();
+}
+
+// A tolerance that overflowed (an infinity, or the NaN of 0 times one) cannot judge anything.
+void require_within(std::string_view what, double found, double tolerance) {
+  if (!std::isfinite(tolerance)) {
+    return;
+  }
+  if (!(found <= tolerance)) {
+    finding(what, found, tolerance);
+  }
+}
+
+bool finite(const sc::Motion& m) {
+  return m.velocity.allFinite() && m.momentum.allFinite() && std::isfinite(m.angular_velocity) &&
+         std::isfinite(m.angular_momentum);
+}
+
+void require_finite(const sc::Result& r) {
+  bool ok = std::isfinite(r.energy_before) && std::isfinite(r.energy_after) &&
+            std::isfinite(r.energy_change) && r.momentum_before.allFinite() &&
+            r.momentum_after.allFinite() && r.system.Fdt.allFinite() && r.system.B.allFinite() &&
+            std::isfinite(r.system.residual) && !std::isnan(r.system.condition_estimate) &&
+            r.system.condition_estimate >= 1.0;
+  for (const sc::BodyReport& b : r.bodies) {
+    ok = ok && finite(b.before) && finite(b.after) && std::isfinite(b.energy_before) &&
+         std::isfinite(b.energy_after);
+  }
+  for (const sc::ImpulseReport& i : r.impulses) {
+    ok = ok && std::isfinite(i.magnitude) && i.on_bumper.allFinite();
+  }
+  for (const sc::ContactReport& c : r.contacts) {
+    ok = ok && std::isfinite(c.approach_before) && std::isfinite(c.approach_after);
+  }
+  if (!ok) {
+    finding("finite", "a result reported as success holds a NaN or an infinity");
+  }
+}
+
+// The elasticity every movable body collides with, if they all share one; else NaN.
+double common_elasticity(const sc::Scene& scene) {
+  double common = std::numeric_limits<double>::quiet_NaN();
+  for (const sc::Body& body : scene.bodies) {
+    if (body.kind == sc::BodyKind::static_body) {
+      continue;
+    }
+    const double e = body.elasticity.value_or(scene.elasticity.value_or(1.0));
+    if (std::isnan(common)) {
+      common = e;
+    } else if (e != common) {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  return common;
+}
+
+void check_momentum(const sc::Scene& scene, const sc::Result& r) {
+  const bool any_static =
+      std::any_of(scene.bodies.begin(), scene.bodies.end(),
+                  [](const sc::Body& b) { return b.kind == sc::BodyKind::static_body; });
+  if (any_static) {
+    return;  // a static body takes momentum and is left out of the totals
+  }
+  double scale = 0.0;  // the magnitudes that the totals sum
+  for (const sc::BodyReport& b : r.bodies) {
+    scale += b.before.momentum.norm() + b.after.momentum.norm();
+  }
+  scale += 2.0 * r.system.Fdt.cwiseAbs().sum();
+  const auto terms = static_cast<double>(r.bodies.size() + r.impulses.size() + 2);
+  require_within("momentum conserved", (r.momentum_after - r.momentum_before).norm(),
+                 allowance * terms * epsilon * scale);
+}
+
+double matrix_norm(const impulse::Solution& s) {
+  return s.A.size() > 0 ? s.A.norm() : s.sparse_A.norm();
+}
+
+void check_well_conditioned(const sc::Scene& scene, const sc::Result& r) {
+  const impulse::Solution& s = r.system;
+  // A system assembled from bodies is consistent in exact arithmetic (B = GᵀW lies in the range
+  // of A = GᵀG): when the solver reports it inconsistent, rounding has lost part of it (bodies
+  // whose numbers are beyond what doubles resolve, e.g. an inertia of 1e-300 next to masses of
+  // 1), impulselab warns, and the laws cannot hold to rounding.
+  if (!(s.condition_estimate <= max_checked_condition) || !s.consistent) {
+    return;
+  }
+  const auto terms = static_cast<double>(r.bodies.size() + r.impulses.size() + 2);
+  const double Fdt_norm = s.Fdt.norm();
+  // The residual of a backward-stable solution is rounding of the terms A·Fdt and B; solving
+  // through the factor G (A = GᵀG) multiplies it by up to the condition number of G, the
+  // square root of that of A.
+  const double residual_tolerance = allowance * terms * epsilon *
+                                    (1.0 + std::sqrt(s.condition_estimate)) *
+                                    (matrix_norm(s) * Fdt_norm + s.B.norm());
+  require_within("residual |A Fdt - B|", s.residual, residual_tolerance);
+  const double residual_bound = s.residual + residual_tolerance;
+
+  const double e = common_elasticity(scene);
+  if (std::isnan(e)) {
+    return;  // bodies of different elasticities: B is not a multiple of u
+  }
+  // One elasticity e for every movable body: B = e u, so an exact solution changes the energy
+  // by (e/2 - 1) uᵀFdt (zero at e = 2) and leaves the approach speeds (1 - e) u (zero at e = 1,
+  // reversed at e = 2). The computed one departs from that by Fdtᵀr/2 and by r.
+  double change_energy = 0.0;  // the energies of each body's change of motion (terms that cancel)
+  for (std::size_t k = 0; k < r.bodies.size(); ++k) {
+    const sc::Body& body = scene.bodies[k];
+    if (body.kind == sc::BodyKind::static_body) {
+      continue;
+    }
+    const sc::BodyReport& b = r.bodies[k];
+    change_energy += 0.5 * (b.after.momentum - b.before.momentum).squaredNorm() / body.mass;
+    if (body.kind == sc::BodyKind::rigid) {
+      const double dL = b.after.angular_momentum - b.before.angular_momentum;
+      change_energy += 0.5 * dL * dL / body.inertia;
+    }
+  }
+  double work = 0.0;  // uᵀFdt
+  double work_terms = 0.0;
+  for (std::size_t v = 0; v < r.contacts.size(); ++v) {
+    work += r.contacts[v].approach_before * s.Fdt(static_cast<Eigen::Index>(v));
+    work_terms += std::abs(r.contacts[v].approach_before * s.Fdt(static_cast<Eigen::Index>(v)));
+  }
+  const double factor = e / 2.0 - 1.0;
+  require_within(
+      "energy change (e/2 - 1) u.Fdt", std::abs(r.energy_change - factor * work),
+      0.5 * Fdt_norm * residual_bound +
+          allowance * terms * epsilon *
+              (r.energy_before + r.energy_after + change_energy + std::abs(factor) * work_terms));
+  for (std::size_t v = 0; v < r.contacts.size(); ++v) {
+    const sc::Contact& c = scene.contacts[v];
+    // The speeds summed into the approach: each body's point velocity before and after.
+    double speeds = std::abs(1.0 - e) * std::abs(r.contacts[v].approach_before);
+    for (const std::size_t k : {c.bumper, c.wedge}) {
+      const sc::Body& body = scene.bodies[k];
+      const sc::BodyReport& b = r.bodies[k];
+      speeds += b.before.velocity.norm() + b.after.velocity.norm();
+      if (body.kind == sc::BodyKind::rigid) {
+        const double arm = (c.point.value_or(Vector2d::Zero()) - body.position).norm();
+        speeds += (std::abs(b.before.angular_velocity) + std::abs(b.after.angular_velocity)) * arm;
+      }
+    }
+    require_within(
+        "approach after (1 - e) u",
+        std::abs(r.contacts[v].approach_after - (1.0 - e) * r.contacts[v].approach_before),
+        residual_bound + allowance * terms * epsilon * speeds);
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  sc::Scene scene;
+  try {
+    scene = sc::parse_scene(text, "fuzz.json");
+  } catch (const impulse::InvalidInput& e) {
+    if (!std::string_view(e.what()).starts_with("fuzz.json: ")) {
+      finding("a refusal that does not name the file", e.what());
+    }
+    return 0;  // the expected answer to bad input
+  }
+  sc::Result result;
+  try {
+    result = sc::solve(scene);
+  } catch (const impulse::InvalidInput& e) {
+    finding("the reader accepted a scene that solve() refuses", e.what());
+  }
+  if (result.status != impulse::SolveStatus::success) {
+    return 0;  // beyond double precision: impulselab refuses it as overflowing
+  }
+  require_finite(result);
+  check_momentum(scene, result);
+  check_well_conditioned(scene, result);
+  const std::string report = sc::to_json(result).dump();
+  if (report.empty()) {
+    finding("to_json", "an empty report");
+  }
+  return 0;
+}
