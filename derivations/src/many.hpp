@@ -82,6 +82,12 @@ struct ContactEnergy {
 ContactEnergy contact_energy(const Scene& scene, const Eigen::VectorXd& F, std::size_t body,
                              std::size_t contact);
 
+/// A system A F = B as the checks assemble it from printed coefficients.
+struct System {
+  Eigen::MatrixXd A;
+  Eigen::VectorXd B;
+};
+
 /// |a - b| / max(|a|, |b|) in the Frobenius norm (0 for two zero matrices).
 double matrix_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
 

@@ -58,10 +58,7 @@ MaterialCoefficients printed_material(bool elastic) {
 
 // Each body's block from the printed coefficients, at the contacts it touches with its own
 // normals, summed by the paper's ⊕ (zero padding to the global contact indices).
-struct System {
-  MatrixXd A;
-  VectorXd B;
-};
+using many::System;
 
 System assemble_printed(const many::Scene& s, const MaterialCoefficients& k) {
   const auto N = static_cast<Eigen::Index>(s.contacts.size());
@@ -399,41 +396,11 @@ Outcome material_equation(const Context& c, bool elastic) {
                                   "two point masses, two contacts: normal velocities equal"));
     }
   }
-  // Numbers: random scenes of point masses and static bodies.
   const auto k = printed_material(elastic);
-  num::Random r(c.seed);
-  num::Errors physics, model_agreement, library;
-  for (std::size_t i = 0; i < c.share(4); ++i) {
-    const many::Scene s = many::random_scene(r, false, true, 5, 6);
-    const System sys = assemble_printed(s, k);
-    const many::Model md = many::model(s);
-    model_agreement.add_relative(many::matrix_error(sys.A, md.A()));
-    const VectorXd B_model = md.J * ((elastic ? 2.0 : 1.0) * md.velocity);
-    model_agreement.add((sys.B - B_model).norm(), 0.0, B_model.norm() + sys.B.norm());
-    const VectorXd F = many::solve(sys.A, sys.B);
-    const many::Scene after = many::after(s, F);
-    if (elastic) {
-      const double E = many::energy(s);
-      if (E > 0)
-        physics.add(many::energy(after), E, many::energy_scale(E, sys.A, F));
-    } else {
-      const double scale = many::approach_scale(s, sys.A, F);
-      if (scale > 0)
-        physics.add(many::approach(after).cwiseAbs().maxCoeff(), 0.0, scale);
-    }
-    // The library's blocks through its own assembly.
-    const auto lib = many::library_system(s, elastic ? 2 : 1);
-    library.add_relative(many::matrix_error(lib.A(), sys.A));
-    library.add((lib.B() - sys.B).norm(), 0.0, sys.B.norm());
-  }
-  findings.push_back(numeric(Method::numeric, physics, 1e-8,
-                             elastic ? "random scenes of 2 to 5 bodies: energy kept"
-                                     : "random scenes of 2 to 5 bodies: approach speeds zero"));
-  findings.push_back(numeric(Method::numeric, model_agreement, num::holds_below,
-                             "the summed blocks equal A = J M^-1 J^T and B built from the "
-                             "contact Jacobian"));
-  findings.push_back(numeric(Method::numeric, library, num::holds_below,
-                             "the library's multipoint::assemble gives the same A and B"));
+  const auto numbers = printed_system_findings(
+      c, false, elastic, [&](const many::Scene& s) { return assemble_printed(s, k); },
+      "random scenes of 2 to 5 point masses and static bodies");
+  findings.insert(findings.end(), numbers.begin(), numbers.end());
   return judge(EquationVerdict{std::move(findings), {}, {}, {}, {}});
 }
 

@@ -49,10 +49,7 @@ RigidCoefficients printed_rigid(bool elastic) {
           sym::compile(b, {rvx, rvy, nvx, nvy, px, py, L, m, I})};
 }
 
-struct System {
-  MatrixXd A;
-  VectorXd B;
-};
+using many::System;
 
 // Each movable body's block at its contacts with its own normals, the paper's ⊕. Point masses
 // use the same formula with no rotation (their 1/I term left out).
@@ -427,40 +424,10 @@ Outcome rigid_equation(const Context& c, bool elastic) {
     }
   }
   const auto k = printed_rigid(elastic);
-  num::Random r(c.seed);
-  num::Errors physics, model_agreement, library;
-  for (std::size_t i = 0; i < c.share(4); ++i) {
-    const many::Scene s = many::random_scene(r, true, true, 5, 6);
-    const System sys = assemble_printed(s, k);
-    const many::Model md = many::model(s);
-    model_agreement.add_relative(many::matrix_error(sys.A, md.A()));
-    const VectorXd B_model = md.J * ((elastic ? 2.0 : 1.0) * md.velocity);
-    model_agreement.add((sys.B - B_model).norm(), 0.0, B_model.norm() + sys.B.norm() + 1e-300);
-    const VectorXd F = many::solve(sys.A, sys.B);
-    const many::Scene after = many::after(s, F);
-    if (elastic) {
-      const double E = many::energy(s);
-      if (E > 0)
-        physics.add(many::energy(after), E, many::energy_scale(E, sys.A, F));
-    } else {
-      const double scale = many::approach_scale(s, sys.A, F);
-      if (scale > 0)
-        physics.add(many::approach(after).cwiseAbs().maxCoeff(), 0.0, scale);
-    }
-    // The library's blocks through its own assembly.
-    const auto lib = many::library_system(s, elastic ? 2 : 1);
-    library.add_relative(many::matrix_error(lib.A(), sys.A));
-    library.add((lib.B() - sys.B).norm(), 0.0, sys.B.norm() + 1e-300);
-  }
-  findings.push_back(numeric(Method::numeric, physics, 1e-8,
-                             elastic ? "random scenes of rigid bodies, point masses and static "
-                                       "bodies: energy kept"
-                                     : "random scenes: approach speeds zero"));
-  findings.push_back(numeric(Method::numeric, model_agreement, num::holds_below,
-                             "the summed blocks equal A = J M^-1 J^T and B from the contact "
-                             "Jacobian"));
-  findings.push_back(numeric(Method::numeric, library, num::holds_below,
-                             "the library's multipoint::assemble gives the same A and B"));
+  const auto numbers = printed_system_findings(
+      c, true, elastic, [&](const many::Scene& s) { return assemble_printed(s, k); },
+      "random scenes of rigid bodies, point masses and static bodies");
+  findings.insert(findings.end(), numbers.begin(), numbers.end());
   return judge(EquationVerdict{std::move(findings), {}, {}, {}, {}});
 }
 
