@@ -36,8 +36,9 @@ TEST_CASE("lab 7: Newton's cradle at (3, 0, 0): (-1, 2, 2) at once, (0, 0, 3) in
   check_column(t, "serial", {0, 0, 3});
 }
 
-TEST_CASE("lab 7: two balls hitting one at (3, 0, -1.5): (-2, 1, 2.5) at once, (-1.5, 0, 3) in "
-          "turn") {
+TEST_CASE(
+    "lab 7: two balls hitting one at (3, 0, -1.5): (-2, 1, 2.5) at once, (-1.5, 0, 3) in "
+    "turn") {
   // B = 2 (3, 1.5) = (6, 3), Fdt = (1/3) [[2, 1], [1, 2]] (6, 3) = (5, 4). Serial: contact 0
   // (3 > 1.5) gives (0, 3, -1.5), contact 1 (4.5) gives (0, -1.5, 3), contact 0 (1.5) gives
   // (-1.5, 0, 3).

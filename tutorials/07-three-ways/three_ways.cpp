@@ -91,8 +91,8 @@ void line_of_balls(const std::filesystem::path& out, const char* name, const cha
   lab::Csv csv(out / (std::string(name) + ".csv"),
                {"ball", "before", "simultaneous", "complementarity", "serial"});
   for (std::size_t i = 0; i < before.size(); ++i) {
-    csv.row({static_cast<double>(i + 1), before[i], simultaneous[i], complementarity[i],
-             serial[i]});
+    csv.row(
+        {static_cast<double>(i + 1), before[i], simultaneous[i], complementarity[i], serial[i]});
   }
   std::printf("%s, velocities after at elasticity 2:\n", title);
   print("simultaneous (the paper)", simultaneous);
@@ -114,7 +114,8 @@ struct Rod {
 // omega > 1.
 Rod rod(double omega) {
   constexpr double inertia = 1.0 / 3;
-  return {{mp::StaticBody{}, impulse::rigid_2d::RigidBody{1, inertia, {0, 0}, {0, -1}, inertia * omega}},
+  return {{mp::StaticBody{},
+           impulse::rigid_2d::RigidBody{1, inertia, {0, 0}, {0, -1}, inertia * omega}},
           {{0, 1, Vector2d::UnitY(), Vector2d(-1, 0)}, {0, 1, Vector2d::UnitY(), Vector2d(1, 0)}}};
 }
 
@@ -128,15 +129,14 @@ int main(int argc, char** argv) {
 
   // The rod, spun from 0 to 8: the impulse at the rising end and its approach speed after.
   {
-    lab::Csv csv(out / "rod.csv",
-                 {"omega",
-                  "simultaneous_impulse_e2", "complementarity_impulse_e2", "serial_impulse_e2",
-                  "simultaneous_approach_e2", "complementarity_approach_e2", "serial_approach_e2",
-                  "serial_collisions_e2", "energy_before", "simultaneous_energy_e2",
-                  "complementarity_energy_e2", "serial_energy_e2",
-                  "simultaneous_impulse_e1", "complementarity_impulse_e1", "serial_impulse_e1",
-                  "simultaneous_approach_e1", "complementarity_approach_e1", "serial_approach_e1",
-                  "serial_collisions_e1"});
+    lab::Csv csv(
+        out / "rod.csv",
+        {"omega", "simultaneous_impulse_e2", "complementarity_impulse_e2", "serial_impulse_e2",
+         "simultaneous_approach_e2", "complementarity_approach_e2", "serial_approach_e2",
+         "serial_collisions_e2", "energy_before", "simultaneous_energy_e2",
+         "complementarity_energy_e2", "serial_energy_e2", "simultaneous_impulse_e1",
+         "complementarity_impulse_e1", "serial_impulse_e1", "simultaneous_approach_e1",
+         "complementarity_approach_e1", "serial_approach_e1", "serial_collisions_e1"});
     for (int i = 0; i <= 80; ++i) {
       const double omega = 0.1 * i;
       const Rod r = rod(omega);
@@ -155,7 +155,8 @@ int main(int argc, char** argv) {
                rising(e1.serial.after), static_cast<double>(e1.serial.diagnostics.order.size())});
       if (i == 50) {
         std::printf("Rod spinning at 5, impulses at (falling end, rising end), elasticity 2:\n");
-        print("simultaneous (the paper)", {e2.simultaneous.solution.Fdt(0), e2.simultaneous.solution.Fdt(1)});
+        print("simultaneous (the paper)",
+              {e2.simultaneous.solution.Fdt(0), e2.simultaneous.solution.Fdt(1)});
         print("complementarity (only push)",
               {e2.complementarity.solution.Fdt(0), e2.complementarity.solution.Fdt(1)});
         print("serial", {e2.serial.Fdt(0), e2.serial.Fdt(1)});
