@@ -466,8 +466,13 @@ ComplementaritySolution active_set(const Eigen::Ref<const Eigen::MatrixXd>& G,
 }
 
 ComplementaritySolution projected_gauss_seidel(const SparseMatrix& A, const VectorXd& B,
-                                               double tolerance, int max_sweeps) {
+                                               double tolerance, int max_sweeps,
+                                               const VectorXd& start) {
   require_sizes(A.rows(), A.cols(), B.size());
+  if (start.size() != 0 && start.size() != B.size()) {
+    throw InvalidInput("the start of projected Gauss-Seidel must give one impulse per contact (" +
+                       std::to_string(B.size()) + "), got " + std::to_string(start.size()));
+  }
   require_tolerance(tolerance);
   if (max_sweeps < 1) {
     throw InvalidInput("projected Gauss-Seidel needs at least 1 sweep, got " +
@@ -487,12 +492,16 @@ ComplementaritySolution projected_gauss_seidel(const SparseMatrix& A, const Vect
   const VectorXd diagonal = columns.diagonal();
   ComplementaritySolution s;
   s.algorithm = LcpAlgorithm::projected_gauss_seidel;
-  s.Fdt = VectorXd::Zero(n);
+  s.Fdt =
+      start.size() == n && start.allFinite() ? VectorXd(start.cwiseMax(0.0)) : VectorXd::Zero(n);
   bool feasible = true;
   for (Index v = 0; v < n; ++v) {
     // A zero diagonal means a zero row (A is positive semi-definite): the contact's impulse moves
     // nothing, so it stays 0, the least; its slack is -B_v, which must not be negative.
     feasible = feasible && (diagonal(v) > 0.0 || B(v) <= 0.0);
+    if (!(diagonal(v) > 0.0)) {
+      s.Fdt(v) = 0.0;
+    }
   }
   measure(columns, B, s);
   while (feasible && !meets(s, tolerance) && s.iterations < max_sweeps) {
@@ -525,9 +534,20 @@ ComplementaritySolution solve_complementarity(const ContactSystem& system,
                 : system.has_factor()  ? LcpAlgorithm::active_set
                                        : LcpAlgorithm::lemke;
   }
-  if (algorithm == LcpAlgorithm::projected_gauss_seidel) {
+  // Projected Gauss-Seidel, started from the paper's impulses (see warm_start).
+  const auto iterate = [&]() {
+    VectorXd start;
+    if (options.warm_start) {
+      const Solution paper = solve(system);
+      if (paper.status == SolveStatus::success) {
+        start = paper.Fdt;
+      }
+    }
     return projected_gauss_seidel(system.sparse_A(), system.B(), options.tolerance,
-                                  options.max_sweeps);
+                                  options.max_sweeps, start);
+  };
+  if (algorithm == LcpAlgorithm::projected_gauss_seidel) {
+    return iterate();
   }
   if (n > pivoting_limit) {
     throw InvalidInput("pivoting takes at most " + std::to_string(pivoting_limit) +
@@ -556,8 +576,7 @@ ComplementaritySolution solve_complementarity(const ContactSystem& system,
   }
   // Rounding kept the pivoting's answer above the tolerance: iterate instead, and keep whichever
   // answer is closer.
-  ComplementaritySolution iterated =
-      projected_gauss_seidel(system.sparse_A(), system.B(), options.tolerance, options.max_sweeps);
+  ComplementaritySolution iterated = iterate();
   return iterated.residual < pivoted.residual ? iterated : pivoted;
 }
 

@@ -81,6 +81,12 @@ struct ComplementarityOptions {
   double tolerance = 1e-10;
   /// Projected Gauss-Seidel stops after this many sweeps if the tolerance is not met.
   int max_sweeps = 10000;
+  /// Projected Gauss-Seidel starts from the paper's impulses (impulse::solve, minimum norm)
+  /// clipped at zero, instead of from zero. Its sweeps converge at a rate set by the
+  /// conditioning of A, which on a row of 300 balls or a stack of 150 boxes leaves the residual
+  /// near 1e-5 after 10,000 sweeps from zero; started from the paper's answer they need none
+  /// where that answer already only pushes, and few where it pulls at a few contacts.
+  bool warm_start = true;
 };
 
 /// @brief The impulses of the complementarity problem and how they were found.
@@ -149,7 +155,8 @@ struct ComplementaritySolution {
     const Eigen::Ref<const Eigen::MatrixXd>& G, const Eigen::Ref<const Eigen::VectorXd>& g,
     DependentPolicy dependent = DependentPolicy::minimum_norm, double tolerance = 1e-10);
 
-/// @brief Projected Gauss-Seidel, started from zero impulses: for v = 1 … N in turn,
+/// @brief Projected Gauss-Seidel, started from @p start (zero impulses when it is empty): for
+/// v = 1 … N in turn,
 /// @f$ F_v \leftarrow \max\left(0,\ F_v - w_v / A_{vv}\right) @f$ with w from the latest impulses,
 /// until the residual meets the tolerance or the sweeps run out.
 ///
@@ -162,11 +169,12 @@ struct ComplementaritySolution {
 /// @param B the right-hand side (a size mismatch throws InvalidInput)
 /// @param tolerance as ComplementarityOptions::tolerance
 /// @param max_sweeps the limit on sweeps, at least 1 (else InvalidInput)
+/// @param start the impulses to start from, clipped at zero (empty: zero; else of B's size, or
+///        InvalidInput)
 /// @return the impulses, the slack and the diagnostics
-[[nodiscard]] ComplementaritySolution projected_gauss_seidel(const Eigen::SparseMatrix<double>& A,
-                                                             const Eigen::VectorXd& B,
-                                                             double tolerance = 1e-10,
-                                                             int max_sweeps = 10000);
+[[nodiscard]] ComplementaritySolution projected_gauss_seidel(
+    const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& B, double tolerance = 1e-10,
+    int max_sweeps = 10000, const Eigen::VectorXd& start = Eigen::VectorXd());
 
 /// @brief Solves the complementarity problem of an assembled system with the algorithm the
 /// options ask for (LcpAlgorithm::automatic: by its size and whether it carries its factor, and
