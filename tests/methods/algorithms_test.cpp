@@ -138,10 +138,14 @@ TEST_CASE("Infeasible and zero rows: reported, not thrown", "[methods]") {
   const auto pivoted = me::lemke(A, vec({0, 1}));
   REQUIRE(pivoted.status == me::LcpStatus::solved);
   CHECK(pivoted.Fdt.isApprox(vec({0, 1})));
-  // Non-finite input is a status too.
+  // Non-finite input is a status too. (The sparse copy is built entry by entry: a sparse view
+  // would compare the NaN with zero.)
   const MatrixXd bad{{std::nan(""), 0}, {0, 1}};
   CHECK(me::lemke(bad, vec({1, 1})).status == me::LcpStatus::non_finite);
-  CHECK(me::projected_gauss_seidel(sparse(bad), vec({1, 1})).status == me::LcpStatus::non_finite);
+  Eigen::SparseMatrix<double> bad_sparse(2, 2);
+  bad_sparse.insert(0, 0) = std::nan("");
+  bad_sparse.insert(1, 1) = 1.0;
+  CHECK(me::projected_gauss_seidel(bad_sparse, vec({1, 1})).status == me::LcpStatus::non_finite);
 }
 
 TEST_CASE("Bad arguments are refused with the value", "[methods][errors]") {
@@ -233,4 +237,31 @@ TEST_CASE(
   CHECK(stopped.diagnostics.status == me::SerialStatus::collision_limit);
   CHECK(stopped.diagnostics.order.size() == 5);
   CHECK(stopped.diagnostics.approach_left > 0.0);
+}
+
+TEST_CASE("A contact that no movable body touches: a zero row, a zero impulse", "[methods]") {
+  // Scene files refuse a contact between two static bodies, the library's own types do not: its
+  // row and column of A are zero and its B is 0 (nothing moves there). The ball (m = 2, moving
+  // at -1 into the wall, which is the bumper with normal +x) gets A_11 = 1/2, B_1 = 2 * 1:
+  // F_1 = 4, and contact 0 keeps the least impulse, 0, by every algorithm.
+  const std::vector<Body> bodies{StaticBody{}, StaticBody{}, PointMass{2, {-2, 0}}};
+  const std::vector<Contact> contacts{{0, 1, {1, 0}, {0, 0}}, {1, 2, {1, 0}, {0, 0}}};
+  const auto system =
+      mp::assemble(bodies, std::vector<Elasticity>(3, Elasticity::elastic()), contacts);
+  CHECK(system.A()(0, 0) == 0.0);
+  for (const auto algorithm : {me::LcpAlgorithm::active_set, me::LcpAlgorithm::lemke,
+                               me::LcpAlgorithm::projected_gauss_seidel}) {
+    for (const bool warm : {true, false}) {
+      CAPTURE(me::to_string(algorithm), warm);
+      me::ComplementarityOptions options;
+      options.algorithm = algorithm;
+      options.warm_start = warm;
+      const auto s = me::solve_complementarity(system, options);
+      REQUIRE(s.status == me::LcpStatus::solved);
+      CHECK(s.Fdt.isApprox(vec({0, 4}), 1e-15));
+    }
+  }
+  const auto serial = me::resolve_serial(bodies, Elasticity::elastic(), contacts);
+  CHECK(serial.Fdt.isApprox(vec({0, 4}), 1e-15));
+  CHECK(serial.diagnostics.order == std::vector<Eigen::Index>{1});
 }

@@ -246,12 +246,21 @@ VectorXd on_contacts(const MatrixXd& A, const VectorXd& B, const Factor& factor,
   if (on.empty()) {
     return F;
   }
+  // Contacts whose impulses move nothing (no movable body along their normals, which scene files
+  // refuse but hand-made systems may hold) keep the least impulse, 0. (Eigen's QR would also
+  // divide by the row count of an empty factor.)
   VectorXd x;
   if (factor.G != nullptr) {
     const MatrixXd columns = (*factor.G)(Eigen::all, on);
+    if (columns.rows() == 0 || columns.isZero(0.0)) {
+      return F;
+    }
     x = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(columns).solve(*factor.g);
   } else {
     const MatrixXd block = A(on, on);
+    if (block.isZero(0.0)) {
+      return F;
+    }
     const VectorXd right = B(on);
     x = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(block).solve(right);
   }
@@ -363,6 +372,11 @@ Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, c
     const MatrixXd columns = G(Eigen::all, set);
     return VectorXd(Eigen::CompleteOrthogonalDecomposition<MatrixXd>(columns).solve(g));
   };
+  if (G.rows() == 0) {
+    result.z = x;
+    result.solved = true;  // nothing can move: no impulse does anything, and none is wanted
+    return result;
+  }
   while (result.pivots < max_pivots) {
     // The contact that most wants an impulse: the most negative slack among those without one.
     const VectorXd want = G.transpose() * (g - G * x);  // -(A F - B)
@@ -408,7 +422,7 @@ Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, c
         const Index j = set[k];
         const double zj = z(static_cast<Index>(k));
         if (zj <= 0.0) {
-          const double step = x(j) / (x(j) - zj);
+          const double step = x(j) > 0.0 ? x(j) / (x(j) - zj) : 0.0;  // no 0/0
           if (blocking < 0 || step < alpha) {
             alpha = step;
             blocking = j;
