@@ -50,8 +50,8 @@ namespace impulse::scene {
 ///
 /// `method` names the method, "complementarity" or "serial" (it is absent for the paper's
 /// simultaneous method, whose report stays exactly the specified one), followed by the
-/// method's diagnostics: `complementarity` with `algorithm` ("lemke" or "projected-gauss-seidel"),
-/// `iterations` (pivots or sweeps), `complementarity_residual`
+/// method's diagnostics: `complementarity` with `algorithm` ("active-set", "lemke" or
+/// "projected-gauss-seidel"), `iterations` (pivots or sweeps), `complementarity_residual`
 /// (@f$ \max_v |\min(A_{vv} F_v, w_v)| @f$), `converged`, `least_norm` and `slack`
 /// (@f$ w = A\,F\,dt - B @f$ per contact); `serial` with `collisions`, `passes`, `order` (the
 /// contact of each collision), `max_collisions` and `finished`.
