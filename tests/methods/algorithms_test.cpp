@@ -265,3 +265,20 @@ TEST_CASE("A contact that no movable body touches: a zero row, a zero impulse", 
   CHECK(serial.Fdt.isApprox(vec({0, 4}), 1e-15));
   CHECK(serial.diagnostics.order == std::vector<Eigen::Index>{1});
 }
+
+TEST_CASE("No contact: nothing to do, by every method", "[methods]") {
+  const std::vector<Body> one{PointMass{1, {1, 0}}};
+  const std::vector<Contact> none;
+  for (const auto algorithm : {me::LcpAlgorithm::automatic, me::LcpAlgorithm::lemke,
+                               me::LcpAlgorithm::projected_gauss_seidel}) {
+    me::ComplementarityOptions options;
+    options.algorithm = algorithm;
+    const auto s = me::resolve_complementarity(one, Elasticity::elastic(), none, options);
+    CHECK(s.solution.status == me::LcpStatus::solved);
+    CHECK(s.solution.Fdt.size() == 0);
+  }
+  const auto serial = me::resolve_serial(one, Elasticity::elastic(), none);
+  CHECK(serial.diagnostics.status == me::SerialStatus::finished);
+  CHECK(serial.diagnostics.order.empty());
+  CHECK(serial.diagnostics.passes == 0);
+}

@@ -81,7 +81,15 @@ void measure(const Matrix& A, const VectorXd& B, ComplementaritySolution& s) {
 }
 
 bool meets(const ComplementaritySolution& s, double tolerance) {
-  return s.Fdt.minCoeff() >= 0.0 && s.residual <= tolerance * s.scale;
+  return (s.Fdt.size() == 0 || s.Fdt.minCoeff() >= 0.0) && s.residual <= tolerance * s.scale;
+}
+
+// No contact: nothing to solve.
+ComplementaritySolution nothing(LcpAlgorithm algorithm) {
+  ComplementaritySolution s;
+  s.algorithm = algorithm;
+  s.least_norm = true;
+  return s;
 }
 
 ComplementaritySolution not_finite(Index n, LcpAlgorithm algorithm) {
@@ -337,6 +345,9 @@ ComplementaritySolution lemke_with(const MatrixXd& A, const VectorXd& B, const F
     throw InvalidInput("Lemke's pivoting takes at most " + std::to_string(pivoting_limit) +
                        " contacts (its tableau is dense), got " + std::to_string(n));
   }
+  if (n == 0) {
+    return nothing(LcpAlgorithm::lemke);
+  }
   if (!A.allFinite() || !B.allFinite()) {
     return not_finite(n, LcpAlgorithm::lemke);
   }
@@ -455,6 +466,9 @@ ComplementaritySolution active_set_with(const MatrixXd& G, const VectorXd& g,
   }
   require_tolerance(tolerance);
   const Index n = G.cols();
+  if (n == 0) {
+    return nothing(LcpAlgorithm::active_set);
+  }
   if (!G.allFinite() || !g.allFinite()) {
     return not_finite(n, LcpAlgorithm::active_set);
   }
