@@ -62,6 +62,8 @@ impulse::scene::Result solve_at(const impulse::scene::Scene& scene, double e,
                                 impulse::format_number(e) +
                                 ": A·Fdt = B or the state after the collision is not finite");
   }
+  // A scene whose solver.method is serial: its collisions must end within their bound.
+  require_finished(result, source + " at elasticity " + impulse::format_number(e));
   return result;
 }
 

@@ -86,6 +86,68 @@ std::string plural(std::size_t count, const char* one, const char* many) {
   return text;
 }
 
+// The method's line (issue 9) and, for the two that are not the paper's, its diagnostics.
+std::string method_text(const Result& r) {
+  namespace methods = impulse::methods;
+  std::string out("Method: ");
+  out.append(methods::to_string(r.method));
+  switch (r.method) {
+    case methods::Method::simultaneous:
+      out.append(" (the paper's: every contact at once, A·Fdt = B)\n");
+      break;
+    case methods::Method::complementarity: {
+      const methods::ComplementaritySolution& c = r.complementarity;
+      out.append(
+          " (impulses only push: Fdt >= 0 and A·Fdt - B >= 0, one of them 0 at each "
+          "contact)\n  ");
+      const auto count = static_cast<std::size_t>(c.iterations);
+      switch (c.algorithm) {
+        case methods::LcpAlgorithm::lemke:
+          out.append("Lemke's pivoting, ").append(plural(count, "pivot", "pivots"));
+          break;
+        case methods::LcpAlgorithm::projected_gauss_seidel:
+          out.append("projected Gauss-Seidel, ").append(plural(count, "sweep", "sweeps"));
+          break;
+        case methods::LcpAlgorithm::active_set:
+        case methods::LcpAlgorithm::automatic:
+          out.append("active-set pivoting, ").append(plural(count, "pivot", "pivots"));
+          break;
+      }
+      out.append(c.status == methods::LcpStatus::solved ? "" : " (approximate)");
+      out.append(", complementarity residual ").append(number_text(c.residual));
+      out.append(c.least_norm ? ", the least-norm solution\n" : "\n");
+      out.append("  slack A·Fdt - B (0 where a contact pushes):");
+      for (Eigen::Index v = 0; v < c.w.size(); ++v) {
+        out.append(v == 0 ? " " : ", ").append(chopped(c.w(v), c.scale));
+      }
+      out.append("\n");
+      break;
+    }
+    case methods::Method::serial: {
+      const methods::SerialDiagnostics& d = r.serial;
+      out.append(
+          " (one contact at a time, the fastest-approaching first, until none "
+          "approaches)\n  ");
+      out.append(plural(d.order.size(), "collision", "collisions")).append(" in ");
+      out.append(plural(static_cast<std::size_t>(d.passes), "pass", "passes"));
+      out.append(" (bound ").append(std::to_string(d.max_collisions)).append(")");
+      if (!d.order.empty()) {
+        out.append("; contacts in turn:");
+        constexpr std::size_t shown = 40;
+        for (std::size_t k = 0; k < d.order.size() && k < shown; ++k) {
+          out.append(k == 0 ? " " : ", ").append(std::to_string(d.order[k]));
+        }
+        if (d.order.size() > shown) {
+          out.append(", … (--format json lists all)");
+        }
+      }
+      out.append("\n");
+      break;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string number_text(double value) {
@@ -106,6 +168,7 @@ std::string text_report(const Result& r, const std::string& source, bool colour)
   out.append(": dimension ").append(std::to_string(d)).append(", ");
   out.append(plural(r.bodies.size(), "body", "bodies")).append(", ");
   out.append(plural(r.contacts.size(), "contact", "contacts")).append("\n");
+  out.append(method_text(r));
 
   const double impulse_scale =
       largest(r.impulses, [](const auto& i) { return std::abs(i.magnitude); });

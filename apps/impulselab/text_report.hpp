@@ -13,7 +13,8 @@ namespace impulselab {
 /// @return its text
 std::string number_text(double value);
 
-/// The text report of `impulselab solve`: the impulses, each body's motion before and after
+/// The text report of `impulselab solve`: the method (with the diagnostics of the two that are
+/// not the paper's), the impulses, each body's motion before and after
 /// (and its rotation for rigid bodies), energy and momentum before and after, each contact's
 /// approach speed before and after, and the system A·Fdt = B with its rank, residual and
 /// diagnostics (A itself is shown up to 10 contacts).

@@ -1,13 +1,30 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "warnings.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <limits>
+
+#include "app.hpp"
+#include "text_report.hpp"
 
 namespace impulselab {
 
 namespace {
+
+namespace methods = impulse::methods;
+
+// As in the text report: below this fraction of the largest impulse, a value is rounding.
+constexpr double noise = 1e-12;
+
+std::string contact_name(const impulse::scene::Result& result, std::size_t v) {
+  std::string text("contact ");
+  text.append(std::to_string(v)).append(" (").append(result.impulses[v].bumper);
+  text.append("\u2013").append(result.impulses[v].wedge).append(")");
+  return text;
+}
 
 // Two significant digits: an order of magnitude is what the reader needs.
 std::string rounded(double value) {
@@ -17,6 +34,88 @@ std::string rounded(double value) {
 }
 
 }  // namespace
+
+std::vector<std::string> impulse_warnings(const impulse::scene::Result& result,
+                                          std::string_view prefix) {
+  std::vector<std::string> lines;
+  double largest = 0.0;
+  for (const auto& i : result.impulses) {
+    largest = std::max(largest, std::abs(i.magnitude));
+  }
+  for (std::size_t v = 0; v < result.impulses.size(); ++v) {
+    const double magnitude = result.impulses[v].magnitude;
+    if (magnitude < -noise * largest) {
+      std::string line(prefix);
+      line.append(contact_name(result, v)).append(": negative impulse ");
+      line.append(number_text(magnitude)).append(" (the contact pulls)");
+      lines.push_back(line);
+    }
+  }
+  if (result.method == methods::Method::complementarity) {
+    const methods::ComplementaritySolution& c = result.complementarity;
+    const std::string residual = number_text(c.residual);
+    const std::string scale = number_text(c.scale);
+    std::string line(prefix);
+    if (c.status == methods::LcpStatus::iteration_limit) {
+      line.append("complementarity: projected Gauss-Seidel stopped after ");
+      line.append(std::to_string(c.iterations))
+          .append(" sweeps with the complementarity residual ");
+      line.append(residual).append(" against a scale of ").append(scale);
+      line.append(": the impulses are approximate");
+      lines.push_back(line);
+    } else if (c.status == methods::LcpStatus::inaccurate) {
+      line.append(
+          "complementarity: rounding left Lemke's pivoting at the complementarity residual ");
+      line.append(residual).append(" against a scale of ").append(scale);
+      line.append(": the impulses are approximate");
+      lines.push_back(line);
+    }
+  }
+  return lines;
+}
+
+void print_impulse_warnings(const impulse::scene::Result& result, std::string_view prefix) {
+  for (const std::string& line : impulse_warnings(result, prefix)) {
+    std::fprintf(stderr, "impulselab: warning: %s\n", line.c_str());
+  }
+}
+
+std::string unfinished_message(const impulse::scene::Result& result, const std::string& source) {
+  if (impulse::scene::finished(result)) {
+    return "";
+  }
+  std::string message(source);
+  if (result.method == methods::Method::serial) {
+    const methods::SerialDiagnostics& d = result.serial;
+    message.append(": serial collisions did not end: after ");
+    message.append(std::to_string(d.order.size())).append(" collisions (the bound: ");
+    message.append("solver.max_collisions, by default ");
+    message.append(std::to_string(methods::collisions_per_contact)).append(" per contact), ");
+    if (d.still_approaching >= 0 &&
+        static_cast<std::size_t>(d.still_approaching) < result.impulses.size()) {
+      message.append(contact_name(result, static_cast<std::size_t>(d.still_approaching)));
+      message.append(" still approaches at ").append(number_text(d.approach_left));
+    } else {
+      message.append("a contact still approaches");
+    }
+    message.append(
+        ". Below elasticity 2 the same contacts can collide again and again without end "
+        "(inelastic collapse), and a light body between heavy ones needs many collisions: "
+        "raise \"max_collisions\" in the scene's \"solver\", or choose another method");
+  } else {
+    message.append(
+        ": complementarity: no impulses that only push satisfy A·Fdt >= B (Lemke's pivoting "
+        "ended on a ray)");
+  }
+  return message;
+}
+
+void require_finished(const impulse::scene::Result& result, const std::string& source) {
+  const std::string message = unfinished_message(result, source);
+  if (!message.empty()) {
+    throw WorkFailed(message);
+  }
+}
 
 std::vector<std::string> solve_warnings(const impulse::scene::Result& result,
                                         std::string_view source) {

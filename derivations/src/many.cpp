@@ -4,6 +4,8 @@
 #include <Eigen/QR>
 #include <algorithm>
 
+#include "impulse/multipoint/multipoint.hpp"
+
 namespace impulse::derivations::many {
 
 using Eigen::MatrixXd;
@@ -224,6 +226,39 @@ ContactEnergy contact_energy(const Scene& scene, const VectorXd& F, std::size_t 
     e.rotational = cross(cv.point - b.position, nv) * pair * (spin / 2 + b.L) / b.I;
   }
   return e;
+}
+
+double matrix_error(const MatrixXd& a, const MatrixXd& b) {
+  const double scale = std::max(a.norm(), b.norm());
+  return scale == 0 ? 0.0 : (a - b).norm() / scale;
+}
+
+double energy_scale(double E, const MatrixXd& A, const VectorXd& F) {
+  return E + 0.5 * F.cwiseAbs().dot(A.cwiseAbs() * F.cwiseAbs());
+}
+
+double approach_scale(const Scene& scene, const MatrixXd& A, const VectorXd& F) {
+  const double terms = F.size() == 0 ? 0.0 : (A.cwiseAbs() * F.cwiseAbs()).maxCoeff();
+  return std::max(speed_scale(scene), terms);
+}
+
+ContactSystem library_system(const Scene& scene, double elasticity) {
+  std::vector<multipoint::Body> bodies;
+  for (const Body& b : scene.bodies) {
+    if (b.is_static()) {
+      bodies.emplace_back(multipoint::StaticBody{});
+    } else if (b.rigid()) {
+      bodies.emplace_back(rigid_2d::RigidBody{b.m, b.I, b.position, b.p, b.L});
+    } else {
+      bodies.emplace_back(material_2d::PointMass{b.m, b.p});
+    }
+  }
+  std::vector<multipoint::Contact> contacts;
+  for (const Contact& c : scene.contacts) {
+    contacts.push_back({c.a, c.b, c.n, c.point});
+  }
+  return multipoint::assemble(
+      bodies, std::vector<Elasticity>(bodies.size(), Elasticity(elasticity)), contacts);
 }
 
 }  // namespace impulse::derivations::many

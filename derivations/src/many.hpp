@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "impulse/core/system.hpp"
 #include "numeric.hpp"
 
 namespace impulse::derivations::many {
@@ -80,5 +81,27 @@ struct ContactEnergy {
 };
 ContactEnergy contact_energy(const Scene& scene, const Eigen::VectorXd& F, std::size_t body,
                              std::size_t contact);
+
+/// A system A F = B as the checks assemble it from printed coefficients.
+struct System {
+  Eigen::MatrixXd A;
+  Eigen::VectorXd B;
+};
+
+/// |a - b| / max(|a|, |b|) in the Frobenius norm (0 for two zero matrices).
+double matrix_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
+
+/// The size of the terms whose sum is the kinetic energy after, E - F . u + F^T A F / 2: the
+/// impulses of a nearly dependent system are far larger than the momenta and push against each
+/// other, and the energy after is then a small difference of large terms.
+double energy_scale(double E, const Eigen::MatrixXd& A, const Eigen::VectorXd& F);
+
+/// The size of the terms whose sum is a contact's approach speed after: the speeds before, and
+/// the largest sum_k |A_vk F_k| of the change the impulses bring.
+double approach_scale(const Scene& scene, const Eigen::MatrixXd& A, const Eigen::VectorXd& F);
+
+/// The same scene assembled by the library (multipoint::assemble), every body at `elasticity`:
+/// what the checks compare the printed coefficients' system with.
+ContactSystem library_system(const Scene& scene, double elasticity);
 
 }  // namespace impulse::derivations::many

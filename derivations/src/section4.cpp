@@ -15,6 +15,7 @@
 #include "impulse/multipoint/multipoint.hpp"
 #include "many.hpp"
 #include "numeric.hpp"
+#include "pulses.hpp"
 #include "sections.hpp"
 
 namespace impulse::derivations {
@@ -26,32 +27,6 @@ using Eigen::Vector2d;
 using Eigen::VectorXd;
 using GiNaC::ex;
 using sym::Equation;
-
-// ---- force pulses: shapes f on [0, 1] with unit integral, and their integrals g ---------------
-
-struct Pulse {
-  const char* name;
-  double (*f)(double);
-  double (*g)(double);
-};
-
-const std::vector<Pulse>& pulses() {
-  static const std::vector<Pulse> p{
-      {"rectangle", [](double) { return 1.0; }, [](double t) { return t; }},
-      {"half-sine", [](double t) { return std::numbers::pi / 2 * std::sin(std::numbers::pi * t); },
-       [](double t) { return (1 - std::cos(std::numbers::pi * t)) / 2; }},
-      {"triangle", [](double t) { return t < 0.5 ? 4 * t : 4 * (1 - t); },
-       [](double t) { return t < 0.5 ? 2 * t * t : 1 - 2 * (1 - t) * (1 - t); }},
-      {"skewed", [](double t) { return 12 * t * (1 - t) * (1 - t); },
-       [](double t) { return 6 * t * t - 8 * t * t * t + 3 * t * t * t * t; }},
-  };
-  return p;
-}
-
-// The integral over the collision time [0, 1], split where the triangular pulse has its kink.
-double over_pulse(const std::function<double(double)>& f, double scale = 0.0) {
-  return num::integrate(f, 0, 0.5, scale) + num::integrate(f, 0.5, 1, scale);
-}
 
 // A body's momentum along n_v, p_v, receiving the impulse J along n_v with pulse shape f over a
 // collision lasting one time unit.
@@ -83,10 +58,7 @@ MaterialCoefficients printed_material(bool elastic) {
 
 // Each body's block from the printed coefficients, at the contacts it touches with its own
 // normals, summed by the paper's ⊕ (zero padding to the global contact indices).
-struct System {
-  MatrixXd A;
-  VectorXd B;
-};
+using many::System;
 
 System assemble_printed(const many::Scene& s, const MaterialCoefficients& k) {
   const auto N = static_cast<Eigen::Index>(s.contacts.size());
@@ -111,18 +83,6 @@ System assemble_printed(const many::Scene& s, const MaterialCoefficients& k) {
     }
   }
   return sys;
-}
-
-// The size of the terms whose sum is the kinetic energy after: E - F . u + F^T A F / 2. The
-// impulses of a nearly dependent system are far larger than the momenta and push against each
-// other; the energy after is then a small difference of large terms.
-double energy_scale(double E, const MatrixXd& A, const VectorXd& F) {
-  return E + 0.5 * F.cwiseAbs().dot(A.cwiseAbs() * F.cwiseAbs());
-}
-
-double matrix_error(const MatrixXd& a, const MatrixXd& b) {
-  const double scale = std::max(a.norm(), b.norm());
-  return scale == 0 ? 0.0 : (a - b).norm() / scale;
 }
 
 // ---- work integrals ---------------------------------------------------------------------------
@@ -436,54 +396,11 @@ Outcome material_equation(const Context& c, bool elastic) {
                                   "two point masses, two contacts: normal velocities equal"));
     }
   }
-  // Numbers: random scenes of point masses and static bodies.
   const auto k = printed_material(elastic);
-  num::Random r(c.seed);
-  num::Errors physics, model_agreement, library;
-  for (std::size_t i = 0; i < c.share(4); ++i) {
-    const many::Scene s = many::random_scene(r, false, true, 5, 6);
-    const System sys = assemble_printed(s, k);
-    const many::Model md = many::model(s);
-    model_agreement.add_relative(matrix_error(sys.A, md.A()));
-    const VectorXd B_model = md.J * ((elastic ? 2.0 : 1.0) * md.velocity);
-    model_agreement.add((sys.B - B_model).norm(), 0.0, B_model.norm() + sys.B.norm());
-    const VectorXd F = many::solve(sys.A, sys.B);
-    const many::Scene after = many::after(s, F);
-    if (elastic) {
-      const double E = many::energy(s);
-      if (E > 0)
-        physics.add(many::energy(after), E, energy_scale(E, sys.A, F));
-    } else {
-      const double scale =
-          std::max(many::speed_scale(s), (sys.A.cwiseAbs() * F.cwiseAbs()).maxCoeff());
-      if (scale > 0)
-        physics.add(many::approach(after).cwiseAbs().maxCoeff(), 0.0, scale);
-    }
-    // The library's blocks through its own assembly.
-    std::vector<multipoint::Body> bodies;
-    for (const auto& b : s.bodies) {
-      if (b.is_static()) {
-        bodies.emplace_back(multipoint::StaticBody{});
-      } else {
-        bodies.emplace_back(material_2d::PointMass{b.m, b.p});
-      }
-    }
-    std::vector<multipoint::Contact> contacts;
-    for (const auto& ct : s.contacts)
-      contacts.push_back({ct.a, ct.b, ct.n, ct.point});
-    const auto lib = multipoint::assemble(
-        bodies, std::vector<Elasticity>(bodies.size(), Elasticity(elastic ? 2 : 1)), contacts);
-    library.add_relative(matrix_error(lib.A(), sys.A));
-    library.add((lib.B() - sys.B).norm(), 0.0, sys.B.norm());
-  }
-  findings.push_back(numeric(Method::numeric, physics, 1e-8,
-                             elastic ? "random scenes of 2 to 5 bodies: energy kept"
-                                     : "random scenes of 2 to 5 bodies: approach speeds zero"));
-  findings.push_back(numeric(Method::numeric, model_agreement, num::holds_below,
-                             "the summed blocks equal A = J M^-1 J^T and B built from the "
-                             "contact Jacobian"));
-  findings.push_back(numeric(Method::numeric, library, num::holds_below,
-                             "the library's multipoint::assemble gives the same A and B"));
+  const auto numbers = printed_system_findings(
+      c, false, elastic, [&](const many::Scene& s) { return assemble_printed(s, k); },
+      "random scenes of 2 to 5 point masses and static bodies");
+  findings.insert(findings.end(), numbers.begin(), numbers.end());
   return judge(EquationVerdict{std::move(findings), {}, {}, {}, {}});
 }
 
@@ -594,7 +511,7 @@ Outcome two_body_sum(const Context& c) {
       const many::Scene s = many::random_pair(r, 4);
       const System sys = assemble_printed(s, k);
       const many::Model md = many::model(s);
-      errors.add_relative(matrix_error(sys.A, md.A()));
+      errors.add_relative(many::matrix_error(sys.A, md.A()));
     }
   }
   return judge(EquationVerdict{
@@ -618,7 +535,7 @@ Outcome impulse_direction(const Context& c) {
     const double E = many::energy(s);
     if (E == 0 || F.cwiseAbs().maxCoeff() < 1e-9)
       continue;
-    const double scale = energy_scale(E, sys.A, F);
+    const double scale = many::energy_scale(E, sys.A, F);
     printed.add(many::energy(many::after(s, -F)), E, scale);  // flipped: +n_v F_v on the bumper
     corrected.add(many::energy(many::after(s, F)), E, scale);
   }
@@ -791,10 +708,9 @@ Outcome many_bodies(const Context& c, bool elastic) {
     if (elastic) {
       const double E = many::energy(s);
       if (E > 0)
-        physics.add(many::energy(after), E, energy_scale(E, sys.A, F));
+        physics.add(many::energy(after), E, many::energy_scale(E, sys.A, F));
     } else {
-      const double scale =
-          std::max(many::speed_scale(s), (sys.A.cwiseAbs() * F.cwiseAbs()).maxCoeff());
+      const double scale = many::approach_scale(s, sys.A, F);
       if (scale > 0)
         physics.add(many::approach(after).cwiseAbs().maxCoeff(), 0.0, scale);
     }
@@ -906,7 +822,7 @@ Outcome oplus(const Context& c) {
     const many::Scene s = many::random_scene(r, false, true, 6, 8);
     const System sys = assemble_printed(s, k);
     const many::Model md = many::model(s);
-    errors.add_relative(matrix_error(sys.A, md.A()));
+    errors.add_relative(many::matrix_error(sys.A, md.A()));
   }
   return judge(EquationVerdict{
       {numeric(Method::numeric, errors, num::holds_below, "2 to 6 bodies, 1 to 8 contacts")},

@@ -13,6 +13,7 @@
 #include "impulse/multipoint/multipoint.hpp"
 #include "many.hpp"
 #include "numeric.hpp"
+#include "pulses.hpp"
 #include "sections.hpp"
 
 namespace impulse::derivations {
@@ -48,10 +49,7 @@ RigidCoefficients printed_rigid(bool elastic) {
           sym::compile(b, {rvx, rvy, nvx, nvy, px, py, L, m, I})};
 }
 
-struct System {
-  MatrixXd A;
-  VectorXd B;
-};
+using many::System;
 
 // Each movable body's block at its contacts with its own normals, the paper's ⊕. Point masses
 // use the same formula with no rotation (their 1/I term left out).
@@ -87,15 +85,6 @@ System assemble_printed(const many::Scene& s, const RigidCoefficients& k, double
     }
   }
   return sys;
-}
-
-double matrix_error(const MatrixXd& a, const MatrixXd& b) {
-  const double scale = std::max(a.norm(), b.norm());
-  return scale == 0 ? 0.0 : (a - b).norm() / scale;
-}
-
-double energy_scale(double E, const MatrixXd& A, const VectorXd& F) {
-  return E + 0.5 * F.cwiseAbs().dot(A.cwiseAbs() * F.cwiseAbs());
 }
 
 // ---- the checks -----------------------------------------------------------------------------
@@ -213,27 +202,6 @@ Outcome rotation_path(const Context& c) {
                       {},
                       {},
                       "The printed r_vu is read as r_vy (an OCR slip)."});
-}
-
-// The pulses of section 4, for the turning body: shapes on [0, 1] with unit integral.
-struct Pulse {
-  double (*f)(double);
-  double (*g)(double);
-};
-const std::vector<Pulse>& pulses() {
-  static const std::vector<Pulse> p{
-      {[](double) { return 1.0; }, [](double t) { return t; }},
-      {[](double t) { return std::numbers::pi / 2 * std::sin(std::numbers::pi * t); },
-       [](double t) { return (1 - std::cos(std::numbers::pi * t)) / 2; }},
-      {[](double t) { return t < 0.5 ? 4 * t : 4 * (1 - t); },
-       [](double t) { return t < 0.5 ? 2 * t * t : 1 - 2 * (1 - t) * (1 - t); }},
-      {[](double t) { return 12 * t * (1 - t) * (1 - t); },
-       [](double t) { return 6 * t * t - 8 * t * t * t + 3 * t * t * t * t; }},
-  };
-  return p;
-}
-double over_pulse(const std::function<double(double)>& f, double scale = 0.0) {
-  return num::integrate(f, 0, 0.5, scale) + num::integrate(f, 0.5, 1, scale);
 }
 
 Outcome angle_step(const Context& c) {
@@ -456,54 +424,10 @@ Outcome rigid_equation(const Context& c, bool elastic) {
     }
   }
   const auto k = printed_rigid(elastic);
-  num::Random r(c.seed);
-  num::Errors physics, model_agreement, library;
-  for (std::size_t i = 0; i < c.share(4); ++i) {
-    const many::Scene s = many::random_scene(r, true, true, 5, 6);
-    const System sys = assemble_printed(s, k);
-    const many::Model md = many::model(s);
-    model_agreement.add_relative(matrix_error(sys.A, md.A()));
-    const VectorXd B_model = md.J * ((elastic ? 2.0 : 1.0) * md.velocity);
-    model_agreement.add((sys.B - B_model).norm(), 0.0, B_model.norm() + sys.B.norm() + 1e-300);
-    const VectorXd F = many::solve(sys.A, sys.B);
-    const many::Scene after = many::after(s, F);
-    if (elastic) {
-      const double E = many::energy(s);
-      if (E > 0)
-        physics.add(many::energy(after), E, energy_scale(E, sys.A, F));
-    } else {
-      const double scale =
-          std::max(many::speed_scale(s), (sys.A.cwiseAbs() * F.cwiseAbs()).maxCoeff());
-      if (scale > 0)
-        physics.add(many::approach(after).cwiseAbs().maxCoeff(), 0.0, scale);
-    }
-    std::vector<multipoint::Body> bodies;
-    for (const auto& b : s.bodies) {
-      if (b.is_static()) {
-        bodies.emplace_back(multipoint::StaticBody{});
-      } else if (b.rigid()) {
-        bodies.emplace_back(rigid_2d::RigidBody{b.m, b.I, b.position, b.p, b.L});
-      } else {
-        bodies.emplace_back(material_2d::PointMass{b.m, b.p});
-      }
-    }
-    std::vector<multipoint::Contact> contacts;
-    for (const auto& ct : s.contacts)
-      contacts.push_back({ct.a, ct.b, ct.n, ct.point});
-    const auto lib = multipoint::assemble(
-        bodies, std::vector<Elasticity>(bodies.size(), Elasticity(elastic ? 2 : 1)), contacts);
-    library.add_relative(matrix_error(lib.A(), sys.A));
-    library.add((lib.B() - sys.B).norm(), 0.0, sys.B.norm() + 1e-300);
-  }
-  findings.push_back(numeric(Method::numeric, physics, 1e-8,
-                             elastic ? "random scenes of rigid bodies, point masses and static "
-                                       "bodies: energy kept"
-                                     : "random scenes: approach speeds zero"));
-  findings.push_back(numeric(Method::numeric, model_agreement, num::holds_below,
-                             "the summed blocks equal A = J M^-1 J^T and B from the contact "
-                             "Jacobian"));
-  findings.push_back(numeric(Method::numeric, library, num::holds_below,
-                             "the library's multipoint::assemble gives the same A and B"));
+  const auto numbers = printed_system_findings(
+      c, true, elastic, [&](const many::Scene& s) { return assemble_printed(s, k); },
+      "random scenes of rigid bodies, point masses and static bodies");
+  findings.insert(findings.end(), numbers.begin(), numbers.end());
   return judge(EquationVerdict{std::move(findings), {}, {}, {}, {}});
 }
 
@@ -678,10 +602,10 @@ Outcome claim_elasticity(const Context& c) {
       const VectorXd F = many::solve(sys.A, sys.B);
       const many::Scene after = many::after(s, F);
       if (e == 2.0) {
-        kept.add(many::energy(after), E, energy_scale(E, sys.A, F));
+        kept.add(many::energy(after), E, many::energy_scale(E, sys.A, F));
       } else if (e == 1.0) {
         stopped.add(many::approach(after).cwiseAbs().maxCoeff(), 0.0,
-                    std::max(many::speed_scale(s), (sys.A.cwiseAbs() * F.cwiseAbs()).maxCoeff()));
+                    many::approach_scale(s, sys.A, F));
       } else {
         ++tried;
         gained += many::energy(after) > E * (1 + 1e-12) ? 1U : 0U;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "derivations/check.hpp"
+#include "many.hpp"
 #include "symbolic.hpp"
 #include "verdict.hpp"
 
@@ -31,6 +32,15 @@ const LineSymbols& line_symbols();
 /// conservation (symbolic), evaluated on random bodies (numeric).
 sym::Equation printed_1_1();
 std::vector<Finding> elastic_line_findings(const sym::Equation& candidate, const Context& context);
+
+/// The numeric findings on a system assembled from printed coefficients (sections 4 and 5), over
+/// random scenes (with rigid bodies when `rigid`, and static bodies): solved, it keeps the energy
+/// (elastic) or equalises every contact (inelastic); it equals A = J M^-1 J^T and B = J (e v)
+/// built from the contact Jacobian; and the library's multipoint::assemble gives the same.
+std::vector<Finding> printed_system_findings(
+    const Context& context, bool rigid, bool elastic,
+    const std::function<many::System(const many::Scene&)>& assemble_printed,
+    const std::string& scenes);
 
 /// Shorthand to build checks.
 Check make_check(std::string id, std::string section, std::optional<std::string> equation,

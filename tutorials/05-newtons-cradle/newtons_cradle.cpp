@@ -3,7 +3,7 @@
 // others, collided three ways:
 //   simultaneous  the paper's linear system over all contacts at once (multipoint::resolve);
 //   serial        one contact at a time, the fastest-closing first, with the single-contact formula
-//                 (a method local to this lab; the library has no serial solver);
+//                 (impulse::methods::resolve_serial, which lab 7 compares with the other methods);
 //   continuous    the balls joined by springs that only push (linear or Hertz), integrated in time
 //                 with GSL's ODE solver until no pair is in contact or closing.
 //
@@ -63,33 +63,35 @@ Velocities simultaneous(std::size_t balls, impulse::Elasticity e) {
   return after;
 }
 
-// --- serial: pairwise collisions, one at a time (local to this lab) -----------------------------
+// --- serial: pairwise collisions, one at a time (impulse::methods::resolve_serial, lab 7) -------
 
 struct Serial {
   Velocities v;
   int collisions = 0;
 };
 
-// Resolves the contact that closes fastest with the one-contact formula (1.3), then looks again,
+// Resolves the contact that closes fastest with the single-contact formula, then looks again,
 // until no contact closes. Each step keeps momentum; at elasticity 2 each also keeps the energy.
 Serial serial(std::size_t balls, impulse::Elasticity e) {
-  namespace one_d = impulse::one_d;
-  Serial s{initial(balls), 0};
-  constexpr int limit = 100000;  // below elasticity 2 the pairs close ever more slowly
-  for (; s.collisions < limit; ++s.collisions) {
-    std::size_t fastest = 0;
-    for (std::size_t i = 1; i + 1 < balls; ++i) {
-      fastest = s.v[i] - s.v[i + 1] > s.v[fastest] - s.v[fastest + 1] ? i : fastest;
-    }
-    if (s.v[fastest] - s.v[fastest + 1] <= 1e-12 * speed) {
-      return s;
-    }
-    const one_d::Collision c = one_d::collide(one_d::from_velocity(mass, s.v[fastest]), e,
-                                              one_d::from_velocity(mass, s.v[fastest + 1]), e, 1.0);
-    s.v[fastest] = one_d::velocity(c.first);
-    s.v[fastest + 1] = one_d::velocity(c.second);
+  std::vector<mp::Body> bodies;
+  std::vector<mp::Contact> contacts;
+  for (double v : initial(balls)) {
+    bodies.emplace_back(impulse::material_2d::from_velocity(mass, {v, 0.0}));
   }
-  throw std::runtime_error("serial collisions did not end");
+  for (std::size_t i = 0; i + 1 < balls; ++i) {
+    contacts.push_back({i, i + 1, Eigen::Vector2d::UnitX(), Eigen::Vector2d::Zero()});
+  }
+  const impulse::methods::SerialResolution r =
+      impulse::methods::resolve_serial(bodies, e, contacts);
+  if (r.diagnostics.status != impulse::methods::SerialStatus::finished) {
+    throw std::runtime_error("serial collisions did not end");
+  }
+  Serial s;
+  for (const mp::Body& b : r.after) {
+    s.v.push_back(impulse::material_2d::velocity(std::get<impulse::material_2d::PointMass>(b)).x());
+  }
+  s.collisions = static_cast<int>(r.diagnostics.order.size());
+  return s;
 }
 
 // --- continuous: springs between neighbours, integrated in time ---------------------------------

@@ -9,6 +9,9 @@
 #include "impulse/core/solve.hpp"
 #include "impulse/core/system.hpp"
 #include "impulse/material_2d/material_2d.hpp"
+#include "impulse/methods/complementarity.hpp"
+#include "impulse/methods/methods.hpp"
+#include "impulse/methods/serial.hpp"
 #include "impulse/multipoint/multipoint.hpp"
 #include "impulse/one_d/one_d.hpp"
 #include "impulse/rigid_2d/rigid_2d.hpp"
@@ -22,5 +25,6 @@
 /// each paper section live in a namespace of their own: impulse::one_d (section 1),
 /// impulse::material_2d (section 2), impulse::rigid_2d (section 3), impulse::multipoint
 /// (sections 4 and 5); impulse::scene turns a scene file's bodies and contacts into a solved
-/// collision.
+/// collision. impulse::methods goes beyond the paper: impulses that only push, and contacts
+/// resolved one at a time.
 namespace impulse {}

@@ -5,6 +5,8 @@
 #include <array>
 #include <cerrno>
 #include <cfenv>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -314,7 +316,10 @@ const std::vector<std::string_view> material_keys{"name",     "kind",     "mass"
 const std::vector<std::string_view> rigid_keys = body_keys;
 const std::vector<std::string_view> static_keys{"name", "kind"};
 const std::vector<std::string_view> contact_keys{"bumper", "wedge", "normal", "point"};
-const std::vector<std::string_view> solver_keys{"dependent", "inconsistent"};
+const std::vector<std::string_view> solver_keys{"dependent", "inconsistent", "method",
+                                                "max_collisions"};
+// The largest bound on serial collisions a scene may ask for (each costs a scan of the contacts).
+constexpr double most_collisions = 1e9;
 
 std::string join(const std::vector<std::string_view>& words) {
   std::string text;
@@ -358,7 +363,7 @@ class Reader {
       scene.contacts.push_back(contact(contacts[v], element("contacts", v)));
     }
     if (const json* s = optional(document, "solver")) {
-      scene.solver = solver(*s, "solver");
+      solver(*s, "solver", scene);
     }
     refuse_dense_beyond_limit(scene);
     return scene;
@@ -579,10 +584,12 @@ class Reader {
     return c;
   }
 
-  SolverOptions solver(const json& value, const std::string& path) const {
-    require_object(value, path, "an object with \"dependent\" and/or \"inconsistent\"");
+  void solver(const json& value, const std::string& path, Scene& scene) const {
+    require_object(value, path,
+                   "an object with \"dependent\", \"inconsistent\", \"method\" and/or "
+                   "\"max_collisions\"");
     refuse_unknown_keys(value, path, solver_keys, solver_keys, "");
-    SolverOptions options;
+    SolverOptions& options = scene.solver;
     if (const json* d = optional(value, "dependent")) {
       options.dependent = member_of<DependentPolicy>(
           *d, child(path, "dependent"),
@@ -595,7 +602,22 @@ class Reader {
           {{to_string(InconsistentPolicy::least_squares), InconsistentPolicy::least_squares},
            {to_string(InconsistentPolicy::drop_equation), InconsistentPolicy::drop_equation}});
     }
-    return options;
+    if (const json* m = optional(value, "method")) {
+      using methods::Method;
+      scene.method =
+          member_of<Method>(*m, child(path, "method"),
+                            {{methods::to_string(Method::simultaneous), Method::simultaneous},
+                             {methods::to_string(Method::complementarity), Method::complementarity},
+                             {methods::to_string(Method::serial), Method::serial}});
+    }
+    if (const json* c = optional(value, "max_collisions")) {
+      const std::string where = child(path, "max_collisions");
+      const double bound = c->is_number() ? c->get<double>() : 0.0;
+      if (!(bound >= 1.0 && bound <= most_collisions && bound == std::floor(bound))) {
+        expected(*c, where, "a whole number from 1 to 1000000000");
+      }
+      scene.serial.max_collisions = static_cast<std::int64_t>(bound);
+    }
   }
 
   // The policies other than the defaults are served by the dense method only (see
@@ -782,6 +804,36 @@ nlohmann::ordered_json to_json(const Result& result) {
   system["policy"] = std::string(to_string(s.options.dependent));
   system["condition_estimate"] = s.condition_estimate;
   out["system"] = std::move(system);
+
+  // Added for the other methods (issue 9), after the keys above so that their order stays; the
+  // paper's method writes none, so that its report is the one the scene format specifies.
+  if (result.method != methods::Method::simultaneous) {
+    out["method"] = std::string(methods::to_string(result.method));
+  }
+  if (result.method == methods::Method::complementarity) {
+    const methods::ComplementaritySolution& c = result.complementarity;
+    ojson slack = ojson::array();
+    for (Eigen::Index v = 0; v < c.w.size(); ++v) {
+      slack.push_back(clean(c.w(v)));
+    }
+    out["complementarity"] = {{"algorithm", std::string(methods::to_string(c.algorithm))},
+                              {"iterations", c.iterations},
+                              {"complementarity_residual", clean(c.residual)},
+                              {"converged", c.status == methods::LcpStatus::solved},
+                              {"least_norm", c.least_norm},
+                              {"slack", std::move(slack)}};
+  } else if (result.method == methods::Method::serial) {
+    const methods::SerialDiagnostics& serial = result.serial;
+    ojson order = ojson::array();
+    for (const Eigen::Index v : serial.order) {
+      order.push_back(v);
+    }
+    out["serial"] = {{"collisions", serial.order.size()},
+                     {"passes", serial.passes},
+                     {"order", std::move(order)},
+                     {"max_collisions", serial.max_collisions},
+                     {"finished", serial.status == methods::SerialStatus::finished}};
+  }
   return out;
 }
 

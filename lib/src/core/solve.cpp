@@ -168,32 +168,37 @@ bool factor_shifted(const SparseMatrix& M, Shifted& shifted) {
   return shifted.ldlt.info() == Eigen::Success;
 }
 
-// Conjugate gradients on the consistent positive semi-definite system M x = rhs, started from
-// zero, preconditioned by (M + lambda I)^-1 (`precondition(r)`, which must be an approximation of
-// a function of M, so that every
-// iterate stays in the range of M, up to rounding): on a dependent system they converge to the
-// minimum-norm solution, as unpreconditioned CG would, only in far fewer steps.
+// Restarted, preconditioned conjugate gradients on K T p-steps, started from x = 0.
 //
-// It stops when |rhs - M x| <= tolerance (| |M| |x| | + |rhs|): the residual against the size
+// `step(p)` maps a search direction p (one entry per row of K) to the step it makes in the
+// unknowns x: the identity when K = M is the consistent positive semi-definite system itself
+// (conjugate_gradients), G^T when K = G and the unknowns are x = G^T y of G G^T y = g
+// (range_solution). Each step then adds alpha step(p) to x and removes alpha K step(p) from the
+// residual; the curvature p^T K step(p) is p^T M p, or |G^T p|^2.
+//
+// It stops when |rhs - K x| <= tolerance (| |K| |x| | + |rhs|): the residual against the size
 // of the terms it is the sum of, the level at which rounding leaves it (a residual relative to
 // |rhs| alone can be out of reach when the impulses are much larger than the right-hand side,
 // e.g. at the foot of a tall stack). That size is taken at each restart; in between, the last
 // one (smaller, as x grows) makes the test stricter. When the recursive residual passes the
 // test, the true one is computed; if it fails, the iteration restarts from it, unless the last
-// restart gained less than a factor 2 (rounding level). Returns the number of steps.
-template <typename Preconditioner>
-int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs,
-                        const Preconditioner& precondition, double tolerance, int max_iterations,
-                        VectorXd& x) {
-  x = VectorXd::Zero(M.cols());
-  const SparseMatrix M_abs = M.cwiseAbs();
+// restart gained less than a factor 2 (rounding level). A step longer than largest_step, or a
+// curvature that is not positive, means rounding has taken over: it stops before that step.
+// Returns the number of steps.
+template <typename Step, typename Preconditioner>
+int restarted_conjugate_gradients(const SparseMatrix& K, const VectorXd& rhs, const Step& step,
+                                  const Preconditioner& precondition, double tolerance,
+                                  int max_iterations, VectorXd& x) {
+  x = VectorXd::Zero(K.cols());
+  const SparseMatrix K_abs = K.cwiseAbs();
   const double rhs_norm = rhs.norm();
-  double terms = rhs_norm;  // | |M| |x| | + |rhs| at the last restart
+  double terms = rhs_norm;  // | |K| |x| | + |rhs| at the last restart
   const auto reached = [&](double residual) { return residual <= tolerance * terms; };
   VectorXd r = rhs;
-  VectorXd z(M.rows());
-  VectorXd p(M.rows());
-  VectorXd Mp(M.rows());
+  VectorXd z(K.rows());
+  VectorXd p(K.rows());
+  VectorXd dx(K.cols());
+  VectorXd Kdx(K.rows());
   int steps = 0;
   double rz = 0.0;
   double last_true = std::numeric_limits<double>::infinity();
@@ -201,8 +206,8 @@ int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs,
   while (steps < max_iterations) {
     if (restart) {
       const double true_residual = r.norm();
-      VectorXd sizes(M.rows());
-      sizes.noalias() = M_abs * x.cwiseAbs();
+      VectorXd sizes(K.rows());
+      sizes.noalias() = K_abs * x.cwiseAbs();
       terms = sizes.norm() + rhs_norm;
       if (reached(true_residual) || !(true_residual < 0.5 * last_true)) {
         break;
@@ -213,18 +218,19 @@ int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs,
       rz = r.dot(z);
       restart = false;
     }
-    Mp.noalias() = M * p;
-    const double curvature = p.dot(Mp);
+    dx = step(p);
+    Kdx.noalias() = K * dx;
+    const double curvature = p.dot(Kdx);
     const double alpha = rz / curvature;
     if (!(curvature > 0.0) || !(rz > 0.0) || !(alpha <= largest_step)) {
       break;  // rounding has taken over the direction (see largest_step): stop before the step
     }
-    x += alpha * p;
-    r -= alpha * Mp;
+    x += alpha * dx;
+    r -= alpha * Kdx;
     ++steps;
     if (reached(r.norm())) {
       r = rhs;
-      r.noalias() -= M * x;  // the true residual
+      r.noalias() -= K * x;  // the true residual
       restart = true;
       continue;
     }
@@ -236,68 +242,30 @@ int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs,
   return steps;
 }
 
+// Conjugate gradients on the consistent positive semi-definite system M x = rhs, preconditioned
+// by (M + lambda I)^-1 (`precondition(r)`, which must be an approximation of a function of M, so
+// that every iterate stays in the range of M, up to rounding): on a dependent system they
+// converge to the minimum-norm solution, as unpreconditioned CG would, only in far fewer steps.
+template <typename Preconditioner>
+int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs,
+                        const Preconditioner& precondition, double tolerance, int max_iterations,
+                        VectorXd& x) {
+  const auto same = [](const VectorXd& p) -> const VectorXd& { return p; };
+  return restarted_conjugate_gradients(M, rhs, same, precondition, tolerance, max_iterations, x);
+}
+
 // Conjugate gradients on G G^T y = g (g in the range of G), preconditioned by
 // `precondition`, carried out on x = G^T y instead of y: every step adds alpha G^T p to x and
 // the residual is g - G x. y itself, which the preconditioner may fill with large parts along
 // the null space of G^T (directions no contact constrains, amplified by 1/lambda), is never
 // accumulated, and G^T removes those parts from each step. x stays in the range of G^T: it is
-// the minimum-norm solution of G x = g. Stops when |g - G x| <= tolerance (| |G| |x| | + |g|)
-// (as conjugate_gradients) or when a restart from the true residual gains less than a factor 2.
-// Returns the number of steps.
+// the minimum-norm solution of G x = g.
 template <typename Preconditioner>
 int range_solution(const SparseMatrix& G, const VectorXd& g, const Preconditioner& precondition,
                    double tolerance, int max_iterations, VectorXd& x) {
-  x = VectorXd::Zero(G.cols());
-  const SparseMatrix G_abs = G.cwiseAbs();
-  const double g_norm = g.norm();
-  double terms = g_norm;
-  const auto reached = [&](double residual) { return residual <= tolerance * terms; };
-  VectorXd r = g;
-  VectorXd z(G.rows());
-  VectorXd p(G.rows());
-  VectorXd q(G.cols());
-  VectorXd Gq(G.rows());
-  int steps = 0;
-  double rz = 0.0;
-  double last_true = std::numeric_limits<double>::infinity();
-  bool restart = true;
-  while (steps < max_iterations) {
-    if (restart) {
-      const double true_residual = r.norm();
-      VectorXd sizes(G.rows());
-      sizes.noalias() = G_abs * x.cwiseAbs();
-      terms = sizes.norm() + g_norm;
-      if (reached(true_residual) || !(true_residual < 0.5 * last_true)) {
-        break;
-      }
-      last_true = true_residual;
-      z = precondition(r);
-      p = z;
-      rz = r.dot(z);
-      restart = false;
-    }
-    q.noalias() = G.transpose() * p;
-    const double curvature = q.squaredNorm();  // p^T G G^T p
-    const double alpha = rz / curvature;
-    if (!(curvature > 0.0) || !(rz > 0.0) || !(alpha <= largest_step)) {
-      break;  // rounding has taken over the direction (see largest_step): stop before the step
-    }
-    x += alpha * q;
-    Gq.noalias() = G * q;
-    r -= alpha * Gq;
-    ++steps;
-    if (reached(r.norm())) {
-      r = g;
-      r.noalias() -= G * x;  // the true residual
-      restart = true;
-      continue;
-    }
-    z = precondition(r);
-    const double rz_next = r.dot(z);
-    p = z + (rz_next / rz) * p;
-    rz = rz_next;
-  }
-  return steps;
+  const auto transposed = [&G](const VectorXd& p) -> VectorXd { return G.transpose() * p; };
+  return restarted_conjugate_gradients(G, g, transposed, precondition, tolerance, max_iterations,
+                                       x);
 }
 
 // Solves a system that carries its factor with sparse factorisations only. Leaves solution.A

@@ -249,6 +249,45 @@ bool all_finite(const Result& r) {
   return ok;
 }
 
+// The other methods (issue 9): the paper's system is assembled and solved as always, for its
+// diagnostics (rank, condition), and the method's impulses replace its Fdt.
+void solve_by_method(const Scene& scene, const std::vector<multipoint::Body>& before,
+                     const std::vector<Elasticity>& es,
+                     const std::vector<multipoint::Contact>& contacts, Result& result,
+                     std::vector<multipoint::Body>& after) {
+  const ContactSystem system = multipoint::assemble(before, es, contacts);
+  result.system = impulse::solve(system, scene.solver);
+  result.status = result.system.status;
+  after = before;
+  if (result.status != SolveStatus::success) {
+    return;
+  }
+  if (scene.method == methods::Method::complementarity) {
+    methods::ComplementarityOptions options = scene.complementarity;
+    options.dependent = scene.solver.dependent;
+    result.complementarity = methods::solve_complementarity(system, options);
+    if (result.complementarity.status == methods::LcpStatus::non_finite) {
+      result.status = SolveStatus::non_finite;
+      return;
+    }
+    result.system.Fdt = result.complementarity.Fdt;
+  } else {
+    methods::SerialResolution serial = methods::resolve_serial(before, es, contacts, scene.serial);
+    if (serial.diagnostics.status == methods::SerialStatus::non_finite) {
+      result.serial = std::move(serial.diagnostics);
+      result.status = SolveStatus::non_finite;
+      return;
+    }
+    result.serial = std::move(serial.diagnostics);
+    result.system.Fdt = std::move(serial.Fdt);
+  }
+  const Eigen::VectorXd residual =
+      system.is_sparse() ? Eigen::VectorXd(system.sparse_A() * result.system.Fdt - system.B())
+                         : Eigen::VectorXd(system.A() * result.system.Fdt - system.B());
+  result.system.residual = residual.norm();
+  after = multipoint::apply_impulses(before, contacts, result.system.Fdt);
+}
+
 }  // namespace
 
 void validate(const Scene& scene) {
@@ -263,6 +302,10 @@ void validate(const Scene& scene) {
   }
   if (scene.contacts.empty()) {
     refuse("contacts", "must hold at least one contact, got none");
+  }
+  if (scene.serial.max_collisions < 0) {
+    refuse("solver.max_collisions",
+           "must be at least 1, got " + std::to_string(scene.serial.max_collisions));
   }
   std::unordered_map<std::string_view, std::size_t> names;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
@@ -332,13 +375,19 @@ Result solve(const Scene& scene) {
   const std::vector<multipoint::Body> before = model_bodies(scene);
   const std::vector<multipoint::Contact> contacts = model_contacts(scene);
   const std::vector<Elasticity> es = elasticities(scene);
-  multipoint::Resolution resolution = multipoint::resolve(before, es, contacts, scene.solver);
 
   Result result;
   result.dimension = scene.dimension;
-  result.status = resolution.solution.status;
-  result.system = std::move(resolution.solution);
-  const std::vector<multipoint::Body>& after = resolution.after;
+  result.method = scene.method;
+  std::vector<multipoint::Body> after;
+  if (scene.method == methods::Method::simultaneous) {
+    multipoint::Resolution resolution = multipoint::resolve(before, es, contacts, scene.solver);
+    result.status = resolution.solution.status;
+    result.system = std::move(resolution.solution);
+    after = std::move(resolution.after);
+  } else {
+    solve_by_method(scene, before, es, contacts, result, after);
+  }
 
   for (std::size_t k = 0; k < before.size(); ++k) {
     result.bodies.push_back({scene.bodies[k].name, scene.bodies[k].kind, motion_of(before[k]),
@@ -365,6 +414,18 @@ Result solve(const Scene& scene) {
     result.status = SolveStatus::non_finite;
   }
   return result;
+}
+
+bool finished(const Result& result) {
+  switch (result.method) {
+    case methods::Method::complementarity:
+      return result.complementarity.status != methods::LcpStatus::infeasible;
+    case methods::Method::serial:
+      return result.serial.status == methods::SerialStatus::finished;
+    case methods::Method::simultaneous:
+      break;
+  }
+  return true;
 }
 
 }  // namespace impulse::scene

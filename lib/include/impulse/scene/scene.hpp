@@ -12,6 +12,9 @@
 
 #include "impulse/core/elasticity.hpp"
 #include "impulse/core/solve.hpp"
+#include "impulse/methods/complementarity.hpp"
+#include "impulse/methods/methods.hpp"
+#include "impulse/methods/serial.hpp"
 #include "impulse/multipoint/multipoint.hpp"
 
 /// @brief A scene as a student writes it (see the scene format), and everything a report of its
@@ -75,6 +78,16 @@ struct Scene {
   std::vector<Body> bodies;          ///< at least one
   std::vector<Contact> contacts;     ///< at least one
   SolverOptions solver;              ///< the policies for dependent and inconsistent systems
+  // Added for the other methods (issue 9), after the fields above so that their order stays.
+  /// How the impulses are found (the scene format's `solver.method`); the paper's
+  /// simultaneous system by default.
+  methods::Method method = methods::Method::simultaneous;
+  /// Method serial: the bound on collisions (`solver.max_collisions`) and the approach
+  /// tolerance.
+  methods::SerialOptions serial;
+  /// Method complementarity: the algorithm and its tolerance. Its `dependent` policy is ignored:
+  /// the scene's `solver.dependent` applies.
+  methods::ComplementarityOptions complementarity;
 };
 
 /// @brief Throws InvalidInput for anything the scene format refuses: a dimension other than 1
@@ -83,7 +96,7 @@ struct Scene {
 /// coordinate, a motion whose momentum or velocity overflows, a negative elasticity, a body
 /// without an elasticity when the scene has no default, a contact index out of range, a body in
 /// contact with itself, a contact between two static bodies, a normal that is not a unit vector
-/// (±1 in 1D), a rigid body's contact without a point.
+/// (±1 in 1D), a rigid body's contact without a point, a negative bound on serial collisions.
 /// @param scene the scene
 void validate(const Scene& scene);
 
@@ -160,12 +173,32 @@ struct Result {
   Eigen::Vector2d momentum_before = Eigen::Vector2d::Zero();  ///< of the movable bodies
   Eigen::Vector2d momentum_after = Eigen::Vector2d::Zero();   ///< of the movable bodies
   std::vector<ContactReport> contacts;                        ///< one per contact
-  Solution system;  ///< A, B, Fdt, rank, residual, policies
+  /// A, B, Fdt, rank, residual, policies. Whatever the method, A and B are the paper's system of
+  /// the scene and rank, dependent, consistent and condition_estimate describe it; Fdt is the
+  /// method's impulses and residual is @f$ \|A\,F\,dt - B\| @f$ for them.
+  Solution system;
+  // Added for the other methods (issue 9), after the fields above so that their order stays.
+  methods::Method method = methods::Method::simultaneous;  ///< the method that found Fdt
+  /// Method complementarity: the solution with its slack and diagnostics (its Fdt is
+  /// system.Fdt). Empty otherwise.
+  methods::ComplementaritySolution complementarity;
+  /// Method serial: the order of the collisions, the passes and whether they finished. A
+  /// result whose serial status is not SerialStatus::finished reports the state at the bound.
+  methods::SerialDiagnostics serial;
 };
 
-/// @brief Validates, solves with multipoint::resolve and reports.
+/// @brief Validates, solves and reports: with multipoint::resolve for the paper's method, else
+/// with methods::solve_complementarity or methods::resolve_serial (the system A·Fdt = B is then
+/// solved as well, for its diagnostics).
 /// @param scene the scene (validated: InvalidInput as in validate)
 /// @return the report
 [[nodiscard]] Result solve(const Scene& scene);
+
+/// @brief Whether the method finished: false when serial collisions stopped at their bound or
+/// a complementarity problem has no solution (which no valid scene gives).
+/// @param result a solved scene
+/// @return true when the result is the method's answer (possibly approximate: see
+///         methods::LcpStatus::iteration_limit)
+[[nodiscard]] bool finished(const Result& result);
 
 }  // namespace impulse::scene

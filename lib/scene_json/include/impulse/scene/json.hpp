@@ -77,12 +77,21 @@ struct ReadLimits {
 [[nodiscard]] std::string too_large_message(std::string_view source, std::size_t max_bytes);
 
 /// @brief The report as `impulselab solve --format json` prints it (the scene format's
-/// "Result"): `impulses`, `bodies`, `energy`, `momentum`, `contacts`, `system`.
+/// "Result"): `impulses`, `bodies`, `energy`, `momentum`, `contacts`, `system`, and for the
+/// methods that are not the paper's `method` and their diagnostics.
 ///
 /// In 1D every vector is a plain number (its x coordinate). Rigid bodies add
 /// `angular_velocity` and `angular_momentum`; `system` adds `condition_estimate`. `system.A`
 /// is `null` when the solution does not hold A (a solver that never forms it); `B` is always
 /// given. Negative zeros are written as 0.
+///
+/// `method` names the method, "complementarity" or "serial" (it is absent for the paper's
+/// simultaneous method, whose report stays exactly the specified one), followed by the
+/// method's diagnostics: `complementarity` with `algorithm` ("active-set", "lemke" or
+/// "projected-gauss-seidel"), `iterations` (pivots or sweeps), `complementarity_residual`
+/// (@f$ \max_v |\min(A_{vv} F_v, w_v)| @f$), `converged`, `least_norm` and `slack`
+/// (@f$ w = A\,F\,dt - B @f$ per contact); `serial` with `collisions`, `passes`, `order` (the
+/// contact of each collision), `max_collisions` and `finished`.
 /// @param result a result whose status is SolveStatus::success
 /// @return the JSON document, keys in the order of the scene format
 [[nodiscard]] nlohmann::ordered_json to_json(const Result& result);

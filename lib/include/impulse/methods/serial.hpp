@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// @file
+/// @brief Serial collisions: one contact at a time, the fastest-approaching first.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "impulse/core/elasticity.hpp"
+#include "impulse/multipoint/multipoint.hpp"
+
+namespace impulse::methods {
+
+/// @brief How serial collisions ended.
+enum class SerialStatus {
+  finished,         ///< no contact approaches any more
+  collision_limit,  ///< the bound on collisions was reached while a contact still approached
+  non_finite,       ///< a collision gave a NaN or an infinity (numbers beyond doubles)
+};
+
+/// @brief The name of a status ("finished", "collision-limit", "non-finite").
+/// @param status the status
+/// @return its name
+[[nodiscard]] std::string_view to_string(SerialStatus status);
+
+/// @brief Collisions allowed per contact when SerialOptions::max_collisions is 0.
+inline constexpr std::int64_t collisions_per_contact = 1000;
+
+/// @brief The bound and the tolerance of serial collisions.
+struct SerialOptions {
+  /// The most collisions before giving up; 0 means collisions_per_contact times the number of
+  /// contacts. Negative values throw InvalidInput.
+  std::int64_t max_collisions = 0;
+  /// A contact approaches when its approach speed exceeds this fraction of the largest speed of
+  /// a body's point at any contact before the collisions (rounding leaves a resolved contact at
+  /// about 1e-16 of it).
+  double approach_tolerance = 1e-12;
+};
+
+/// @brief What serial collisions did, besides the impulses.
+struct SerialDiagnostics {
+  SerialStatus status = SerialStatus::finished;  ///< finished, or why not
+  std::vector<Eigen::Index> order;  ///< the contact resolved at each collision, in turn
+  /// The order cut into passes: a pass ends where a contact comes up that the pass has already
+  /// resolved. One pass means that no contact needed a second collision.
+  std::int64_t passes = 0;
+  std::int64_t max_collisions = 0;      ///< the bound that applied
+  double approach_threshold = 0.0;      ///< the approach speed above which a contact approaches
+  Eigen::Index still_approaching = -1;  ///< collision_limit: the fastest contact left, else -1
+  double approach_left = 0.0;           ///< collision_limit: its approach speed
+};
+
+/// @brief Serial collisions of a scene: the impulses, the bodies after and the diagnostics.
+struct SerialResolution {
+  SerialDiagnostics diagnostics;        ///< status, order, passes, bound
+  Eigen::VectorXd Fdt;                  ///< the sum of the impulses each contact received
+  std::vector<multipoint::Body> after;  ///< the bodies after the last collision
+};
+
+/// @brief Resolves the contacts one at a time: the contact with the largest approach speed
+/// (above SerialOptions::approach_tolerance of the speeds) collides alone, then the next, until
+/// no contact approaches or the bound on collisions is reached.
+///
+/// Each collision is the paper's single-contact formula for its two bodies: the 1×1 system
+/// @f$ F\,dt\,(a_1 + a_2) = b_1 + b_2 @f$ of their blocks at that one contact
+/// (multipoint::contribution, which is (1.3), (3.6)/(3.10), (4.5)/(4.8) or (5.3)/(5.5) with one
+/// contact), each body with its own elasticity. At elasticity 2 each collision keeps the kinetic
+/// energy, so the whole sequence does; below 2 the same pair can collide again and again (a
+/// partly elastic collision leaves the first body following the second), in principle without
+/// end (inelastic collapse), which the bound cuts off with SerialStatus::collision_limit.
+/// @param bodies the bodies (validated with the contacts, InvalidInput)
+/// @param elasticities one per body (a size mismatch throws InvalidInput)
+/// @param contacts the contacts
+/// @param options the bound and the tolerance
+/// @return the summed impulses, the bodies after and the order of the collisions
+[[nodiscard]] SerialResolution resolve_serial(std::span<const multipoint::Body> bodies,
+                                              std::span<const Elasticity> elasticities,
+                                              std::span<const multipoint::Contact> contacts,
+                                              const SerialOptions& options = {});
+
+/// @brief As the other overload, every body with the same elasticity.
+/// @param bodies the bodies
+/// @param elasticity everyone's elasticity
+/// @param contacts the contacts
+/// @param options the bound and the tolerance
+/// @return the summed impulses, the bodies after and the order of the collisions
+[[nodiscard]] SerialResolution resolve_serial(std::span<const multipoint::Body> bodies,
+                                              Elasticity elasticity,
+                                              std::span<const multipoint::Contact> contacts,
+                                              const SerialOptions& options = {});
+
+/// @brief The passes of an order of collisions: the order cut wherever a contact comes up that
+/// the current pass has already resolved.
+/// @param order the contacts in the order they collided
+/// @return the number of passes (0 for no collision)
+[[nodiscard]] std::int64_t count_passes(std::span<const Eigen::Index> order);
+
+}  // namespace impulse::methods

@@ -1,0 +1,632 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "impulse/methods/complementarity.hpp"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "impulse/core/error.hpp"
+
+namespace impulse::methods {
+
+std::string_view to_string(LcpAlgorithm algorithm) {
+  switch (algorithm) {
+    case LcpAlgorithm::automatic:
+      return "automatic";
+    case LcpAlgorithm::lemke:
+      return "lemke";
+    case LcpAlgorithm::active_set:
+      return "active-set";
+    case LcpAlgorithm::projected_gauss_seidel:
+      return "projected-gauss-seidel";
+  }
+  return "?";
+}
+
+std::string_view to_string(LcpStatus status) {
+  switch (status) {
+    case LcpStatus::solved:
+      return "solved";
+    case LcpStatus::iteration_limit:
+      return "iteration-limit";
+    case LcpStatus::inaccurate:
+      return "inaccurate";
+    case LcpStatus::infeasible:
+      return "infeasible";
+    case LcpStatus::non_finite:
+      return "non-finite";
+  }
+  return "?";
+}
+
+namespace {
+
+using Eigen::Index;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+void require_sizes(Index rows, Index cols, Index size) {
+  if (rows != cols || rows != size) {
+    throw InvalidInput("A must be square and B of its size, got A " + std::to_string(rows) + "x" +
+                       std::to_string(cols) + " and B of " + std::to_string(size));
+  }
+}
+
+void require_tolerance(double tolerance) {
+  if (!(tolerance > 0.0 && tolerance < 1.0)) {
+    throw InvalidInput("the complementarity tolerance must lie in (0, 1), got " +
+                       format_number(tolerance));
+  }
+}
+
+// The slack w = A F - B, the size of its terms and the residual of the conditions. The residual
+// compares the impulse and the slack in the same units, velocities: A_vv F_v is the change of
+// contact v's approach speed that its own impulse makes (max|min(F, w)| would compare an impulse
+// with a speed, and change with the unit of mass).
+template <typename Matrix>
+void measure(const Matrix& A, const VectorXd& B, ComplementaritySolution& s) {
+  s.w = A * s.Fdt - B;
+  const VectorXd terms = A.cwiseAbs() * s.Fdt.cwiseAbs() + B.cwiseAbs();
+  s.scale = terms.size() == 0 ? 0.0 : terms.maxCoeff();
+  const VectorXd diagonal = A.diagonal();
+  const VectorXd own = diagonal.cwiseProduct(s.Fdt);
+  s.residual = 0.0;
+  for (Index v = 0; v < s.w.size(); ++v) {
+    s.residual = std::max(s.residual, std::abs(std::min(own(v), s.w(v))));
+  }
+}
+
+bool meets(const ComplementaritySolution& s, double tolerance) {
+  return (s.Fdt.size() == 0 || s.Fdt.minCoeff() >= 0.0) && s.residual <= tolerance * s.scale;
+}
+
+// No contact: nothing to solve.
+ComplementaritySolution nothing(LcpAlgorithm algorithm) {
+  ComplementaritySolution s;
+  s.algorithm = algorithm;
+  s.least_norm = true;
+  return s;
+}
+
+ComplementaritySolution not_finite(Index n, LcpAlgorithm algorithm) {
+  ComplementaritySolution s;
+  s.status = LcpStatus::non_finite;
+  s.algorithm = algorithm;
+  s.Fdt = VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
+  s.w = s.Fdt;
+  s.residual = std::numeric_limits<double>::quiet_NaN();
+  s.scale = s.residual;
+  return s;
+}
+
+// ---- Lemke's complementary pivoting -------------------------------------------------------------
+//
+// The tableau holds w - M z - d z0 = q (M = A, q = -B, covering vector d = 1), one row per
+// contact, columns [w_1 … w_N | z_1 … z_N | z0], every row kept as "its basic variable plus the
+// others = rhs". The first pivot brings z0 in so that every w is non-negative; from then on the
+// variable that enters is the complement of the one that left, and the ratio test keeps every
+// basic variable non-negative, until z0 leaves (a solution) or no row limits the entering
+// variable (a ray). Ties in the ratio test are broken by the rows of the basis inverse (the w
+// columns) divided by the pivot column, the lexicographic rule: every row of [rhs | B^-1] stays
+// lexicographically positive, no basis repeats, and the method ends.
+
+struct Pivoted {
+  bool solved = false;
+  bool ray = false;  // ended on a ray (else, if not solved, out of pivots)
+  int pivots = 0;
+  VectorXd z;                  // the impulses of the final basis
+  std::vector<Index> support;  // the z that are basic at the end (their columns are independent)
+};
+
+// Lexicographic comparison of rows a and b of [rhs | T(:, 0..n-1)], each divided by its entry in
+// the pivot column: is row a smaller? Entries within `tie` are taken as equal.
+bool lexicographically_smaller(const MatrixXd& T, const VectorXd& rhs, Index a, Index b, Index c,
+                               Index n, double tie) {
+  const double ratio_a = rhs(a) / T(a, c);
+  const double ratio_b = rhs(b) / T(b, c);
+  if (std::abs(ratio_a - ratio_b) >
+      tie * std::max(1.0, std::max(std::abs(ratio_a), std::abs(ratio_b)))) {
+    return ratio_a < ratio_b;
+  }
+  for (Index k = 0; k < n; ++k) {
+    const double x = T(a, k) / T(a, c);
+    const double y = T(b, k) / T(b, c);
+    if (std::abs(x - y) > tie * std::max(1.0, std::max(std::abs(x), std::abs(y)))) {
+      return x < y;
+    }
+  }
+  return a < b;
+}
+
+Pivoted pivot(const MatrixXd& A, const VectorXd& B, int max_pivots) {
+  const Index n = B.size();
+  Pivoted result;
+  result.z = VectorXd::Zero(n);
+  // Scaled so that the largest entries of M and q are 1: the tolerances below are then absolute.
+  const double alpha = A.cwiseAbs().maxCoeff();
+  const double beta = B.cwiseAbs().maxCoeff();
+  if (beta == 0.0 || B.maxCoeff() <= 0.0) {
+    result.solved = true;  // q = -B >= 0: no impulse, and no contact is left wanting one
+    return result;
+  }
+  if (alpha == 0.0) {
+    result.ray = true;  // B has a positive entry that nothing can meet: a ray at once
+    return result;
+  }
+  const VectorXd q = -B / beta;
+  const Index z0 = 2 * n;
+  MatrixXd T(n, 2 * n + 1);
+  T.leftCols(n).setIdentity();
+  T.middleCols(n, n) = -A / alpha;
+  T.col(z0).setConstant(-1.0);
+  VectorXd rhs = q;
+  std::vector<Index> basis(static_cast<std::size_t>(n));
+  for (Index i = 0; i < n; ++i) {
+    basis[static_cast<std::size_t>(i)] = i;
+  }
+  constexpr double pivot_tolerance = 1e-12;
+  constexpr double tie = 1e-11;
+
+  const auto do_pivot = [&](Index r, Index c) {
+    const double p = T(r, c);
+    T.row(r) /= p;
+    rhs(r) /= p;
+    VectorXd column = T.col(c);
+    column(r) = 0.0;
+    const Eigen::RowVectorXd pivot_row = T.row(r);
+    T.noalias() -= column * pivot_row;
+    rhs -= column * rhs(r);
+    T.col(c).setZero();
+    T(r, c) = 1.0;
+    const Index left = basis[static_cast<std::size_t>(r)];
+    basis[static_cast<std::size_t>(r)] = c;
+    ++result.pivots;
+    return left;
+  };
+
+  // The first pivot: z0 enters at the row of the most negative q (the largest index among equal
+  // ones, which keeps every row lexicographically positive after the pivot).
+  Index r = 0;
+  for (Index i = 1; i < n; ++i) {
+    if (q(i) <= q(r) + tie) {
+      r = i;
+    }
+  }
+  Index entering = n + do_pivot(r, z0);  // w_r left: z_r enters
+
+  while (result.pivots < max_pivots) {
+    const double largest = T.col(entering).cwiseAbs().maxCoeff();
+    Index row = -1;
+    for (Index i = 0; i < n; ++i) {
+      if (!(T(i, entering) > pivot_tolerance * largest)) {
+        continue;
+      }
+      if (row < 0 || lexicographically_smaller(T, rhs, i, row, entering, n, tie)) {
+        row = i;
+      }
+    }
+    if (row < 0) {
+      result.ray = true;  // nothing limits the entering variable
+      return result;
+    }
+    // If z0 can leave at the same ratio, let it: the basis is then a solution.
+    const double best = rhs(row) / T(row, entering);
+    for (Index i = 0; i < n; ++i) {
+      if (basis[static_cast<std::size_t>(i)] == z0 && T(i, entering) > pivot_tolerance * largest &&
+          std::abs(rhs(i) / T(i, entering) - best) <= tie * std::max(1.0, std::abs(best))) {
+        row = i;
+      }
+    }
+    const Index left = do_pivot(row, entering);
+    if (left == z0) {
+      for (Index i = 0; i < n; ++i) {
+        const Index variable = basis[static_cast<std::size_t>(i)];
+        if (variable >= n && variable < 2 * n) {
+          result.z(variable - n) = std::max(0.0, rhs(i)) * beta / alpha;
+          result.support.push_back(variable - n);
+        }
+      }
+      std::sort(result.support.begin(), result.support.end());
+      result.solved = true;
+      return result;
+    }
+    entering = left < n ? left + n : left - n;  // the complement of the variable that left
+  }
+  return result;  // too many pivots (not expected: the lexicographic rule rules out cycling)
+}
+
+// The factor of A when the system carries one: A = G^T G, B = G^T g.
+struct Factor {
+  const MatrixXd* G = nullptr;
+  const VectorXd* g = nullptr;
+};
+
+// The least-norm impulses on the contacts `on` (zero elsewhere) that satisfy those contacts'
+// equations (A F)_v = B_v: from a complete orthogonal decomposition of G's columns `on` when the
+// factor is known (half the digits lost), else of A's block.
+VectorXd on_contacts(const MatrixXd& A, const VectorXd& B, const Factor& factor,
+                     const std::vector<Index>& on) {
+  VectorXd F = VectorXd::Zero(B.size());
+  if (on.empty()) {
+    return F;
+  }
+  // Contacts whose impulses move nothing (no movable body along their normals, which scene files
+  // refuse but hand-made systems may hold) keep the least impulse, 0. (Eigen's QR would also
+  // divide by the row count of an empty factor.)
+  VectorXd x;
+  if (factor.G != nullptr) {
+    const MatrixXd columns = (*factor.G)(Eigen::all, on);
+    if (columns.rows() == 0 || columns.isZero(0.0)) {
+      return F;
+    }
+    x = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(columns).solve(*factor.g);
+  } else {
+    const MatrixXd block = A(on, on);
+    if (block.isZero(0.0)) {
+      return F;
+    }
+    const VectorXd right = B(on);
+    x = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(block).solve(right);
+  }
+  F(on) = x;
+  return F;
+}
+
+ComplementaritySolution candidate(const MatrixXd& A, const VectorXd& B, VectorXd F) {
+  ComplementaritySolution s;
+  // Rounding can leave an impulse that should be 0 at -1e-17 or so: impulses only push.
+  s.Fdt = F.cwiseMax(0.0);
+  measure(A, B, s);
+  return s;
+}
+
+// The impulses of a pivoting's final basis, settled: recomputed from the equations of the
+// contacts in its support, then (minimum_norm) replaced by the least-norm solution when that
+// needs no clipping, and judged against the tolerance.
+ComplementaritySolution settle(const MatrixXd& A, const VectorXd& B, const Factor& factor,
+                               const Pivoted& p, DependentPolicy dependent, double tolerance,
+                               LcpAlgorithm algorithm) {
+  const Index n = B.size();
+  // The pivoting found which contacts carry an impulse; their impulses are recomputed from their
+  // equations, more accurately than a tableau's updates leave them.
+  ComplementaritySolution chosen =
+      candidate(A, B, p.solved ? on_contacts(A, B, factor, p.support) : VectorXd::Zero(n));
+  if (!meets(chosen, tolerance) && p.solved) {
+    ComplementaritySolution raw = candidate(A, B, p.z);
+    if (raw.residual < chosen.residual) {
+      chosen = std::move(raw);
+    }
+  }
+  if (p.solved && dependent == DependentPolicy::minimum_norm && meets(chosen, tolerance)) {
+    // Every solution gives the same A F (it minimises the convex 1/2 F^T A F - B^T F over
+    // F >= 0, and for A = G^T G that fixes G F), hence the same slack w. So the solutions are
+    // the F >= 0 that carry impulse only where w = 0 and satisfy those contacts' equations; the
+    // least-norm solution of those equations is the least-norm solution of the problem if it
+    // needs no clipping.
+    std::vector<Index> tight;
+    for (Index v = 0; v < n; ++v) {
+      if (chosen.w(v) <= tolerance * chosen.scale) {
+        tight.push_back(v);
+      }
+    }
+    const VectorXd F = on_contacts(A, B, factor, tight);
+    const double allowed =
+        tolerance * std::max(chosen.Fdt.cwiseAbs().maxCoeff(), F.cwiseAbs().maxCoeff());
+    if (F.minCoeff() >= -allowed) {
+      ComplementaritySolution least = candidate(A, B, F);
+      if (meets(least, tolerance)) {
+        chosen = std::move(least);
+        chosen.least_norm = true;
+      }
+    }
+  }
+  chosen.algorithm = algorithm;
+  chosen.iterations = p.pivots;
+  if (p.ray) {
+    chosen.status = LcpStatus::infeasible;  // for a positive semi-definite A: no solution exists
+  } else if (!p.solved) {
+    chosen.status = LcpStatus::inaccurate;  // out of pivots (not expected)
+  } else {
+    chosen.status = meets(chosen, tolerance) ? LcpStatus::solved : LcpStatus::inaccurate;
+  }
+  return chosen;
+}
+
+ComplementaritySolution lemke_with(const MatrixXd& A, const VectorXd& B, const Factor& factor,
+                                   DependentPolicy dependent, double tolerance) {
+  require_sizes(A.rows(), A.cols(), B.size());
+  require_tolerance(tolerance);
+  const Index n = B.size();
+  if (n > pivoting_limit) {
+    throw InvalidInput("Lemke's pivoting takes at most " + std::to_string(pivoting_limit) +
+                       " contacts (its tableau is dense), got " + std::to_string(n));
+  }
+  if (n == 0) {
+    return nothing(LcpAlgorithm::lemke);
+  }
+  if (!A.allFinite() || !B.allFinite()) {
+    return not_finite(n, LcpAlgorithm::lemke);
+  }
+  const int max_pivots = static_cast<int>(std::min<Index>(100 * (n + 1), 1000000));
+  return settle(A, B, factor, pivot(A, B, max_pivots), dependent, tolerance, LcpAlgorithm::lemke);
+}
+
+// ---- The active-set method (Lawson and Hanson, "Solving Least Squares Problems", 1974, ch. 23) --
+//
+// min |G F - g| over F >= 0. Its optimality conditions: F >= 0, s = G^T (G F - g) = A F - B >= 0
+// and F_v s_v = 0, the complementarity problem. P is the set of contacts allowed an impulse.
+
+Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, const VectorXd& B,
+                      double tolerance, int max_pivots) {
+  const Index n = G.cols();
+  Pivoted result;
+  VectorXd x = VectorXd::Zero(n);
+  std::vector<bool> passive(static_cast<std::size_t>(n), false);
+  std::vector<bool> refused(static_cast<std::size_t>(n), false);
+  const MatrixXd A_abs = A.cwiseAbs();
+  const VectorXd B_abs = B.cwiseAbs();
+  const auto in_set = [&](Index j) { return passive[static_cast<std::size_t>(j)]; };
+  const auto members = [&]() {
+    std::vector<Index> set;
+    for (Index j = 0; j < n; ++j) {
+      if (in_set(j)) {
+        set.push_back(j);
+      }
+    }
+    return set;
+  };
+  const auto least_squares = [&](const std::vector<Index>& set) {
+    const MatrixXd columns = G(Eigen::all, set);
+    return VectorXd(Eigen::CompleteOrthogonalDecomposition<MatrixXd>(columns).solve(g));
+  };
+  if (G.rows() == 0) {
+    result.z = x;
+    result.solved = true;  // nothing can move: no impulse does anything, and none is wanted
+    return result;
+  }
+  while (result.pivots < max_pivots) {
+    // The contact that most wants an impulse: the most negative slack among those without one.
+    const VectorXd want = G.transpose() * (g - G * x);  // -(A F - B)
+    const double scale = n == 0 ? 0.0 : (A_abs * x.cwiseAbs() + B_abs).maxCoeff();
+    Index t = -1;
+    for (Index j = 0; j < n; ++j) {
+      if (!in_set(j) && !refused[static_cast<std::size_t>(j)] &&
+          want(j) > 0.5 * tolerance * scale && (t < 0 || want(j) > want(t))) {
+        t = j;
+      }
+    }
+    if (t < 0) {
+      result.solved = true;
+      break;
+    }
+    passive[static_cast<std::size_t>(t)] = true;
+    ++result.pivots;
+    bool first = true;
+    while (result.pivots < max_pivots) {
+      const std::vector<Index> set = members();
+      const VectorXd z = least_squares(set);
+      const auto at = [&](Index j) {
+        return z(std::find(set.begin(), set.end(), j) - set.begin());
+      };
+      if (first && !(at(t) > 0.0)) {
+        // In exact arithmetic impossible (a contact with negative slack gets a positive
+        // impulse); rounding did it: refuse t until a step succeeds.
+        passive[static_cast<std::size_t>(t)] = false;
+        refused[static_cast<std::size_t>(t)] = true;
+        break;
+      }
+      first = false;
+      if (z.minCoeff() > 0.0) {
+        x.setZero();
+        x(set) = z;
+        std::fill(refused.begin(), refused.end(), false);
+        break;
+      }
+      // Move from x towards z as far as every impulse stays non-negative; drop those at zero.
+      double alpha = 1.0;
+      Index blocking = -1;
+      for (std::size_t k = 0; k < set.size(); ++k) {
+        const Index j = set[k];
+        const double zj = z(static_cast<Index>(k));
+        if (zj <= 0.0) {
+          const double step = x(j) > 0.0 ? x(j) / (x(j) - zj) : 0.0;  // no 0/0
+          if (blocking < 0 || step < alpha) {
+            alpha = step;
+            blocking = j;
+          }
+        }
+      }
+      for (std::size_t k = 0; k < set.size(); ++k) {
+        const Index j = set[k];
+        x(j) += alpha * (z(static_cast<Index>(k)) - x(j));
+      }
+      for (const Index j : set) {
+        if (j == blocking || x(j) <= 0.0) {
+          x(j) = 0.0;
+          passive[static_cast<std::size_t>(j)] = false;
+          ++result.pivots;
+        }
+      }
+    }
+  }
+  result.z = x;
+  result.support = members();
+  return result;
+}
+
+ComplementaritySolution active_set_with(const MatrixXd& G, const VectorXd& g,
+                                        DependentPolicy dependent, double tolerance) {
+  if (G.rows() != g.size()) {
+    throw InvalidInput("G must have one row per entry of g, got G " + std::to_string(G.rows()) +
+                       "x" + std::to_string(G.cols()) + " and g of " + std::to_string(g.size()));
+  }
+  require_tolerance(tolerance);
+  const Index n = G.cols();
+  if (n == 0) {
+    return nothing(LcpAlgorithm::active_set);
+  }
+  if (!G.allFinite() || !g.allFinite()) {
+    return not_finite(n, LcpAlgorithm::active_set);
+  }
+  const MatrixXd A = G.transpose() * G;
+  const VectorXd B = G.transpose() * g;
+  const int max_pivots = static_cast<int>(std::min<Index>(10 * (n + 1), 1000000));
+  const Pivoted p = lawson_hanson(G, g, A, B, tolerance, max_pivots);
+  return settle(A, B, Factor{&G, &g}, p, dependent, tolerance, LcpAlgorithm::active_set);
+}
+
+}  // namespace
+
+ComplementaritySolution lemke(const Eigen::Ref<const Eigen::MatrixXd>& A,
+                              const Eigen::Ref<const Eigen::VectorXd>& B, DependentPolicy dependent,
+                              double tolerance) {
+  return lemke_with(MatrixXd(A), VectorXd(B), Factor{}, dependent, tolerance);
+}
+
+ComplementaritySolution active_set(const Eigen::Ref<const Eigen::MatrixXd>& G,
+                                   const Eigen::Ref<const Eigen::VectorXd>& g,
+                                   DependentPolicy dependent, double tolerance) {
+  return active_set_with(MatrixXd(G), VectorXd(g), dependent, tolerance);
+}
+
+ComplementaritySolution projected_gauss_seidel(const SparseMatrix& A, const VectorXd& B,
+                                               double tolerance, int max_sweeps,
+                                               const VectorXd& start) {
+  require_sizes(A.rows(), A.cols(), B.size());
+  if (start.size() != 0 && start.size() != B.size()) {
+    throw InvalidInput("the start of projected Gauss-Seidel must give one impulse per contact (" +
+                       std::to_string(B.size()) + "), got " + std::to_string(start.size()));
+  }
+  require_tolerance(tolerance);
+  if (max_sweeps < 1) {
+    throw InvalidInput("projected Gauss-Seidel needs at least 1 sweep, got " +
+                       std::to_string(max_sweeps));
+  }
+  const Index n = B.size();
+  bool finite = B.allFinite();
+  for (Index k = 0; k < A.outerSize(); ++k) {
+    for (SparseMatrix::InnerIterator it(A, k); it; ++it) {
+      finite = finite && std::isfinite(it.value());
+    }
+  }
+  if (!finite) {
+    return not_finite(n, LcpAlgorithm::projected_gauss_seidel);
+  }
+  const SparseMatrix columns = A.isCompressed() ? A : SparseMatrix(A);
+  const VectorXd diagonal = columns.diagonal();
+  ComplementaritySolution s;
+  s.algorithm = LcpAlgorithm::projected_gauss_seidel;
+  s.Fdt =
+      start.size() == n && start.allFinite() ? VectorXd(start.cwiseMax(0.0)) : VectorXd::Zero(n);
+  bool feasible = true;
+  for (Index v = 0; v < n; ++v) {
+    // A zero diagonal means a zero row (A is positive semi-definite): the contact's impulse moves
+    // nothing, so it stays 0, the least; its slack is -B_v, which must not be negative.
+    feasible = feasible && (diagonal(v) > 0.0 || B(v) <= 0.0);
+    if (!(diagonal(v) > 0.0)) {
+      s.Fdt(v) = 0.0;
+    }
+  }
+  measure(columns, B, s);
+  while (feasible && !meets(s, tolerance) && s.iterations < max_sweeps) {
+    for (Index v = 0; v < n; ++v) {
+      if (!(diagonal(v) > 0.0)) {
+        continue;
+      }
+      // Row v of A is its column v (A is symmetric): w_v from the latest impulses.
+      const double w = columns.col(v).dot(s.Fdt) - B(v);
+      s.Fdt(v) = std::max(0.0, s.Fdt(v) - w / diagonal(v));
+    }
+    ++s.iterations;
+    measure(columns, B, s);
+  }
+  if (!feasible) {
+    s.status = LcpStatus::infeasible;
+  } else {
+    s.status = meets(s, tolerance) ? LcpStatus::solved : LcpStatus::iteration_limit;
+  }
+  return s;
+}
+
+ComplementaritySolution solve_complementarity(const ContactSystem& system,
+                                              const ComplementarityOptions& options) {
+  require_tolerance(options.tolerance);
+  const Index n = system.size();
+  LcpAlgorithm algorithm = options.algorithm;
+  if (algorithm == LcpAlgorithm::automatic) {
+    algorithm = n > pivoting_threshold ? LcpAlgorithm::projected_gauss_seidel
+                : system.has_factor()  ? LcpAlgorithm::active_set
+                                       : LcpAlgorithm::lemke;
+  }
+  // Projected Gauss-Seidel, started from the paper's impulses (see warm_start).
+  const auto iterate = [&]() {
+    VectorXd start;
+    if (options.warm_start) {
+      const Solution paper = solve(system);
+      if (paper.status == SolveStatus::success) {
+        start = paper.Fdt;
+      }
+    }
+    return projected_gauss_seidel(system.sparse_A(), system.B(), options.tolerance,
+                                  options.max_sweeps, start);
+  };
+  if (algorithm == LcpAlgorithm::projected_gauss_seidel) {
+    return iterate();
+  }
+  if (n > pivoting_limit) {
+    throw InvalidInput("pivoting takes at most " + std::to_string(pivoting_limit) +
+                       " contacts (it works on dense matrices), got " + std::to_string(n));
+  }
+  MatrixXd G;
+  VectorXd g;
+  if (system.has_factor()) {
+    system.factor(G, g);
+  }
+  ComplementaritySolution pivoted;
+  if (algorithm == LcpAlgorithm::active_set) {
+    if (!system.has_factor()) {
+      throw InvalidInput(
+          "the active-set method needs the system's factor G (A = G^T G), which systems "
+          "assembled from bodies carry and systems given as A and B do not");
+    }
+    pivoted = active_set_with(G, g, options.dependent, options.tolerance);
+  } else {
+    const MatrixXd A = system.is_sparse() ? MatrixXd(system.sparse_A()) : system.A();
+    pivoted = lemke_with(A, system.B(), system.has_factor() ? Factor{&G, &g} : Factor{},
+                         options.dependent, options.tolerance);
+  }
+  if (pivoted.status != LcpStatus::inaccurate || options.algorithm != LcpAlgorithm::automatic) {
+    return pivoted;
+  }
+  // Rounding kept the pivoting's answer above the tolerance: iterate instead, and keep whichever
+  // answer is closer.
+  ComplementaritySolution iterated = iterate();
+  return iterated.residual < pivoted.residual ? iterated : pivoted;
+}
+
+ComplementarityResolution resolve_complementarity(std::span<const multipoint::Body> bodies,
+                                                  std::span<const Elasticity> elasticities,
+                                                  std::span<const multipoint::Contact> contacts,
+                                                  const ComplementarityOptions& options) {
+  ComplementarityResolution resolution;
+  resolution.solution =
+      solve_complementarity(multipoint::assemble(bodies, elasticities, contacts), options);
+  resolution.after = resolution.solution.status == LcpStatus::non_finite
+                         ? std::vector<multipoint::Body>(bodies.begin(), bodies.end())
+                         : multipoint::apply_impulses(bodies, contacts, resolution.solution.Fdt);
+  return resolution;
+}
+
+ComplementarityResolution resolve_complementarity(std::span<const multipoint::Body> bodies,
+                                                  Elasticity elasticity,
+                                                  std::span<const multipoint::Contact> contacts,
+                                                  const ComplementarityOptions& options) {
+  const std::vector<Elasticity> elasticities(bodies.size(), elasticity);
+  return resolve_complementarity(bodies, elasticities, contacts, options);
+}
+
+}  // namespace impulse::methods
