@@ -7,9 +7,9 @@
 #include "app.hpp"
 #include "impulse/core/error.hpp"
 #include "impulse/scene/json.hpp"
-#include "warnings.hpp"
 #include "output.hpp"
 #include "text_report.hpp"
+#include "warnings.hpp"
 
 namespace impulselab {
 

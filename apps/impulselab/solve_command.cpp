@@ -8,9 +8,9 @@
 #include "compare.hpp"
 #include "impulse/core/error.hpp"
 #include "impulse/scene/json.hpp"
-#include "warnings.hpp"
 #include "output.hpp"
 #include "text_report.hpp"
+#include "warnings.hpp"
 namespace impulselab {
 
 namespace {
