@@ -200,6 +200,13 @@ TEST_CASE("A light body between two heavy ones: ratios up to 1e18 between contac
   // its two contacts are opposite); B = e (1, 1). By symmetry Fdt1 = Fdt2 = F with
   // F (1/M + 1/m - 1/m) = e: F = e M, whatever m. The middle body stays at rest, the outer ones
   // leave at 1 - e and e - 1. The eigenvalues of A are 1/M and 1/M + 2/m: kappa = 1 + 2 M / m.
+  //
+  // The estimate the solver reports is the squared ratio of the first to the last pivot of the
+  // column-pivoted QR of the factor G (A = GᵀG). Both columns of G have the squared norm
+  // a = 1/M + 1/m, so r11² = a, and r11² r22² = det A = (1/M)(1/M + 2/m): the estimate is
+  // a² / det A, which tends to kappa / 4 as m / M -> 0 (and is 1 at m = M, where kappa = 3).
+  // Pivots bound the singular values (r11 <= σmax, r22 >= σmin), so the estimate never exceeds
+  // kappa. Its rounding is that of r22, relative about √kappa ε.
   for (const double M : {1.0, 1e9}) {
     for (const double m : ratios()) {
       for (const double e : {1.0, 2.0}) {
@@ -209,11 +216,19 @@ TEST_CASE("A light body between two heavy ones: ratios up to 1e18 between contac
             {contact(0, 1, {1, 0}), contact(1, 2, {1, 0})});
         const sc::Result result = solve_checked("light between heavy", s);
         const double kappa = 1.0 + 2.0 * M / m;
+        const double a = 1.0 / M + 1.0 / m;
+        const double estimate = a * a / ((1.0 / M) * (1.0 / M + 2.0 / m));
+        CHECK(result.system.condition_estimate ==
+              Approx(estimate).epsilon(64 * std::sqrt(kappa) * eps));
+        CHECK(result.system.condition_estimate <= kappa * (1 + 1e-12));
+        // The impulses: relative error up to about kappa ε, asserted where that is below 1%
+        // (kappa < 2.8e11); beyond, solve_checked required them finite.
         const double tolerance = 16 * eps * kappa;
-        CHECK(result.system.condition_estimate == Approx(kappa).epsilon(0.01));
-        CHECK(result.impulses[0].magnitude == Approx(e * M).epsilon(tolerance));
-        CHECK(result.impulses[1].magnitude == Approx(e * M).epsilon(tolerance));
-        CHECK(result.bodies[0].after.velocity.x() == Approx(1.0 - e).margin(tolerance));
+        if (tolerance < 1e-2) {
+          CHECK(result.impulses[0].magnitude == Approx(e * M).epsilon(tolerance));
+          CHECK(result.impulses[1].magnitude == Approx(e * M).epsilon(tolerance));
+          CHECK(result.bodies[0].after.velocity.x() == Approx(1.0 - e).margin(tolerance));
+        }
       }
     }
   }
@@ -237,7 +252,11 @@ TEST_CASE("Normals 1e-8 rad apart: a bead in a nearly flat corner", "[hostile]")
       const sc::Result result = solve_checked("normals delta apart", s);
       const double kappa = 1.0 / std::pow(std::tan(delta / 2), 2);
       CHECK(result.system.rank == 2);
-      CHECK(result.system.condition_estimate == Approx(kappa).epsilon(1e-6 + 16 * eps * kappa));
+      // The reported estimate, a² / det A from the pivots of G's QR as in the test above (a = 1,
+      // det A = 1 - cos² d): 1 / sin² d, kappa / 4 for small d, never above kappa.
+      CHECK(result.system.condition_estimate ==
+            Approx(1.0 / std::pow(std::sin(delta), 2)).epsilon(64 * std::sqrt(kappa) * eps));
+      CHECK(result.system.condition_estimate <= kappa * (1 + 1e-12));
       const Vector2d after = result.bodies[0].after.velocity;
       // The velocity after is what the normals' plane gives back: its rounding is that of G,
       // whose condition number is the square root of kappa.
@@ -245,7 +264,9 @@ TEST_CASE("Normals 1e-8 rad apart: a bead in a nearly flat corner", "[hostile]")
       CHECK(after.x() == Approx((1 - e) * slide).margin(velocity_tolerance));
       CHECK(after.y() == Approx((1 - e) * -1.0).epsilon(velocity_tolerance));
       const double sum = result.impulses[0].magnitude + result.impulses[1].magnitude;
-      CHECK(sum == Approx(e / std::cos(delta / 2)).epsilon(16 * eps * kappa));
+      if (16 * eps * kappa < 1e-2) {  // beyond, the impulses are only required finite
+        CHECK(sum == Approx(e / std::cos(delta / 2)).epsilon(16 * eps * kappa));
+      }
     }
   }
 }
@@ -295,8 +316,8 @@ TEST_CASE("1,000 contacts on one rigid plate landing flat", "[hostile]") {
     for (const auto& impulse : result.impulses) {
       CHECK(impulse.magnitude == Approx(e * 2.0 / n).epsilon(1e-9));
     }
-    CHECK(result.bodies[1].after.velocity.y() == Approx(e - 1.0).margin(1e-9));
-    CHECK(result.bodies[1].after.angular_velocity == Approx(0.0).margin(1e-9));
+    CHECK(result.bodies[0].after.velocity.y() == Approx(e - 1.0).margin(1e-9));  // the plate
+    CHECK(result.bodies[0].after.angular_velocity == Approx(0.0).margin(1e-9));
   }
 }
 
