@@ -134,6 +134,14 @@ std::vector<std::string> solve_warnings(const impulse::scene::Result& result,
         .append("; rounding may change the impulses by about ")
         .append(relative < 1.0 ? rounded(relative) + " of their size" : "as much as their size")
         .append(" (the velocities after are less affected)");
+    if (s.rank_estimated) {
+      // The sparse method's estimate comes from shifted pivots and can be far below the truth;
+      // on hostile scenes its impulses were measured off by up to their whole size at estimates
+      // of 1e9 (docs/pages/accuracy.md).
+      line.append(
+          "; the sparse method's estimate can be far below the true condition, and its "
+          "impulses were seen off by up to their whole size on such scenes");
+    }
     warnings.push_back(std::move(line));
   }
   // A system assembled from bodies always has a solution (B lies in the range of A); a residual
