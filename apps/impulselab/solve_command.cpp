@@ -11,6 +11,7 @@
 #include "output.hpp"
 #include "text_report.hpp"
 #include "warnings.hpp"
+
 namespace impulselab {
 
 namespace {
