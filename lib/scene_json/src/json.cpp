@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
-#include <cfenv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -253,24 +252,6 @@ void refuse_deep_nesting(std::string_view text, std::string_view source, std::si
   }
 }
 
-// While it lives, floating-point exceptions do not trap, and the flags raised meanwhile are
-// dropped when it goes (the environment before is restored). The parser turns a number beyond
-// the range of doubles ("1e999") into its own error, which the reader reports; the C library's
-// strtod, which reads the number, raises the overflow exception on the way. A caller that traps
-// floating-point exceptions (a Debug test run) must get that report, not a SIGFPE.
-class NonStopFloatingPoint {
- public:
-  NonStopFloatingPoint() { std::feholdexcept(&saved_); }
-  ~NonStopFloatingPoint() { std::fesetenv(&saved_); }
-  NonStopFloatingPoint(const NonStopFloatingPoint&) = delete;
-  NonStopFloatingPoint& operator=(const NonStopFloatingPoint&) = delete;
-  NonStopFloatingPoint(NonStopFloatingPoint&&) = delete;
-  NonStopFloatingPoint& operator=(NonStopFloatingPoint&&) = delete;
-
- private:
-  std::fenv_t saved_{};
-};
-
 json parse_document(std::string_view text, std::string_view source, const ReadLimits& limits) {
   if (text.size() > limits.max_bytes) {
     throw InvalidInput(too_large_message(source, limits.max_bytes));
@@ -278,7 +259,10 @@ json parse_document(std::string_view text, std::string_view source, const ReadLi
   refuse_deep_nesting(text, source, limits.max_depth);
   Tracker tracker(source, limits);
   try {
-    const NonStopFloatingPoint non_stop;
+    // The parser turns a number beyond the range of doubles ("1e999") into its own error, which
+    // the reader reports; strtod, which reads the number, raises the overflow exception on the
+    // way. A caller that traps floating-point exceptions must get that report, not a SIGFPE.
+    const impulse::detail::HeldFloatingPointExceptions held;
     return json::parse(text.begin(), text.end(), std::ref(tracker));
   } catch (const json::parse_error& e) {
     const auto [line, column] = line_and_column(text, e.byte);

@@ -105,9 +105,13 @@ void require_elasticity(const std::string& path, double value) {
 void require_motion(const std::string& place, const Body& body, int dimension) {
   const std::string path = member(place, key_of(body.linear_given, false));
   require_finite_vector(path, body.linear, dimension);
-  const Vector2d other = body.linear_given == Given::velocity ? Vector2d(body.mass * body.linear)
-                                                              : Vector2d(body.linear / body.mass);
-  if (!all_finite_in(other)) {
+  // Computed to find out whether it overflows: exceptions held (see HeldFloatingPointExceptions).
+  const bool other_finite = [&] {
+    const impulse::detail::HeldFloatingPointExceptions held;
+    return all_finite_in(body.linear_given == Given::velocity ? Vector2d(body.mass * body.linear)
+                                                              : Vector2d(body.linear / body.mass));
+  }();
+  if (!other_finite) {
     refuse(path, std::string(body.linear_given == Given::velocity ? "mass times velocity"
                                                                   : "momentum over mass") +
                      " overflows a double: mass " + format_number(body.mass) + ", " +
@@ -121,9 +125,12 @@ void require_motion(const std::string& place, const Body& body, int dimension) {
   if (!std::isfinite(body.angular)) {
     refuse(angular_path, "must be finite, got " + format_number(body.angular));
   }
-  const double angular_other = body.angular_given == Given::velocity ? body.inertia * body.angular
-                                                                     : body.angular / body.inertia;
-  if (!std::isfinite(angular_other)) {
+  const bool angular_other_finite = [&] {
+    const impulse::detail::HeldFloatingPointExceptions held;
+    return std::isfinite(body.angular_given == Given::velocity ? body.inertia * body.angular
+                                                               : body.angular / body.inertia);
+  }();
+  if (!angular_other_finite) {
     refuse(angular_path, "overflows a double once combined with the inertia " +
                              format_number(body.inertia) + ", got " + format_number(body.angular));
   }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cfenv>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -94,6 +95,22 @@ namespace detail {
 [[noreturn]] void refuse_finite(std::string_view what, const Eigen::Vector2d& value);
 [[noreturn]] void refuse_unit_direction(std::string_view what, double direction);
 [[noreturn]] void refuse_unit_normal(std::string_view what, const Eigen::Vector2d& normal);
+/// While it lives, floating-point exceptions do not trap and raise no flag that outlives it:
+/// the environment before is restored when it goes. For the few places that compute a value in
+/// order to find out whether it overflows (m·v of a scene's body, strtod in the JSON parser), so
+/// that a caller who traps floating-point exceptions gets the refusal, not a SIGFPE.
+class HeldFloatingPointExceptions {
+ public:
+  HeldFloatingPointExceptions() { std::feholdexcept(&saved_); }
+  ~HeldFloatingPointExceptions() { std::fesetenv(&saved_); }
+  HeldFloatingPointExceptions(const HeldFloatingPointExceptions&) = delete;
+  HeldFloatingPointExceptions& operator=(const HeldFloatingPointExceptions&) = delete;
+  HeldFloatingPointExceptions(HeldFloatingPointExceptions&&) = delete;
+  HeldFloatingPointExceptions& operator=(HeldFloatingPointExceptions&&) = delete;
+
+ private:
+  std::fenv_t saved_{};
+};
 }  // namespace detail
 
 /// @brief Throws InvalidInput unless @p value is finite and strictly positive.
