@@ -124,9 +124,20 @@ TEST_CASE("Dense and sparse methods agree on generated scenes", "[section4][sect
   // G and the sparse method. Both return the minimum-norm least-squares impulses, so they must
   // agree to within the rounding that the conditioning allows; the issue asks for 1e-8.
   t::Worst worst("dense vs sparse impulses, relative (max norm)");
+#ifdef NDEBUG
+  constexpr std::size_t largest = 1000;
+#else
+  // Unoptimised Eigen (the asan preset's Debug build) is about a hundred times slower: the dense
+  // method at 400 and 1,000 contacts took seven minutes there. The sanitizers look for memory
+  // errors and undefined behaviour, which the smaller scenes reach through the same code.
+  constexpr std::size_t largest = 256;
+#endif
   for (const std::string kind : {"stack", "pyramid", "cradle"}) {
     for (const std::size_t contacts : {1u, 2u, 7u, 10u, 33u, 100u, 256u, 400u, 1000u}) {
       for (const std::uint64_t seed : {1u, 2u, 3u}) {
+        if (contacts > largest) {
+          continue;
+        }
         if (contacts > 400 && seed > 1) {
           continue;  // the dense method's cubic cost: one scene of each kind at 1,000
         }
