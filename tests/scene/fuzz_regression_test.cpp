@@ -4,7 +4,9 @@
 // solved with a finite result whose diagnostics tell the truth about it.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -76,4 +78,26 @@ TEST_CASE("An inertia of 4e-301 in a stack: the solver says that it lost part of
   CHECK(r.system.rank == 1);
   CHECK_FALSE(r.system.consistent);
   CHECK(r.system.residual > 0.5 * r.system.B.norm());
+}
+
+TEST_CASE("Masses 7.8e7 and 1 on a line: the error grows with the square root of their ratio",
+          "[scene][fuzz]") {
+  // Found by the first long fuzzing run (the fuzzer's residual law then had no mass-ratio term):
+  // M = 77777770.577..., m = 1, velocities 3 and -1, elasticity 2. By hand (1.1):
+  // u = 3 - (-1) = 4, A = 1/M + 1/m, B = 2 u = 8, Fdt = 8 / (1 + 1/M). The solver fits G Fdt to
+  // w through the factor G, whose rows are 1/√M and 1/√m and whose target carries √M times the
+  // velocity (about 2.6e4 here): its QR is accurate relative to those, so Fdt carries an error of
+  // about ε √(M/m) = 2e-12 relative to 8 — not the ε of a division. The bound the fuzzer now
+  // uses, 64 (N + K + 2) ε (1 + √κ + √s) (|A||Fdt| + |B|) with s = M/m, holds it.
+  const sc::Scene scene = sc::load_scene(path_of("mass-ratio-residual.json"));
+  const double M = scene.bodies[0].mass;
+  const sc::Result r = sc::solve(scene);
+  REQUIRE(r.status == impulse::SolveStatus::success);
+  const double exact = 8.0 / (1.0 + 1.0 / M);
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double bound = 64.0 * 5.0 * eps * (2.0 + std::sqrt(M)) * (r.system.A(0, 0) * 8.0 + 8.0);
+  CHECK(std::abs(r.system.Fdt(0) - exact) * r.system.A(0, 0) <= bound);
+  CHECK(r.system.residual <= bound);
+  // Energy is kept at elasticity 2 to the same relative accuracy: 1/2 M 3² + 1/2 (-1)².
+  CHECK(r.energy_after == Approx(r.energy_before).epsilon(1e-11));
 }
