@@ -31,9 +31,9 @@ const fs::path site_dir{IMPULSELAB_SITE_DIR};
 
 // The pages the site promises: the start page, one per paper section, and the rest of the theory.
 const std::vector<std::string> promised_pages = {
-    "index.html",    "section1.html", "section2.html",     "section3.html", "section4.html",
-    "section5.html", "notation.html", "check_report.html", "errata.html",   "labs.html",
-    "methods.html"};
+    "index.html",    "section1.html", "section2.html", "section3.html",
+    "section4.html", "section5.html", "notation.html", "check_report.html",
+    "errata.html",   "labs.html",     "methods.html",  "accuracy.html"};
 const std::vector<std::string> section_pages = {"section1.html", "section2.html", "section3.html",
                                                 "section4.html", "section5.html"};
 
