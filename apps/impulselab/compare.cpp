@@ -18,22 +18,6 @@ namespace {
 namespace methods = impulse::methods;
 using impulse::scene::Result;
 
-// As in the text report: a value below this fraction of the largest of its kind is rounding.
-constexpr double noise = 1e-12;
-
-std::string chopped(double value, double scale) {
-  return number_text(std::abs(value) <= noise * scale ? 0.0 : value);
-}
-
-std::string vector_text(const Eigen::Vector2d& v, int dimension, double scale) {
-  if (dimension == 1) {
-    return chopped(v.x(), scale);
-  }
-  std::string text("[");
-  text.append(chopped(v.x(), scale)).append(", ").append(chopped(v.y(), scale)).append("]");
-  return text;
-}
-
 // Rows of cells as columns as wide as their widest cell; the columns named in `text` are
 // left-aligned, the others (numbers) right-aligned.
 std::string table(const std::vector<std::vector<std::string>>& rows,

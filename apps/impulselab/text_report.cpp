@@ -52,24 +52,6 @@ class Table {
   std::vector<std::vector<std::string>> rows_;
 };
 
-// Rounding noise: a value below this fraction of the largest of its kind in the report (e.g. a
-// velocity of 4e-16 next to velocities of 1.5) is shown as 0. At 6 significant digits it
-// could not be told apart from 0 anyway; --format json keeps every digit.
-constexpr double noise = 1e-12;
-
-std::string chopped(double value, double scale) {
-  return number_text(std::abs(value) <= noise * scale ? 0.0 : value);
-}
-
-std::string vector_text(const Eigen::Vector2d& v, int dimension, double scale) {
-  if (dimension == 1) {
-    return chopped(v.x(), scale);
-  }
-  std::string text("[");
-  text.append(chopped(v.x(), scale)).append(", ").append(chopped(v.y(), scale)).append("]");
-  return text;
-}
-
 // The largest magnitude among the values `get` picks, over `items`.
 template <typename Items, typename Get>
 double largest(const Items& items, Get get) {
@@ -306,6 +288,19 @@ std::string text_report(const Result& r, const std::string& source, bool colour)
   }
   out.append(system.render("  "));
   return out;
+}
+
+std::string chopped(double value, double scale) {
+  return number_text(std::abs(value) <= rounding_noise * scale ? 0.0 : value);
+}
+
+std::string vector_text(const Eigen::Vector2d& v, int dimension, double scale) {
+  if (dimension == 1) {
+    return chopped(v.x(), scale);
+  }
+  std::string text("[");
+  text.append(chopped(v.x(), scale)).append(", ").append(chopped(v.y(), scale)).append("]");
+  return text;
 }
 
 }  // namespace impulselab

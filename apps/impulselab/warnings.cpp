@@ -16,9 +16,6 @@ namespace {
 
 namespace methods = impulse::methods;
 
-// As in the text report: below this fraction of the largest impulse, a value is rounding.
-constexpr double noise = 1e-12;
-
 std::string contact_name(const impulse::scene::Result& result, std::size_t v) {
   std::string text("contact ");
   text.append(std::to_string(v)).append(" (").append(result.impulses[v].bumper);
@@ -44,7 +41,7 @@ std::vector<std::string> impulse_warnings(const impulse::scene::Result& result,
   }
   for (std::size_t v = 0; v < result.impulses.size(); ++v) {
     const double magnitude = result.impulses[v].magnitude;
-    if (magnitude < -noise * largest) {
+    if (magnitude < -rounding_noise * largest) {
       std::string line(prefix);
       line.append(contact_name(result, v)).append(": negative impulse ");
       line.append(number_text(magnitude)).append(" (the contact pulls)");

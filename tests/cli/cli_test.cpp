@@ -59,26 +59,6 @@ void require_matches(const json& got, const json& expected, const std::string& p
 
 const std::string worked = t::cli_tests_path("scenes/worked-example.json");
 
-// Whether a line of `text` holds `tokens` in this order (a row of a table, whatever its spacing).
-bool has_row(const std::string& text, const std::vector<std::string>& tokens) {
-  for (const std::string& line : t::lines(text)) {
-    std::size_t at = 0;
-    bool all = true;
-    for (const std::string& token : tokens) {
-      at = line.find(token, at);
-      if (at == std::string::npos) {
-        all = false;
-        break;
-      }
-      at += token.size();
-    }
-    if (all) {
-      return true;
-    }
-  }
-  return false;
-}
-
 }  // namespace
 
 TEST_CASE("The worked example's JSON is the specification's, to 1e-12", "[cli]") {
@@ -106,14 +86,14 @@ TEST_CASE("The text report shows the tables a student reads", "[cli]") {
   // B = 3.
   const auto text = run.out;
   CHECK_THAT(text, Contains("Scene " + worked + ": dimension 2, 2 bodies, 1 contact"));
-  CHECK(has_row(text, {"0", "a", "b", "1.5", "[-1.5, 0]"}));
-  CHECK(has_row(text, {"a", "material", "[1.5, 0]", "[0, 0]", "[1.5, 0]", "[0, 0]"}));
-  CHECK(has_row(text, {"b", "material", "[0, 0]", "[1.5, 0]", "[0, 0]", "[1.5, 0]"}));
-  CHECK(has_row(text, {"kinetic energy", "1.125", "1.125", "0"}));
-  CHECK(has_row(text, {"momentum", "[1.5, 0]", "[1.5, 0]", "[0, 0]"}));
-  CHECK(has_row(text, {"0", "a", "b", "1.5", "-1.5"}));
+  CHECK(t::has_row(text, {"0", "a", "b", "1.5", "[-1.5, 0]"}));
+  CHECK(t::has_row(text, {"a", "material", "[1.5, 0]", "[0, 0]", "[1.5, 0]", "[0, 0]"}));
+  CHECK(t::has_row(text, {"b", "material", "[0, 0]", "[1.5, 0]", "[0, 0]", "[1.5, 0]"}));
+  CHECK(t::has_row(text, {"kinetic energy", "1.125", "1.125", "0"}));
+  CHECK(t::has_row(text, {"momentum", "[1.5, 0]", "[1.5, 0]", "[0, 0]"}));
+  CHECK(t::has_row(text, {"0", "a", "b", "1.5", "-1.5"}));
   CHECK_THAT(text, Contains("1 equation, rank 1"));
-  CHECK(has_row(text, {"2", "|", "1.5", "|", "3"}));
+  CHECK(t::has_row(text, {"2", "|", "1.5", "|", "3"}));
   CHECK(text.find('\033') == std::string::npos);  // not a terminal: no colour
 }
 

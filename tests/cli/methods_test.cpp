@@ -19,26 +19,6 @@ std::string lab_scene(const std::string& name) {
   return t::scene_path("../07-three-ways/" + name);
 }
 
-// Whether a line of `text` holds `tokens` in this order (a row of a table, whatever its spacing).
-bool has_row(const std::string& text, const std::vector<std::string>& tokens) {
-  for (const std::string& line : t::lines(text)) {
-    std::size_t at = 0;
-    bool all = true;
-    for (const std::string& token : tokens) {
-      at = line.find(token, at);
-      if (at == std::string::npos) {
-        all = false;
-        break;
-      }
-      at += token.size();
-    }
-    if (all) {
-      return true;
-    }
-  }
-  return false;
-}
-
 std::vector<double> velocities(const json& result) {
   std::vector<double> v;
   for (const json& body : result["bodies"]) {
@@ -103,15 +83,15 @@ TEST_CASE("solve --compare: the three answers side by side", "[cli][methods]") {
   const auto text = t::run("solve " + scene + " --compare");
   REQUIRE(text.status == 0);
   CHECK(text.err.empty());  // no impulse pulls in this scene
-  CHECK(has_row(text.out,
-                {"contact", "bumper", "wedge", "simultaneous", "complementarity", "serial"}));
+  CHECK(t::has_row(text.out,
+                   {"contact", "bumper", "wedge", "simultaneous", "complementarity", "serial"}));
   // Impulses: (5, 4), (5, 4), (4.5, 4.5); velocities (-2, 1, 2.5) twice and (-1.5, 0, 3).
-  CHECK(has_row(text.out, {"0", "left", "middle", "5", "5", "4.5"}));
-  CHECK(has_row(text.out, {"1", "middle", "right", "4", "4", "4.5"}));
-  CHECK(has_row(text.out, {"left", "3", "-2", "-2", "-1.5"}));
-  CHECK(has_row(text.out, {"right", "-1.5", "2.5", "2.5", "3"}));
-  CHECK(has_row(text.out, {"kinetic energy", "5.625", "5.625", "5.625", "5.625"}));
-  CHECK(has_row(text.out, {"serial:", "3 collisions in 2 passes, order 0, 1, 0"}));
+  CHECK(t::has_row(text.out, {"0", "left", "middle", "5", "5", "4.5"}));
+  CHECK(t::has_row(text.out, {"1", "middle", "right", "4", "4", "4.5"}));
+  CHECK(t::has_row(text.out, {"left", "3", "-2", "-2", "-1.5"}));
+  CHECK(t::has_row(text.out, {"right", "-1.5", "2.5", "2.5", "3"}));
+  CHECK(t::has_row(text.out, {"kinetic energy", "5.625", "5.625", "5.625", "5.625"}));
+  CHECK(t::has_row(text.out, {"serial:", "3 collisions in 2 passes, order 0, 1, 0"}));
 
   const auto js = t::run("solve " + scene + " --compare --format json");
   REQUIRE(js.status == 0);
@@ -160,9 +140,9 @@ TEST_CASE(
   CHECK(compared.err ==
         "impulselab: warning: simultaneous: contact 1 (ground\u2013rod): negative impulse "
         "-0.666667 (the contact pulls)\n");
-  CHECK(has_row(compared.out, {"1", "ground", "rod", "-0.666667", "0", "1"}));
+  CHECK(t::has_row(compared.out, {"1", "ground", "rod", "-0.666667", "0", "1"}));
   // The rising end after: approaching at 4 (the paper), 2 (complementarity), separating at 2.
-  CHECK(has_row(compared.out, {"1", "-4", "4", "2", "-2"}));
+  CHECK(t::has_row(compared.out, {"1", "-4", "4", "2", "-2"}));
 }
 
 TEST_CASE("Serial collisions at their bound: exit 1 and a message that says what to do",
@@ -196,7 +176,7 @@ TEST_CASE("Serial collisions at their bound: exit 1 and a message that says what
   // --compare still shows the two other answers, then fails for the third.
   const auto compared = t::run("solve " + t::quote(million) + " --compare");
   CHECK(compared.status == 1);
-  CHECK(has_row(compared.out, {"light", "0", "0", "0", "-"}));
+  CHECK(t::has_row(compared.out, {"light", "0", "0", "0", "-"}));
   CHECK_THAT(compared.err, Contains("serial collisions did not end"));
   const auto compared_json = t::run("solve " + t::quote(million) + " --compare --format json");
   CHECK(compared_json.status == 1);

@@ -127,4 +127,24 @@ inline std::vector<std::string> fields(const std::string& line) {
   return result;
 }
 
+/// Whether a line of `text` holds `tokens` in this order (a row of a table, whatever its spacing).
+inline bool has_row(const std::string& text, const std::vector<std::string>& tokens) {
+  for (const std::string& line : lines(text)) {
+    std::size_t at = 0;
+    bool all = true;
+    for (const std::string& token : tokens) {
+      at = line.find(token, at);
+      if (at == std::string::npos) {
+        all = false;
+        break;
+      }
+      at += token.size();
+    }
+    if (all) {
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace impulselab::test
