@@ -49,6 +49,16 @@ constexpr double max_checked_condition = 1e8;
 // Rounding allowance per operation summed: each reported quantity is a sum of at most about
 // (contacts + bodies) terms, each carrying a few roundings; 64 leaves room for the constant.
 constexpr double allowance = 64.0;
+// Rounding in the standard model with underflow: each operation's error is at most ε times its
+// result plus the smallest subnormal, the absolute part that dominates when every number is
+// tiny (the second long run found a scene of elasticity 5e-324 whose approach speed after was
+// one subnormal off, beyond a purely relative tolerance of 0: fuzz/regressions/).
+constexpr double underflow = std::numeric_limits<double>::denorm_min();
+
+// The rounding allowed for a quantity summed from about `terms` terms of magnitudes `scale`.
+double rounding(double terms, double scale) {
+  return allowance * terms * (epsilon * scale + underflow);
+}
 
 [[noreturn]] void finding(std::string_view what, double found, double tolerance) {
   std::fprintf(stderr, "scene_fuzzer: %.*s: found %.17g, tolerance %.17g\n",
@@ -129,7 +139,7 @@ void check_momentum(const sc::Scene& scene, const sc::Result& r) {
   scale += 2.0 * r.system.Fdt.cwiseAbs().sum();
   const auto terms = static_cast<double>(r.bodies.size() + r.impulses.size() + 2);
   require_within("momentum conserved", (r.momentum_after - r.momentum_before).norm(),
-                 allowance * terms * epsilon * scale);
+                 rounding(terms, scale));
 }
 
 // The spread of the movable bodies' inverse masses and inverse moments of inertia: the largest
@@ -175,9 +185,8 @@ void check_well_conditioned(const sc::Scene& scene, const sc::Result& r) {
   // run found that term: masses 7.8e7 and 1 on a line, κ = 1, residual 5.2e-12 against B = 8,
   // fuzz/regressions/mass-ratio-residual.json; docs/pages/accuracy.md measures it.)
   const double residual_tolerance =
-      allowance * terms * epsilon *
-      (1.0 + std::sqrt(s.condition_estimate) + std::sqrt(spread(scene))) *
-      (matrix_norm(s) * Fdt_norm + s.B.norm());
+      rounding(terms, (1.0 + std::sqrt(s.condition_estimate) + std::sqrt(spread(scene))) *
+                          (matrix_norm(s) * Fdt_norm + s.B.norm()));
   require_within("residual |A Fdt - B|", s.residual, residual_tolerance);
   const double residual_bound = s.residual + residual_tolerance;
 
@@ -208,11 +217,10 @@ void check_well_conditioned(const sc::Scene& scene, const sc::Result& r) {
     work_terms += std::abs(r.contacts[v].approach_before * s.Fdt(static_cast<Eigen::Index>(v)));
   }
   const double factor = e / 2.0 - 1.0;
-  require_within(
-      "energy change (e/2 - 1) u.Fdt", std::abs(r.energy_change - factor * work),
-      0.5 * Fdt_norm * residual_bound +
-          allowance * terms * epsilon *
-              (r.energy_before + r.energy_after + change_energy + std::abs(factor) * work_terms));
+  require_within("energy change (e/2 - 1) u.Fdt", std::abs(r.energy_change - factor * work),
+                 0.5 * Fdt_norm * residual_bound +
+                     rounding(terms, r.energy_before + r.energy_after + change_energy +
+                                         std::abs(factor) * work_terms));
   for (std::size_t v = 0; v < r.contacts.size(); ++v) {
     const sc::Contact& c = scene.contacts[v];
     // The speeds summed into the approach: each body's point velocity before and after.
@@ -229,7 +237,7 @@ void check_well_conditioned(const sc::Scene& scene, const sc::Result& r) {
     require_within(
         "approach after (1 - e) u",
         std::abs(r.contacts[v].approach_after - (1.0 - e) * r.contacts[v].approach_before),
-        residual_bound + allowance * terms * epsilon * speeds);
+        residual_bound + rounding(terms, speeds));
   }
 }
 
@@ -268,12 +276,10 @@ void check_kinematics(const sc::Scene& scene, const sc::Result& r) {
       }
     }
     require_within("approach after = u - A Fdt",
-                   std::abs(r.contacts[v].approach_after - (u - AF(i))),
-                   allowance * terms * epsilon * speeds);
+                   std::abs(r.contacts[v].approach_after - (u - AF(i))), rounding(terms, speeds));
   }
-  require_within(
-      "energy change = Fdt.(A Fdt / 2 - u)", std::abs(r.energy_change - predicted),
-      allowance * terms * epsilon * (r.energy_before + r.energy_after + predicted_terms));
+  require_within("energy change = Fdt.(A Fdt / 2 - u)", std::abs(r.energy_change - predicted),
+                 rounding(terms, r.energy_before + r.energy_after + predicted_terms));
 }
 
 }  // namespace

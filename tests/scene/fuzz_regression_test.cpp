@@ -58,8 +58,10 @@ TEST_CASE("Every input the fuzzer found is refused, or solved with honest diagno
       // The solver's own rule, with norms that cannot overflow.
       const impulse::Solution& s = r.system;
       const double A_norm = s.A.size() > 0 ? s.A.stableNorm() : s.sparse_A.norm();
+      const double terms = static_cast<double>(s.B.size() + 1);
       CHECK(s.residual <=
-            s.options.consistency_tolerance * (A_norm * s.Fdt.stableNorm() + s.B.stableNorm()));
+            s.options.consistency_tolerance * (A_norm * s.Fdt.stableNorm() + s.B.stableNorm()) +
+                terms * terms * std::numeric_limits<double>::denorm_min());
     }
   }
 }
@@ -100,4 +102,23 @@ TEST_CASE("Masses 7.8e7 and 1 on a line: the error grows with the square root of
   CHECK(r.system.residual <= bound);
   // Energy is kept at elasticity 2 to the same relative accuracy: 1/2 M 3² + 1/2 (-1)².
   CHECK(r.energy_after == Approx(r.energy_before).epsilon(1e-11));
+}
+
+TEST_CASE("Elasticity 5e-323: impulses of subnormal size, the motion unchanged", "[scene][fuzz]") {
+  // Found by the second long fuzzing run: a row of five balls whose elasticity, 50e-324, is a
+  // subnormal number. B = e u is subnormal, so are the impulses (A's entries are 1/m of order 1,
+  // Fdt of order e), and each velocity changes by less than 1e-300 — which rounds to no change
+  // at all for the moving ball (1 ± 1e-322 is 1). The fuzzer's bound had no absolute term for
+  // underflow and refused an approach speed one subnormal (4.9e-324) off; it now has one.
+  const sc::Scene scene = sc::load_scene(path_of("subnormal-elasticity.json"));
+  REQUIRE(scene.elasticity.value_or(1.0) < std::numeric_limits<double>::min());  // subnormal
+  const sc::Result r = sc::solve(scene);
+  REQUIRE(r.status == impulse::SolveStatus::success);
+  for (const auto& impulse : r.impulses) {
+    CHECK(std::abs(impulse.magnitude) < 1e-300);
+  }
+  CHECK(r.system.consistent);  // within the absolute allowance for subnormal rounding
+  for (std::size_t k = 0; k < r.bodies.size(); ++k) {
+    CHECK(r.bodies[k].after.velocity.x() == Approx(r.bodies[k].before.velocity.x()).margin(1e-300));
+  }
 }

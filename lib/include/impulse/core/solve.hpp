@@ -70,7 +70,9 @@ struct SolverOptions {
   /// root of it). 0 selects Eigen's default: the matrix's size times the machine epsilon.
   double rank_tolerance = 0.0;
   /// The system counts as consistent when
-  /// @f$ \|A\,F\,dt - B\| \le \tau\,(\|A\|_F\,\|F\,dt\| + \|B\|) @f$ with this @f$ \tau @f$.
+  /// @f$ \|A\,F\,dt - B\| \le \tau\,(\|A\|_F\,\|F\,dt\| + \|B\|) + (N + 1)^2 \eta @f$
+  /// with this @f$ \tau @f$ (@f$ \eta @f$ the smallest subnormal double: the absolute rounding
+  /// of numbers that small).
   double consistency_tolerance = 1e-9;
   /// Dense or sparse (see SolveMethod).
   SolveMethod method = SolveMethod::automatic;
