@@ -148,7 +148,7 @@ std::vector<std::string> solve_warnings(const impulse::scene::Result& result,
     line.append(": the impulses found do not satisfy A·Fdt = B (residual ")
         .append(rounded(s.residual))
         .append(" against |B| = ")
-        .append(rounded(s.B.stableNorm()))
+        .append(rounded(impulse::detail::quiet_norm(s.B)))
         .append(
             "): the scene's numbers are beyond what double precision resolves (masses or "
             "moments of inertia too far apart); do not trust this report");

@@ -31,6 +31,26 @@ std::string_view to_string(InconsistentPolicy policy) {
   return "?";
 }
 
+// The 2-norm of finite numbers, without overflow or underflow in its squares and without raising
+// a floating-point exception: the entries are scaled by a power of two (exactly) so that the
+// largest is near 1. Entries of A near 1e300 (an inertia near 1e-300) would make the plain sum of
+// squares infinite, and an infinite tolerance would call any residual consistent; entries below
+// 1e-154 would square to 0. (Eigen's stableNorm() does the same job but divides 1 by the largest
+// entry, which overflows, and traps in a caller that traps exceptions, for a subnormal one.)
+double detail::quiet_norm(const Eigen::Ref<const Eigen::VectorXd>& v) {
+  if (v.size() == 0) {
+    return 0.0;
+  }
+  const double largest = v.cwiseAbs().maxCoeff();
+  if (!std::isgreater(largest, 0.0) || !std::isfinite(largest)) {
+    return largest;
+  }
+  const int exponent = std::ilogb(largest);
+  const int half = exponent / 2;  // two steps: 2^-exponent itself overflows for a subnormal
+  const Eigen::VectorXd scaled = (v * std::ldexp(1.0, -half)) * std::ldexp(1.0, half - exponent);
+  return std::ldexp(std::ldexp(scaled.norm(), half), exponent - half);
+}
+
 namespace {
 
 using Eigen::Index;
@@ -82,28 +102,8 @@ Factored factor_and_solve(const MatrixXd& M, const VectorXd& rhs, double thresho
   return result;
 }
 
-// The 2-norm of finite numbers, without overflow or underflow in its squares and without raising
-// a floating-point exception: the entries are scaled by a power of two (exactly) so that the
-// largest is near 1. Entries of A near 1e300 (an inertia near 1e-300) would make the plain sum of
-// squares infinite, and an infinite tolerance would call any residual consistent; entries below
-// 1e-154 would square to 0. (Eigen's stableNorm() does the same job but divides 1 by the largest
-// entry, which overflows, and traps in a caller that traps exceptions, for a subnormal one.)
-double quiet_norm(const Eigen::Ref<const VectorXd>& v) {
-  if (v.size() == 0) {
-    return 0.0;
-  }
-  const double largest = v.cwiseAbs().maxCoeff();
-  if (!std::isgreater(largest, 0.0) || !std::isfinite(largest)) {
-    return largest;
-  }
-  const int exponent = std::ilogb(largest);
-  const int half = exponent / 2;  // two steps: 2^-exponent itself overflows for a subnormal
-  const VectorXd scaled = (v * std::ldexp(1.0, -half)) * std::ldexp(1.0, half - exponent);
-  return std::ldexp(std::ldexp(scaled.norm(), half), exponent - half);
-}
-
 double quiet_matrix_norm(const MatrixXd& A) {
-  return quiet_norm(Eigen::Map<const VectorXd>(A.data(), A.size()));
+  return detail::quiet_norm(Eigen::Map<const VectorXd>(A.data(), A.size()));
 }
 
 // The absolute part of the consistency test: (N + 1)² times the smallest subnormal. Numbers that
@@ -115,8 +115,9 @@ double underflow_allowance(Index n) {
 
 bool within_tolerance(const MatrixXd& A, const VectorXd& B, const VectorXd& x, double tolerance) {
   const VectorXd r = A * x - B;
-  return quiet_norm(r) <= tolerance * (quiet_matrix_norm(A) * quiet_norm(x) + quiet_norm(B)) +
-                              underflow_allowance(B.size());
+  return detail::quiet_norm(r) <=
+         tolerance * (quiet_matrix_norm(A) * detail::quiet_norm(x) + detail::quiet_norm(B)) +
+             underflow_allowance(B.size());
 }
 
 bool is_consistent(const MatrixXd& A, const VectorXd& B, const SolverOptions& options) {
@@ -328,7 +329,7 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
     solution.dependent = true;
     solution.condition_estimate = std::numeric_limits<double>::infinity();
     solution.consistent = B.isZero(0.0);
-    solution.residual = quiet_norm(B);
+    solution.residual = detail::quiet_norm(B);
     return true;
   }
 
@@ -399,12 +400,12 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
   solution.Fdt = std::move(x);
   VectorXd residual = B;
   residual.noalias() -= A * solution.Fdt;
-  solution.residual = quiet_norm(residual);
-  const double A_norm = quiet_norm(Eigen::Map<const VectorXd>(A.valuePtr(), A.nonZeros()));
-  solution.consistent =
-      solution.residual <=
-      options.consistency_tolerance * (A_norm * quiet_norm(solution.Fdt) + quiet_norm(B)) +
-          underflow_allowance(B.size());
+  solution.residual = detail::quiet_norm(residual);
+  const double A_norm = detail::quiet_norm(Eigen::Map<const VectorXd>(A.valuePtr(), A.nonZeros()));
+  solution.consistent = solution.residual <=
+                        options.consistency_tolerance * (A_norm * detail::quiet_norm(solution.Fdt) +
+                                                         detail::quiet_norm(B)) +
+                            underflow_allowance(B.size());
   return true;
 }
 
@@ -448,7 +449,7 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
     solution.dependent = true;
     solution.condition_estimate = std::numeric_limits<double>::infinity();
     solution.consistent = B.isZero(0.0);
-    solution.residual = quiet_norm(B);
+    solution.residual = detail::quiet_norm(B);
     return solution;
   }
   Factored f;
@@ -477,7 +478,7 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
   if (!solution.consistent && options.inconsistent == InconsistentPolicy::drop_equation) {
     solution.Fdt = drop_contradicting_equations(solution, options);
   }
-  solution.residual = quiet_norm(VectorXd(A * solution.Fdt - B));
+  solution.residual = detail::quiet_norm(VectorXd(A * solution.Fdt - B));
   return solution;
 }
 

@@ -153,6 +153,10 @@ struct ScalarSolution {
 };
 
 namespace detail {
+// The 2-norm of finite numbers, scaled by powers of two so that it neither overflows nor
+// underflows and raises no floating-point exception (Eigen's stableNorm() overflows computing
+// 1 over a subnormal entry). The residuals and tolerances of solve() use it.
+double quiet_norm(const Eigen::Ref<const Eigen::VectorXd>& v);
 // The common case of the single-contact solve in one branch: A and B finite, A not zero. The
 // tests raise no floating-point exception for a NaN or an infinity (std::isfinite and `!=` are
 // quiet), so a caller that traps them gets the non_finite status.
