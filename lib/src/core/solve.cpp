@@ -113,11 +113,28 @@ double underflow_allowance(Index n) {
   return terms * terms * std::numeric_limits<double>::denorm_min();
 }
 
+// The consistency test of SolverOptions::consistency_tolerance, dense or sparse: the residual's
+// norm against the norms of the terms it is the difference of, plus the underflow allowance.
+bool residual_within(double residual, double A_norm, const VectorXd& x, const VectorXd& B,
+                     double tolerance) {
+  return residual <= tolerance * (A_norm * detail::quiet_norm(x) + detail::quiet_norm(B)) +
+                         underflow_allowance(B.size());
+}
+
 bool within_tolerance(const MatrixXd& A, const VectorXd& B, const VectorXd& x, double tolerance) {
   const VectorXd r = A * x - B;
-  return detail::quiet_norm(r) <=
-         tolerance * (quiet_matrix_norm(A) * detail::quiet_norm(x) + detail::quiet_norm(B)) +
-             underflow_allowance(B.size());
+  return residual_within(detail::quiet_norm(r), quiet_matrix_norm(A), x, B, tolerance);
+}
+
+// A = 0: no body at any contact can move along its normal, so every Fdt acts the same; the least,
+// zero, is the answer (and a QR of a matrix without rows would divide 0 by 0).
+void solve_zero_system(Solution& solution, Index n) {
+  solution.Fdt = VectorXd::Zero(n);
+  solution.rank = 0;
+  solution.dependent = true;
+  solution.condition_estimate = std::numeric_limits<double>::infinity();
+  solution.consistent = solution.B.isZero(0.0);
+  solution.residual = detail::quiet_norm(solution.B);
 }
 
 bool is_consistent(const MatrixXd& A, const VectorXd& B, const SolverOptions& options) {
@@ -322,14 +339,8 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
     solution.Fdt = VectorXd(0);
     return true;
   }
-  if (!(A.diagonal().maxCoeff() > 0.0)) {
-    // A = 0 (no body at any contact can move): every Fdt acts the same; take the least, zero.
-    solution.Fdt = VectorXd::Zero(n);
-    solution.rank = 0;
-    solution.dependent = true;
-    solution.condition_estimate = std::numeric_limits<double>::infinity();
-    solution.consistent = B.isZero(0.0);
-    solution.residual = detail::quiet_norm(B);
+  if (!(A.diagonal().maxCoeff() > 0.0)) {  // A is positive semi-definite: zero diagonal, A = 0
+    solve_zero_system(solution, n);
     return true;
   }
 
@@ -402,10 +413,8 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
   residual.noalias() -= A * solution.Fdt;
   solution.residual = detail::quiet_norm(residual);
   const double A_norm = detail::quiet_norm(Eigen::Map<const VectorXd>(A.valuePtr(), A.nonZeros()));
-  solution.consistent = solution.residual <=
-                        options.consistency_tolerance * (A_norm * detail::quiet_norm(solution.Fdt) +
-                                                         detail::quiet_norm(B)) +
-                            underflow_allowance(B.size());
+  solution.consistent =
+      residual_within(solution.residual, A_norm, solution.Fdt, B, options.consistency_tolerance);
   return true;
 }
 
@@ -443,13 +452,7 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
   }
 
   if (A.isZero(0.0)) {
-    // No body at any contact can move along its normal (e.g. a factor without rows): every Fdt
-    // acts the same; take the least, zero. (Eigen's QR of a matrix without rows divides 0 by 0.)
-    solution.Fdt = VectorXd::Zero(n);
-    solution.dependent = true;
-    solution.condition_estimate = std::numeric_limits<double>::infinity();
-    solution.consistent = B.isZero(0.0);
-    solution.residual = detail::quiet_norm(B);
+    solve_zero_system(solution, n);
     return solution;
   }
   Factored f;
