@@ -348,7 +348,7 @@ ComplementaritySolution lemke_with(const MatrixXd& A, const VectorXd& B, const F
   if (n == 0) {
     return nothing(LcpAlgorithm::lemke);
   }
-  if (!A.allFinite() || !B.allFinite()) {
+  if (!all_finite_in(A) || !all_finite_in(B)) {
     return not_finite(n, LcpAlgorithm::lemke);
   }
   const int max_pivots = static_cast<int>(std::min<Index>(100 * (n + 1), 1000000));
@@ -469,7 +469,7 @@ ComplementaritySolution active_set_with(const MatrixXd& G, const VectorXd& g,
   if (n == 0) {
     return nothing(LcpAlgorithm::active_set);
   }
-  if (!G.allFinite() || !g.allFinite()) {
+  if (!all_finite_in(G) || !all_finite_in(g)) {
     return not_finite(n, LcpAlgorithm::active_set);
   }
   const MatrixXd A = G.transpose() * G;
@@ -507,7 +507,7 @@ ComplementaritySolution projected_gauss_seidel(const SparseMatrix& A, const Vect
                        std::to_string(max_sweeps));
   }
   const Index n = B.size();
-  bool finite = B.allFinite();
+  bool finite = all_finite_in(B);
   for (Index k = 0; k < A.outerSize(); ++k) {
     for (SparseMatrix::InnerIterator it(A, k); it; ++it) {
       finite = finite && std::isfinite(it.value());
@@ -521,7 +521,7 @@ ComplementaritySolution projected_gauss_seidel(const SparseMatrix& A, const Vect
   ComplementaritySolution s;
   s.algorithm = LcpAlgorithm::projected_gauss_seidel;
   s.Fdt =
-      start.size() == n && start.allFinite() ? VectorXd(start.cwiseMax(0.0)) : VectorXd::Zero(n);
+      start.size() == n && all_finite_in(start) ? VectorXd(start.cwiseMax(0.0)) : VectorXd::Zero(n);
   bool feasible = true;
   for (Index v = 0; v < n; ++v) {
     // A zero diagonal means a zero row (A is positive semi-definite): the contact's impulse moves

@@ -118,7 +118,7 @@ SerialResolution resolve_serial(std::span<const Body> bodies,
     u(v) = approach_at(r.after, c);
   }
   d.approach_threshold = options.approach_tolerance * speed;
-  if (!u.allFinite() || !std::isfinite(speed)) {
+  if (!all_finite_in(u) || !std::isfinite(speed)) {
     d.status = SerialStatus::non_finite;
     return r;
   }
@@ -154,7 +154,7 @@ SerialResolution resolve_serial(std::span<const Body> bodies,
         u(v) = approach_at(r.after, contacts[static_cast<std::size_t>(v)]);
       }
     }
-    if (!u.allFinite()) {
+    if (!all_finite_in(u)) {
       d.status = SerialStatus::non_finite;
       break;
     }
