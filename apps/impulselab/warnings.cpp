@@ -72,9 +72,7 @@ std::vector<std::string> impulse_warnings(const impulse::scene::Result& result,
 }
 
 void print_impulse_warnings(const impulse::scene::Result& result, std::string_view prefix) {
-  for (const std::string& line : impulse_warnings(result, prefix)) {
-    std::fprintf(stderr, "impulselab: warning: %s\n", line.c_str());
-  }
+  print_warnings(impulse_warnings(result, prefix));
 }
 
 std::string unfinished_message(const impulse::scene::Result& result, const std::string& source) {
