@@ -42,6 +42,10 @@ int run(int argc, char** argv, const std::function<void(CLI::App&)>& add_verbs) 
     return report(exit_usage, e.what());
   } catch (const UsageError& e) {
     return report(exit_usage, e.what());
+  } catch (const PlacedError& e) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "%s\n", e.what());
+    return exit_usage;
   } catch (const WorkFailed& e) {
     return report(exit_failure, e.what());
   } catch (const std::exception& e) {

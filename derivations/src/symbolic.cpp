@@ -122,7 +122,7 @@ double Compiled::operator()(std::span<const double> arguments) const {
     throw std::invalid_argument("compiled expression takes " + std::to_string(arguments_) +
                                 " arguments, got " + std::to_string(arguments.size()));
   }
-  double stack[64];
+  double* stack = stack_.data();
   std::size_t top = 0;
   for (const Instruction& in : program_) {
     switch (in.op) {
@@ -156,6 +156,36 @@ double Compiled::operator()(std::span<const double> arguments) const {
                                           : std::pow(base, exponent);
         break;
       }
+      case Op::raise: {
+        const double exponent = stack[--top];
+        const double base = stack[--top];
+        stack[top++] = std::pow(base, exponent);
+        break;
+      }
+      case Op::function: {
+        const double x = stack[top - 1];
+        switch (static_cast<Function>(in.index)) {
+          case Function::sin:
+            stack[top - 1] = std::sin(x);
+            break;
+          case Function::cos:
+            stack[top - 1] = std::cos(x);
+            break;
+          case Function::tan:
+            stack[top - 1] = std::tan(x);
+            break;
+          case Function::exp:
+            stack[top - 1] = std::exp(x);
+            break;
+          case Function::log:
+            stack[top - 1] = std::log(x);
+            break;
+          case Function::abs:
+            stack[top - 1] = std::abs(x);
+            break;
+        }
+        break;
+      }
     }
   }
   return stack[top - 1];
@@ -163,10 +193,11 @@ double Compiled::operator()(std::span<const double> arguments) const {
 
 namespace {
 
+// How deeply an expression nests (the recursion of emit() goes as deep).
 std::size_t depth(const ex& e) {
   std::size_t deepest = 0;
   for (std::size_t i = 0; i < e.nops(); ++i) {
-    deepest = std::max(deepest, depth(e.op(i)) + i);
+    deepest = std::max(deepest, depth(e.op(i)));
   }
   return deepest + 1;
 }
@@ -229,18 +260,64 @@ void emit(const ex& e, const std::vector<ex>& symbols,
     program.push_back({Op::power, GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_double(), 0});
     return;
   }
+  if (is_a<GiNaC::power>(e)) {
+    emit(e.op(0), symbols, program);
+    emit(e.op(1), symbols, program);
+    program.push_back({Op::raise, 0.0, 0});
+    return;
+  }
+  if (is_a<GiNaC::constant>(e)) {
+    program.push_back({Op::constant, GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double(), 0});
+    return;
+  }
+  if (is_a<GiNaC::function>(e) && e.nops() == 1) {
+    using F = Compiled::Function;
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    const std::pair<const char*, F> known[] = {{"sin", F::sin}, {"cos", F::cos}, {"tan", F::tan},
+                                               {"exp", F::exp}, {"log", F::log}, {"abs", F::abs}};
+    for (const auto& [n, f] : known) {
+      if (name == n) {
+        emit(e.op(0), symbols, program);
+        program.push_back({Op::function, 0.0, static_cast<std::size_t>(f)});
+        return;
+      }
+    }
+  }
   throw std::invalid_argument("compile: unsupported expression " + latex(e));
 }
 
 }  // namespace
 
 Compiled compile(const ex& e, const std::vector<ex>& symbols) {
-  if (depth(e) > 60) {
+  if (depth(e) > 2000) {
     throw std::invalid_argument("compile: expression too deep");
   }
   Compiled compiled;
   compiled.arguments_ = symbols.size();
   emit(e, symbols, compiled.program_);
+  // The deepest the stack goes, found by running the program's stack effects.
+  std::size_t top = 0;
+  std::size_t deepest = 0;
+  for (const Compiled::Instruction& in : compiled.program_) {
+    switch (in.op) {
+      case Compiled::Op::constant:
+      case Compiled::Op::variable:
+        ++top;
+        break;
+      case Compiled::Op::add:
+      case Compiled::Op::mul:
+        top = top - in.index + 1;
+        break;
+      case Compiled::Op::raise:
+        --top;
+        break;
+      case Compiled::Op::power:
+      case Compiled::Op::function:
+        break;
+    }
+    deepest = std::max(deepest, top);
+  }
+  compiled.stack_.assign(deepest + 1, 0.0);
   return compiled;
 }
 

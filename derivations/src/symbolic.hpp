@@ -65,21 +65,24 @@ class Compiled {
   }
 
   /// A stack machine: operands are pushed, operations pop theirs and push the result.
-  enum class Op { constant, variable, add, mul, power };
+  enum class Op { constant, variable, add, mul, power, raise, function };
+  /// The functions a compiled expression may call.
+  enum class Function { sin, cos, tan, exp, log, abs };
   struct Instruction {
     Op op;
     double value;       // constant, or the exponent of power
-    std::size_t index;  // variable index, or the operand count of add / mul
+    std::size_t index;  // variable index, the operand count of add / mul, or the Function
   };
 
  private:
   friend Compiled compile(const ex& e, const std::vector<ex>& symbols);
   std::vector<Instruction> program_;
   std::size_t arguments_ = 0;
+  mutable std::vector<double> stack_;  // sized by compile() to the deepest the program goes
 };
 
-/// Compiles @p e; throws std::invalid_argument on anything but numbers, the given symbols,
-/// sums, products and numeric powers.
+/// Compiles @p e; throws std::invalid_argument on anything but numbers, π, the given symbols,
+/// sums, products, powers and the functions sin, cos, tan, exp, log and abs.
 [[nodiscard]] Compiled compile(const ex& e, const std::vector<ex>& symbols);
 
 }  // namespace impulse::derivations::sym

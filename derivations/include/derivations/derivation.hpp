@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// @file
+/// @brief Derivation files: a student's derivation, in Markdown and LaTeX, checked line by line
+/// (`impulselab check NOTES.md`; the contract is spec/derivation-format.md).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "derivations/check.hpp"
+
+namespace impulse::derivations {
+
+/// @brief What became of one display equation.
+enum class Verdict {
+  premise,          ///< not checked: the first equation, or one after `given:`
+  follows,          ///< follows from the equation(s) before, and they follow from it
+  follows_one_way,  ///< follows, but the equation(s) before do not follow from it
+  follows_if,       ///< follows only where a condition holds that the facts do not give
+  does_not_follow,  ///< fails: a point satisfies the equation(s) before and the facts, not it
+  dimensions,       ///< its terms do not have the same dimensions (only with `units:`)
+  undecided,        ///< neither the exact nor the numeric method could decide
+};
+
+/// @brief The report name of a verdict ("follows-one-way", …).
+/// @param verdict the verdict
+/// @return its name in the report
+[[nodiscard]] std::string_view to_string(Verdict verdict);
+
+/// @brief Every verdict, in the order of the report's summary.
+inline constexpr Verdict all_verdicts[] = {
+    Verdict::premise,         Verdict::follows,    Verdict::follows_one_way, Verdict::follows_if,
+    Verdict::does_not_follow, Verdict::dimensions, Verdict::undecided};
+
+/// @brief One symbol's value in a counterexample.
+struct CounterexampleValue {
+  std::string symbol;   ///< the symbol as LaTeX ("m_1", "p_{1}'", "\\omega")
+  bool vector = false;  ///< a vector [x, y]
+  double x = 0.0;       ///< its value, or the x component
+  double y = 0.0;       ///< the y component of a vector
+  std::string exact_x;  ///< the exact value ("1/3") when the point is exact
+  std::string exact_y;  ///< the exact y component
+};
+
+/// @brief The outcome for one display equation.
+struct EquationResult {
+  std::size_t line = 0;                ///< the 1-based line where the equation begins
+  std::size_t column = 0;              ///< its column
+  std::optional<std::string> tag;      ///< its `\tag{k}`
+  std::string latex;                   ///< the equation as written
+  Verdict verdict = Verdict::premise;  ///< the verdict
+  std::string decided_by;              ///< "exact" or "numeric"; empty for premises and undecided
+  std::string how;                     ///< how it was decided, or what was tried
+  std::vector<std::size_t> from;       ///< the lines of the equations it was checked against
+  std::string condition;               ///< follows-if: the condition, LaTeX ("F \\neq 0")
+  std::string condition_text;          ///< the same in plain text
+  bool condition_needed = true;        ///< follows-if: the step was shown to fail without it
+  std::string residual;                ///< does-not-follow: what is left of the step, LaTeX
+  std::string residual_text;           ///< the same in plain text
+  std::vector<CounterexampleValue> counterexample;  ///< does-not-follow: values that break it
+  bool counterexample_exact = false;  ///< the values are exact (checked with exact arithmetic)
+  std::optional<bool> converse;       ///< follows: whether the step before follows from it
+  std::string dimension_first;        ///< dimensions: the one dimension ("M L T^-1")
+  std::string dimension_second;       ///< dimensions: the other one
+  std::string dimension_what;         ///< dimensions: which terms disagree
+  std::size_t numeric_points = 0;     ///< points of the numeric method
+  double numeric_worst = 0.0;         ///< the worst relative residual it saw
+};
+
+/// @brief A checked derivation file.
+struct DerivationReport {
+  std::string file;                       ///< how the file was named
+  std::vector<EquationResult> equations;  ///< in the file's order
+  std::size_t counts[7] = {};             ///< per verdict, in the order of all_verdicts
+  double seconds = 0.0;                   ///< wall time of the check
+  /// @brief How many equations got @p verdict.
+  /// @param verdict the verdict
+  /// @return the count
+  [[nodiscard]] std::size_t count(Verdict verdict) const {
+    return counts[static_cast<std::size_t>(verdict)];
+  }
+};
+
+/// @brief Settings of a check.
+struct DerivationOptions {
+  std::uint64_t seed = 1;    ///< the numeric method's random points
+  std::size_t samples = 24;  ///< points per step for the numeric method
+};
+
+/// @brief The largest derivation file read (4 MiB): a longer one is refused with its place.
+inline constexpr std::size_t max_derivation_bytes = std::size_t{4} << 20;
+
+/// @brief A file that cannot be read: printed as `FILE:LINE:COLUMN: what was expected`.
+class DerivationError : public std::runtime_error {
+ public:
+  /// @brief An error at a place.
+  /// @param line 1-based line
+  /// @param column 1-based column (characters)
+  /// @param message what was expected there
+  DerivationError(std::size_t line, std::size_t column, const std::string& message)
+      : std::runtime_error(message), line_(line), column_(column) {}
+  /// @brief The line of the error.
+  /// @return 1-based
+  [[nodiscard]] std::size_t line() const { return line_; }
+  /// @brief The column of the error.
+  /// @return 1-based, in characters
+  [[nodiscard]] std::size_t column() const { return column_; }
+
+ private:
+  std::size_t line_;
+  std::size_t column_;
+};
+
+/// @brief Checks a derivation file: every display equation, in order.
+/// @param text the file's contents
+/// @param file how reports and errors name the file
+/// @param options seed and samples of the numeric method
+/// @return the verdicts
+/// @throws DerivationError when the file cannot be read (nothing is checked then)
+[[nodiscard]] DerivationReport check_derivation(std::string text, const std::string& file,
+                                                const DerivationOptions& options = {});
+
+/// @brief The exit status the contract gives a report: 1 when an equation does not follow, has
+/// mismatched dimensions or is undecided, else 0.
+/// @param report the checked file
+/// @return 0 or 1
+[[nodiscard]] int exit_status(const DerivationReport& report);
+
+/// @brief Renders a derivation report.
+/// @param report the checked file
+/// @param format text (for people), markdown (for notes and docs) or json (the contract)
+/// @param colour ANSI colours in the text format
+/// @return the rendered report
+[[nodiscard]] std::string render(const DerivationReport& report, Format format,
+                                 bool colour = false);
+
+}  // namespace impulse::derivations

@@ -1,0 +1,811 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "file/decide.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace impulse::derivations::file {
+
+using GiNaC::ex;
+using GiNaC::is_a;
+using GiNaC::numeric;
+using Outcome = Implication::Outcome;
+
+std::vector<ex> symbols_of(const ex& e) {
+  return symbols_of(std::vector<ex>{e});
+}
+
+std::vector<ex> symbols_of(const std::vector<ex>& expressions) {
+  std::set<ex, GiNaC::ex_is_less> found;
+  for (const ex& e : expressions) {
+    for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+      if (is_a<GiNaC::symbol>(*i)) {
+        found.insert(*i);
+      }
+    }
+  }
+  std::vector<ex> list(found.begin(), found.end());
+  // A stable order: by name, so that a report does not depend on GiNaC's hashing.
+  std::sort(list.begin(), list.end(), [](const ex& a, const ex& b) {
+    return GiNaC::ex_to<GiNaC::symbol>(a).get_name() < GiNaC::ex_to<GiNaC::symbol>(b).get_name();
+  });
+  return list;
+}
+
+double expanded_terms(const ex& e) {
+  constexpr double cap = 1e12;
+  if (is_a<GiNaC::add>(e)) {
+    double sum = 0;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      sum += expanded_terms(e.op(i));
+    }
+    return std::min(sum, cap);
+  }
+  if (is_a<GiNaC::mul>(e)) {
+    double product = 1;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      product = std::min(product * expanded_terms(e.op(i)), cap);
+    }
+    return product;
+  }
+  if (is_a<GiNaC::power>(e) && is_a<numeric>(e.op(1)) &&
+      GiNaC::ex_to<numeric>(e.op(1)).is_integer()) {
+    const double base = expanded_terms(e.op(0));
+    const double n = std::abs(GiNaC::ex_to<numeric>(e.op(1)).to_double());
+    if (base <= 1) {
+      return 1;
+    }
+    // Terms of (t_1 + … + t_b)^n: at most C(n + b - 1, b - 1), and never more than b^n.
+    double count = 1;
+    const double k = std::min(n, base - 1);
+    for (double j = 1; j <= k; ++j) {
+      count = std::min(count * (n + base - 1 - (k - j)) / j, cap);
+    }
+    return std::min(count, std::pow(base, n) < cap ? std::pow(base, n) : cap);
+  }
+  return 1;
+}
+
+std::vector<ex> doubtful_factors(const ex& e, const Facts& facts) {
+  std::vector<ex> factors;
+  const auto add = [&](const ex& f) {
+    if (is_a<numeric>(f) || facts.nonzero(f)) {
+      return;
+    }
+    for (const ex& known : factors) {
+      if (known.is_equal(f) || (-known).expand().is_equal(f.expand())) {
+        return;
+      }
+    }
+    factors.push_back(f);
+  };
+  const ex product = expanded_terms(e) <= 300 ? GiNaC::factor(e) : e;
+  const auto one = [&](const ex& f) {
+    if (is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1))) {
+      add(f.op(0));
+    } else {
+      add(f);
+    }
+  };
+  if (is_a<GiNaC::mul>(product)) {
+    for (std::size_t i = 0; i < product.nops(); ++i) {
+      one(product.op(i));
+    }
+  } else {
+    one(product);
+  }
+  return factors;
+}
+
+namespace {
+
+struct Solved {
+  ex symbol;
+  ex value;
+};
+
+// One state of the search: polynomial premises (each = 0), the target (a rational expression,
+// = 0), the substitutions made so far.
+struct Frame {
+  std::vector<ex> premises;
+  ex target;
+  std::vector<Solved> solved;
+  std::size_t depth = 0;
+};
+
+struct Found {
+  Outcome outcome = Outcome::unknown;
+  std::vector<ex> conditions;
+  bool conditions_needed = true;
+  ex residual;
+  std::optional<GiNaC::exmap> point;
+  std::vector<std::string> how;
+};
+
+ex numerator(const ex& e) {
+  return GiNaC::normal(e).numer();
+}
+
+bool same_up_to_constant(const ex& a, const ex& b) {
+  const ex ratio = GiNaC::normal(a / b);
+  return is_a<numeric>(ratio);
+}
+
+std::string text(const ex& e) {
+  std::ostringstream out;
+  out << GiNaC::latex << e;
+  return out.str();
+}
+
+class Decider {
+ public:
+  Decider(const Problem& problem, const Facts& facts, const Budget& budget)
+      : problem_(problem), facts_(facts), budget_(budget) {
+    std::vector<ex> all{problem.target};
+    all.insert(all.end(), problem.premises.begin(), problem.premises.end());
+    all.insert(all.end(), problem.premise_denominators.begin(), problem.premise_denominators.end());
+    all.insert(all.end(), problem.target_denominators.begin(), problem.target_denominators.end());
+    symbols_ = symbols_of(all);
+  }
+
+  Found run(Frame frame) {
+    if (++frames_ > budget_.frames) {
+      return unknown(frame, "the exact search reached its limit of cases");
+    }
+    if (expanded_terms(frame.target) > budget_.terms) {
+      return unknown(frame, "the step is too large to expand exactly");
+    }
+    const ex target = numerator(frame.target);
+    if (target.is_zero()) {
+      Found found;
+      found.outcome = Outcome::holds;
+      return found;
+    }
+    // The premises as products of doubtful factors.
+    std::vector<ex> singles;
+    std::optional<std::pair<std::size_t, std::vector<ex>>> split;
+    for (const ex& premise : frame.premises) {
+      if (expanded_terms(premise) > budget_.terms) {
+        return unknown(frame, "an equation before is too large to expand exactly");
+      }
+      const ex p = numerator(premise);
+      if (p.is_zero()) {
+        continue;  // holds everywhere: says nothing
+      }
+      std::vector<ex> factors = doubtful_factors(p, facts_);
+      if (factors.empty()) {
+        // A non-zero constant, or a product the facts keep from zero: no point satisfies it.
+        Found found;
+        found.outcome = Outcome::holds;
+        found.how.push_back("no values satisfy the equations before under the facts");
+        return found;
+      }
+      if (factors.size() > 1 && !split) {
+        split = std::pair{singles.size(), factors};
+      }
+      ex product = 1;
+      for (const ex& f : factors) {
+        product *= f;
+      }
+      singles.push_back(factors.size() == 1 ? factors[0] : GiNaC::expand(product));
+    }
+    if (singles.empty()) {
+      return leaf(frame, target);
+    }
+    if (const auto choice = best_linear(singles, frame.target, true)) {
+      return eliminate(frame, singles, *choice);
+    }
+    if (split) {
+      return branch(frame, singles, split->first, split->second);
+    }
+    if (const auto choice = best_linear(singles, frame.target, false)) {
+      return eliminate(frame, singles, *choice);
+    }
+    return nonlinear(frame, singles, target);
+  }
+
+ private:
+  struct Choice {
+    std::size_t premise;
+    ex symbol;
+    ex coefficient;
+    ex rest;
+  };
+
+  // A premise linear in a symbol: the one whose coefficient the facts show non-zero when
+  // `provable`, else any; among those, a symbol of the target and without a fact of its own.
+  std::optional<Choice> best_linear(const std::vector<ex>& premises, const ex& target,
+                                    bool provable) const {
+    std::optional<Choice> best;
+    double best_score = -1;
+    for (std::size_t i = 0; i < premises.size(); ++i) {
+      const ex& p = premises[i];
+      for (const ex& u : symbols_of(p)) {
+        if (!p.is_polynomial(u) || p.degree(u) != 1) {
+          continue;
+        }
+        const ex alpha = p.coeff(u, 1);
+        const bool nonzero = facts_.nonzero(alpha);
+        if (provable != nonzero) {
+          continue;
+        }
+        double score = 0;
+        score += is_a<numeric>(alpha) ? 40 : 0;
+        score += target.has(u) ? 10 : 0;
+        score += facts_.of_symbol(u) == Sign::unknown ? 5 : 0;
+        score -= std::min(expanded_terms(alpha), 20.0);
+        if (score > best_score) {
+          best_score = score;
+          best = Choice{i, u, alpha, p.coeff(u, 0)};
+        }
+      }
+    }
+    return best;
+  }
+
+  Found eliminate(const Frame& frame, const std::vector<ex>& premises, const Choice& choice) {
+    const ex value = -choice.rest / choice.coefficient;
+    Frame child;
+    child.depth = frame.depth + 1;
+    child.solved = frame.solved;
+    child.solved.push_back({choice.symbol, value});
+    const GiNaC::exmap substitution{{choice.symbol, value}};
+    for (std::size_t i = 0; i < premises.size(); ++i) {
+      if (i != choice.premise) {
+        child.premises.push_back(premises[i].subs(substitution));
+      }
+    }
+    child.target = frame.target.subs(substitution);
+    Found found = run(child);
+    const std::string solved_for = "solved for " + text(choice.symbol);
+    found.how.insert(found.how.begin(), solved_for);
+    if (found.outcome != Outcome::holds && found.outcome != Outcome::holds_if) {
+      return found;
+    }
+    // The division by the coefficient: needed only if the step fails where it vanishes.
+    for (const ex& g : doubtful_factors(choice.coefficient, facts_)) {
+      Frame zero = frame;
+      zero.premises = premises;
+      zero.premises.push_back(g);
+      zero.depth = frame.depth + 1;
+      const Found there = run(zero);
+      if (there.outcome == Outcome::holds) {
+        continue;
+      }
+      found.outcome = Outcome::holds_if;
+      found.conditions.push_back(g);
+      if (there.outcome != Outcome::fails) {
+        found.conditions_needed = false;
+      }
+    }
+    return found;
+  }
+
+  Found branch(const Frame& frame, const std::vector<ex>& premises, std::size_t index,
+               const std::vector<ex>& factors) {
+    std::vector<Found> cases;
+    for (const ex& f : factors) {
+      Frame child = frame;
+      child.depth = frame.depth + 1;
+      child.premises = premises;
+      child.premises[index] = f;
+      cases.push_back(run(child));
+    }
+    Found combined;
+    std::vector<ex> failing;
+    bool any_unknown = false;
+    const Found* first_failure = nullptr;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      const Found& c = cases[i];
+      if (c.outcome == Outcome::fails) {
+        failing.push_back(factors[i]);
+        if (!first_failure) {
+          first_failure = &c;
+        }
+      } else if (c.outcome == Outcome::unknown) {
+        any_unknown = true;
+      } else {
+        for (const ex& condition : c.conditions) {
+          combined.conditions.push_back(condition);
+        }
+        combined.conditions_needed = combined.conditions_needed && c.conditions_needed;
+      }
+    }
+    std::string cases_text = "the equation before factors into ";
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+      cases_text += (i == 0 ? "" : i + 1 == factors.size() ? " and " : ", ") + text(factors[i]);
+    }
+    if (failing.empty() && !any_unknown) {
+      combined.outcome = combined.conditions.empty() ? Outcome::holds : Outcome::holds_if;
+      combined.how.push_back(cases_text + ": the step holds in each case");
+      return combined;
+    }
+    if (first_failure && !any_unknown && failing.size() < factors.size()) {
+      combined.outcome = Outcome::holds_if;
+      for (const ex& f : failing) {
+        combined.conditions.push_back(f);
+      }
+      combined.how.push_back(
+          cases_text + ": the step holds where " +
+          (failing.size() == 1 ? text(failing[0]) + " \\neq 0" : "these factors are not zero") +
+          ", not where it is zero");
+      return combined;
+    }
+    if (first_failure) {
+      Found failure = *first_failure;
+      failure.how.insert(failure.how.begin(), cases_text);
+      return failure;
+    }
+    Found unknown_case;
+    unknown_case.outcome = Outcome::unknown;
+    unknown_case.residual = frame.target;
+    unknown_case.how.push_back(cases_text + ": some case could not be decided");
+    return unknown_case;
+  }
+
+  // Premises that are linear in none of their symbols.
+  Found nonlinear(const Frame& frame, const std::vector<ex>& premises, const ex& target) {
+    for (const ex& p : premises) {
+      ex quotient;
+      if (expanded_terms(target) <= budget_.terms &&
+          GiNaC::divide(GiNaC::expand(target), GiNaC::expand(p), quotient)) {
+        Found found;
+        found.outcome = Outcome::holds;
+        found.how.push_back("the step is " + text(quotient) + " times the equation before");
+        return found;
+      }
+    }
+    if (premises.size() == 1) {
+      // An irreducible premise that does not divide the step: the step fails at its generic
+      // points. Find one, solving the premise as a quadratic in one symbol.
+      for (const ex& u : symbols_of(premises[0])) {
+        const ex& p = premises[0];
+        if (!p.is_polynomial(u) || p.degree(u) != 2) {
+          continue;
+        }
+        const ex a = p.coeff(u, 2);
+        const ex b = p.coeff(u, 1);
+        const ex c = p.coeff(u, 0);
+        for (const int root : {1, -1}) {
+          Frame leaf_frame = frame;
+          leaf_frame.premises.clear();
+          const ex value = (-b + root * GiNaC::sqrt(b * b - 4 * a * c)) / (2 * a);
+          leaf_frame.solved.push_back({u, value});
+          leaf_frame.target = frame.target.subs(GiNaC::exmap{{u, value}});
+          Found found = leaf(leaf_frame, target, /*exact_only=*/false);
+          if (found.outcome == Outcome::fails) {
+            found.residual = frame.target;
+            found.how.insert(found.how.begin(),
+                             "solved the equation before for " + text(u) + " (a quadratic)");
+            return found;
+          }
+        }
+      }
+    }
+    return unknown(frame,
+                   "the equations before are not linear in any symbol and do not "
+                   "divide the step");
+  }
+
+  Found unknown(const Frame& frame, const std::string& why) const {
+    Found found;
+    found.outcome = Outcome::unknown;
+    found.residual = frame.target;
+    found.how.push_back(why);
+    return found;
+  }
+
+  // No premise left and the target does not vanish: look for a point that shows it.
+  Found leaf(const Frame& frame, const ex& target, bool exact_only = true) {
+    Found found;
+    found.residual = frame.target;
+    found.point = counterexample(frame, exact_only);
+    if (found.point) {
+      found.outcome = Outcome::fails;
+      return found;
+    }
+    found.outcome = Outcome::unknown;
+    found.how.push_back("the step does not vanish once the equations before are used (" +
+                        text(target) +
+                        "), but no values satisfying the facts were found to show it");
+    return found;
+  }
+
+  // ---- counterexamples ----
+  // Small values first: a counterexample is to be checked by hand.
+  static std::vector<numeric> candidates(Sign sign) {
+    const std::vector<numeric> positive{
+        1, 2, 3, numeric(1, 2), 4, 5, numeric(3, 2), numeric(1, 3), 7, numeric(2, 3), 6, 10};
+    std::vector<numeric> list;
+    for (std::size_t i = 0; i < positive.size(); ++i) {
+      const numeric& v = positive[i];
+      switch (sign) {
+        case Sign::positive:
+          list.push_back(v);
+          break;
+        case Sign::negative:
+          list.push_back(-v);
+          break;
+        case Sign::nonnegative:
+        case Sign::nonpositive:
+          if (i == 3) {
+            list.emplace_back(0);
+          }
+          list.push_back(sign == Sign::nonnegative ? v : -v);
+          break;
+        case Sign::nonzero:
+          list.push_back(v);
+          list.push_back(-v);
+          break;
+        default:
+          list.push_back(v);
+          if (i == 5) {
+            list.emplace_back(0);
+          }
+          list.push_back(-v);
+          break;
+      }
+    }
+    return list;
+  }
+
+  static bool is_zero_value(const ex& v) {
+    if (is_a<numeric>(v)) {
+      return GiNaC::ex_to<numeric>(v).is_zero();
+    }
+    const ex n = GiNaC::normal(v);
+    if (n.is_zero()) {
+      return true;
+    }
+    const ex f = GiNaC::evalf(n);
+    if (!is_a<numeric>(f)) {
+      return false;  // not a number: treated as unknown by the caller
+    }
+    return GiNaC::abs(GiNaC::ex_to<numeric>(f)) <
+           numeric(1, 1000000) * numeric(1, 1000000) * numeric(1, 1000000);
+  }
+
+  static bool real_number(const ex& v) {
+    const ex f = GiNaC::evalf(v);
+    return is_a<numeric>(f) && GiNaC::ex_to<numeric>(f).is_real();
+  }
+
+  // Points made of small numbers: the free symbols get values in turn, the solved ones follow.
+  std::optional<GiNaC::exmap> counterexample(const Frame& frame, bool exact_only) {
+    std::vector<ex> free;
+    for (const ex& s : symbols_) {
+      const bool solved = std::any_of(frame.solved.begin(), frame.solved.end(),
+                                      [&](const Solved& x) { return x.symbol.is_equal(s); });
+      if (!solved) {
+        free.push_back(s);
+      }
+    }
+    std::optional<GiNaC::exmap> best;
+    double best_cost = std::numeric_limits<double>::infinity();
+    std::size_t valid = 0;
+    std::uint64_t state = 0x9E3779B97F4A7C15ULL;
+    for (std::size_t attempt = 0; attempt < budget_.attempts && valid < 6; ++attempt) {
+      GiNaC::exmap point;
+      for (std::size_t k = 0; k < free.size(); ++k) {
+        const std::vector<numeric> list = candidates(facts_.of_symbol(free[k]));
+        std::size_t index = 0;
+        if (attempt > 0) {
+          state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+          // Small indices first: the first attempts stay with 1, 2, 3.
+          const std::size_t reach = std::min(list.size(), 2 + attempt / 8);
+          index = static_cast<std::size_t>((state >> 33) % reach);
+        }
+        point[free[k]] = list[index];
+      }
+      try {
+        bool ok = true;
+        for (auto s = frame.solved.rbegin(); s != frame.solved.rend() && ok; ++s) {
+          const ex v = GiNaC::normal(s->value.subs(point));
+          if (!real_number(v)) {
+            ok = false;
+            break;
+          }
+          if (exact_only && !is_a<numeric>(v)) {
+            ok = false;
+            break;
+          }
+          point[s->symbol] = v;
+        }
+        if (!ok || !satisfies(point)) {
+          continue;
+        }
+        const ex value = problem_.target.subs(point);
+        if (is_zero_value(value) || !real_number(value)) {
+          continue;
+        }
+        ++valid;
+        double cost = 0;
+        for (const auto& [symbol, v] : point) {
+          if (is_a<numeric>(v)) {
+            const numeric n = GiNaC::ex_to<numeric>(v);
+            cost += std::abs(n.numer().to_double()) + 3 * (n.denom().to_double() - 1);
+          } else {
+            cost += 50;
+          }
+        }
+        if (cost < best_cost) {
+          best_cost = cost;
+          best = point;
+        }
+      } catch (const std::exception&) {
+        continue;  // a division by zero at this point
+      }
+    }
+    return best;
+  }
+
+  // The point satisfies the facts, every premise exactly, and every equation is defined there.
+  bool satisfies(const GiNaC::exmap& point) const {
+    for (const auto& [symbol, value] : point) {
+      if (is_a<numeric>(value)) {
+        if (!facts_.satisfied(symbol, GiNaC::ex_to<numeric>(value))) {
+          return false;
+        }
+      } else if (facts_.of_symbol(symbol) != Sign::unknown) {
+        const ex f = GiNaC::evalf(value);
+        if (!is_a<numeric>(f) || !facts_.satisfied(symbol, GiNaC::ex_to<numeric>(f))) {
+          return false;
+        }
+      }
+    }
+    for (const ex& d : problem_.premise_denominators) {
+      if (is_zero_value(d.subs(point))) {
+        return false;
+      }
+    }
+    for (const ex& d : problem_.target_denominators) {
+      if (is_zero_value(d.subs(point))) {
+        return false;
+      }
+    }
+    for (const ex& p : problem_.premises) {
+      if (!is_zero_value(p.subs(point))) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  const Problem& problem_;
+  const Facts& facts_;
+  const Budget& budget_;
+  std::vector<ex> symbols_;
+  std::size_t frames_ = 0;
+};
+
+// ---- sines and cosines -------------------------------------------------------------------------
+// sin, cos and tan of sums of whole multiples of products of symbols (θ, 2θ, θ + φ, ω t) are
+// rewritten with τ = tan(angle/2): sin = 2τ/(1 + τ²), cos = (1 − τ²)/(1 + τ²). Identities of
+// sines and cosines become identities of rational functions, which the search decides. Where a
+// rewritten step holds for every τ, it holds for τ = tan(angle/2); where it fails, the failure
+// may need a τ that is no tangent of the angle, so a failure is left to the numeric method.
+struct TrigRewrite {
+  GiNaC::exmap forward;                     // sin(…), cos(…), tan(…) → rational in τ
+  std::vector<std::pair<ex, ex>> tangents;  // τ, and the angle it stands for
+};
+
+// a = Σ k_i M_i with whole k_i and monomials M_i of symbols; empty when a is not of that form.
+std::optional<std::vector<std::pair<numeric, ex>>> angle_terms(const ex& a) {
+  const ex expanded = GiNaC::expand(a);
+  std::vector<std::pair<numeric, ex>> terms;
+  const auto term = [&](const ex& t) {
+    numeric k = 1;
+    ex monomial = 1;
+    const auto factor = [&](const ex& f) {
+      if (is_a<numeric>(f)) {
+        k *= GiNaC::ex_to<numeric>(f);
+        return true;
+      }
+      if (is_a<GiNaC::symbol>(f) || (is_a<GiNaC::power>(f) && is_a<GiNaC::symbol>(f.op(0)) &&
+                                     f.op(1).info(GiNaC::info_flags::posint))) {
+        monomial *= f;
+        return true;
+      }
+      return false;
+    };
+    bool ok = true;
+    if (is_a<GiNaC::mul>(t)) {
+      for (std::size_t i = 0; i < t.nops() && ok; ++i) {
+        ok = factor(t.op(i));
+      }
+    } else {
+      ok = factor(t);
+    }
+    if (!ok || !k.is_integer() || monomial.is_equal(1)) {
+      return false;
+    }
+    terms.emplace_back(k, monomial);
+    return true;
+  };
+  if (is_a<GiNaC::add>(expanded)) {
+    for (std::size_t i = 0; i < expanded.nops(); ++i) {
+      if (!term(expanded.op(i))) {
+        return std::nullopt;
+      }
+    }
+  } else if (!term(expanded)) {
+    return std::nullopt;
+  }
+  return terms;
+}
+
+class Trig {
+ public:
+  TrigRewrite rewrite(const std::vector<ex>& expressions) {
+    TrigRewrite result;
+    for (const ex& e : expressions) {
+      for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+        if (!is_a<GiNaC::function>(*i) || i->nops() != 1) {
+          continue;
+        }
+        const std::string name = GiNaC::ex_to<GiNaC::function>(*i).get_name();
+        if (name != "sin" && name != "cos" && name != "tan") {
+          continue;
+        }
+        const auto terms = angle_terms(i->op(0));
+        if (!terms || result.forward.count(*i) != 0) {
+          continue;
+        }
+        auto [sine, cosine] = of_sum(*terms);
+        result.forward[*i] = name == "sin" ? sine : name == "cos" ? cosine : sine / cosine;
+      }
+    }
+    for (const auto& [monomial, tau] : tangents_) {
+      result.tangents.emplace_back(tau, monomial);
+    }
+    return result;
+  }
+
+ private:
+  std::pair<ex, ex> of_monomial(const ex& monomial) {
+    for (const auto& [m, tau] : tangents_) {
+      if (m.is_equal(monomial)) {
+        return {2 * tau / (1 + tau * tau), (1 - tau * tau) / (1 + tau * tau)};
+      }
+    }
+    std::ostringstream name;
+    name << "tau_" << tangents_.size();
+    const ex tau =
+        GiNaC::realsymbol(name.str(), "\\tau_{" + std::to_string(tangents_.size()) + "}");
+    tangents_.emplace_back(monomial, tau);
+    return of_monomial(monomial);
+  }
+
+  // sin and cos of k·M, by the recurrences of whole multiples.
+  std::pair<ex, ex> of_multiple(const numeric& k, const ex& monomial) {
+    const auto [s1, c1] = of_monomial(monomial);
+    const long n = GiNaC::abs(k).to_long();
+    ex s_previous = 0, c_previous = 1, s = s1, c = c1;
+    if (n == 0) {
+      return {0, 1};
+    }
+    for (long j = 1; j < n; ++j) {
+      const ex s_next = GiNaC::normal(2 * c1 * s - s_previous);
+      const ex c_next = GiNaC::normal(2 * c1 * c - c_previous);
+      s_previous = s;
+      c_previous = c;
+      s = s_next;
+      c = c_next;
+    }
+    return {k.is_negative() ? ex(-s) : s, c};
+  }
+
+  std::pair<ex, ex> of_sum(const std::vector<std::pair<numeric, ex>>& terms) {
+    ex s = 0, c = 1;
+    for (const auto& [k, monomial] : terms) {
+      const auto [sk, ck] = of_multiple(k, monomial);
+      const ex s_next = s * ck + c * sk;
+      const ex c_next = c * ck - s * sk;
+      s = GiNaC::normal(s_next);
+      c = GiNaC::normal(c_next);
+    }
+    return {s, c};
+  }
+
+  std::vector<std::pair<ex, ex>> tangents_;  // angle monomial, τ
+};
+
+}  // namespace
+
+Implication implies(const Problem& original, const Facts& facts, const Budget& budget) {
+  Implication result;
+  // Sines and cosines become rational functions of tangents of half angles.
+  std::vector<ex> all{original.target};
+  all.insert(all.end(), original.premises.begin(), original.premises.end());
+  all.insert(all.end(), original.premise_denominators.begin(), original.premise_denominators.end());
+  all.insert(all.end(), original.target_denominators.begin(), original.target_denominators.end());
+  Trig trig;
+  const TrigRewrite rewrite = trig.rewrite(all);
+  Problem problem = original;
+  if (!rewrite.forward.empty()) {
+    const auto apply = [&](std::vector<ex>& list) {
+      for (ex& e : list) {
+        e = e.subs(rewrite.forward);
+      }
+    };
+    apply(problem.premises);
+    apply(problem.premise_denominators);
+    apply(problem.target_denominators);
+    problem.target = problem.target.subs(rewrite.forward);
+  }
+  Decider decider(problem, facts, budget);
+  Frame start;
+  start.premises = problem.premises;
+  start.target = problem.target;
+  Found found;
+  try {
+    found = decider.run(start);
+  } catch (const std::exception& e) {
+    found = Found{};
+    found.outcome = Outcome::unknown;
+    found.residual = problem.target;
+    found.how.push_back(std::string("the exact method stopped: ") + e.what());
+  }
+  if (!rewrite.forward.empty()) {
+    if (found.outcome == Outcome::fails) {
+      found.outcome = Outcome::unknown;
+      found.point.reset();
+      found.how.push_back(
+          "with sines and cosines written through tangents of half angles, the "
+          "step does not hold everywhere; the numeric method looks for the "
+          "angles that show it");
+      found.residual = original.target;
+    } else {
+      // Conditions back in the angles: τ = tan(angle/2).
+      GiNaC::exmap back;
+      for (const auto& [tau, angle] : rewrite.tangents) {
+        back[tau] = GiNaC::tan(angle / 2);
+      }
+      for (ex& c : found.conditions) {
+        c = c.subs(back);
+      }
+      found.how.insert(found.how.begin(),
+                       "sines and cosines written through tangents of half "
+                       "angles");
+    }
+  }
+  result.outcome = found.outcome;
+  result.conditions = found.conditions;
+  result.conditions_needed = found.conditions_needed;
+  result.residual = found.residual;
+  result.point = found.point;
+  for (std::size_t i = 0; i < found.how.size(); ++i) {
+    result.how += (i == 0 ? "" : "; ") + found.how[i];
+  }
+  // What the step divides by that the equations before did not: where it vanishes, the step
+  // is not even defined.
+  if (result.outcome == Outcome::holds || result.outcome == Outcome::holds_if) {
+    std::vector<ex> before;
+    for (const ex& d : problem.premise_denominators) {
+      for (const ex& f : doubtful_factors(numerator(d), facts)) {
+        before.push_back(f);
+      }
+    }
+    for (const ex& d : problem.target_denominators) {
+      for (const ex& f : doubtful_factors(numerator(d), facts)) {
+        const auto known = [&](const ex& g) { return same_up_to_constant(f, g); };
+        if (std::any_of(before.begin(), before.end(), known) ||
+            std::any_of(result.conditions.begin(), result.conditions.end(), known)) {
+          continue;
+        }
+        result.conditions.push_back(f);
+        result.outcome = Outcome::holds_if;
+        if (result.how.find("divides by") == std::string::npos) {
+          result.how +=
+              std::string(result.how.empty() ? "" : "; ") + "the step divides by " + text(f);
+        }
+      }
+    }
+  }
+  return result;
+}
+
+}  // namespace impulse::derivations::file

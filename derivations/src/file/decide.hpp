@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The exact method: does an equation follow from others, under sign facts? Each equation is an
+// expression equal to zero. The premises are brought to polynomials; a premise that factors is
+// split into its cases (F·(…) = 0: F = 0 or … = 0), one that is linear in a symbol is solved for
+// it and substituted; what is left of the step must vanish. A verdict of failure always carries
+// a point (exact numbers) that satisfies the premises and the facts but not the step; a needed
+// condition (a factor that may be zero) is tested by adding "it is zero" as a premise.
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "file/facts.hpp"
+
+namespace impulse::derivations::file {
+
+/// Premises and one target, each an expression equal to zero.
+struct Problem {
+  std::vector<GiNaC::ex> premises;
+  std::vector<GiNaC::ex> premise_denominators;  ///< must not vanish where the premises are read
+  GiNaC::ex target;
+  std::vector<GiNaC::ex> target_denominators;  ///< must not vanish where the step is read
+};
+
+/// What the exact method found.
+struct Implication {
+  enum class Outcome {
+    holds,     ///< the target vanishes wherever the premises do (and the facts hold)
+    holds_if,  ///< … wherever, besides, each condition ≠ 0
+    fails,     ///< a point satisfies the premises and the facts, not the target
+    unknown,   ///< none of the above could be shown
+  };
+  Outcome outcome = Outcome::unknown;
+  std::vector<GiNaC::ex> conditions;  ///< holds_if: each must not be zero
+  bool conditions_needed = true;      ///< whether every condition was shown to be needed
+  GiNaC::ex residual;                 ///< fails, unknown: the target once the premises are used
+  std::optional<GiNaC::exmap> point;  ///< fails: exact values of every symbol
+  std::string how;                    ///< a sentence for the report
+};
+
+/// The exact method's work limits: beyond them it answers "unknown", never a guess.
+struct Budget {
+  std::size_t frames = 96;     ///< cases and substitutions explored
+  double terms = 4000;         ///< terms of an expanded polynomial
+  std::size_t attempts = 160;  ///< candidate points for a counterexample
+};
+
+/// Decides whether @p problem's target follows from its premises under @p facts.
+[[nodiscard]] Implication implies(const Problem& problem, const Facts& facts,
+                                  const Budget& budget = {});
+
+/// The symbols of an expression, in a stable order (by name).
+[[nodiscard]] std::vector<GiNaC::ex> symbols_of(const GiNaC::ex& e);
+/// The symbols of several expressions, each once, in a stable order (by name).
+[[nodiscard]] std::vector<GiNaC::ex> symbols_of(const std::vector<GiNaC::ex>& expressions);
+
+/// An upper estimate of the terms of @p e once expanded (for the size guard).
+[[nodiscard]] double expanded_terms(const GiNaC::ex& e);
+
+/// The factors of @p e (a polynomial) that the facts do not show to be non-zero, each once,
+/// without numeric factors. Empty when @p e is a non-zero constant.
+[[nodiscard]] std::vector<GiNaC::ex> doubtful_factors(const GiNaC::ex& e, const Facts& facts);
+
+}  // namespace impulse::derivations::file

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The LaTeX of a display block, read into a syntax tree: rows of equations (split at \\ and at
+// every `=`), each side an expression of numbers, symbols, sums, products, fractions, powers,
+// functions, norms, determinants and vector literals. What the tree means (scalars or vectors,
+// definitions) is the next layer's business (meaning.hpp); this one only knows the notation.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "file/text.hpp"
+
+namespace impulse::derivations::file {
+
+/// A symbol as written: `\Delta E_{o}'` is base "E", subscript "o", one prime, delta.
+struct SymbolName {
+  std::string base;       ///< a letter, a Greek command ("\omega"), "dt", or a \mathrm{} name
+  std::string subscript;  ///< "", "1", "vn", "\alpha"
+  int primes = 0;         ///< p' has one
+  bool delta = false;     ///< \Delta X: the change of X, one symbol
+
+  /// The canonical LaTeX of the symbol ("p_{1}'", "\Delta E_{o}", "\omega"), the key under which
+  /// the file's symbols are known.
+  [[nodiscard]] std::string latex() const;
+  /// A plain-text name ("p_1'", "Delta E_o", "omega").
+  [[nodiscard]] std::string plain() const;
+  /// The same name without its primes.
+  [[nodiscard]] SymbolName unprimed() const;
+  bool operator==(const SymbolName&) const = default;
+};
+
+/// The kinds of node of an expression tree.
+enum class NodeKind {
+  number,    ///< a decimal literal, exact: `text`
+  symbol,    ///< `symbol`
+  pi,        ///< \pi, the constant
+  sum,       ///< children with `ops` '+' or '-' (the first may be '-': unary minus)
+  product,   ///< children with `ops`: ' ' (first, or juxtaposition), '.' (\cdot), 'x' (\times),
+             ///< '*' and '/' (division by the child)
+  fraction,  ///< \frac{children[0]}{children[1]}
+  power,     ///< children[0]^children[1]
+  function,  ///< `text` ("sin", "cos", "tan", "exp", "ln") of children[0]
+  root,      ///< \sqrt{children[0]}, or the children[1]-th root when there are two
+  norm,      ///< \|children[0]\|
+  abs,       ///< |children[0]|
+  det,       ///< \det(children[0], children[1])
+  vector,    ///< [children[0], children[1]]
+};
+
+/// A node of an expression tree, with the span of the file it was read from.
+struct Node {
+  NodeKind kind = NodeKind::number;
+  std::size_t offset = 0;  ///< where its first token stands in the file
+  std::size_t end = 0;     ///< the byte after its last token
+  std::string text;        ///< number: its digits; function: its name
+  SymbolName symbol;       ///< symbol
+  std::vector<Node> children;
+  std::string ops;  ///< sum and product: one operator character per child
+};
+
+/// One side of an equation: its tree and its LaTeX as written (spacing kept, `&` dropped).
+struct Side {
+  Node expression;
+  std::string latex;
+  std::size_t offset = 0;  ///< where it begins in the file
+};
+
+/// One row of a display block (between `\\`): `a = b = c` has three sides.
+struct Row {
+  std::vector<Side> sides;  ///< two or more; when `continues`, the first is the empty side
+  bool continues = false;   ///< the row began with `=`: its left side is the row before's right
+  std::optional<std::string> tag;  ///< `\tag{k}`: "k"
+  std::size_t offset = 0;          ///< where the row begins in the file
+};
+
+/// Reads the rows of a display block. Throws ReadError with the place of whatever is not
+/// understood (an unknown command, an unbalanced brace, an expression without `=`, …).
+/// @param source the file
+/// @param content_offset where the block's content begins in the file
+/// @param content the block's content (between the two `$$`)
+/// @param limits nesting depth, number length, exponent size
+[[nodiscard]] std::vector<Row> read_block(const Source& source, std::size_t content_offset,
+                                          std::string_view content, const Limits& limits);
+
+/// Reads one expression (the LaTeX of a directive: a `let:` right side), spanning the whole
+/// of @p text.
+[[nodiscard]] Side read_expression(const Source& source, std::size_t offset, std::string_view text,
+                                   const Limits& limits);
+
+/// Reads one symbol name spanning the whole of @p text (the names of `vector:`, `units:`,
+/// `assume:`, `let:`). Throws ReadError when it is not one symbol.
+[[nodiscard]] SymbolName read_symbol(const Source& source, std::size_t offset,
+                                     std::string_view text, const Limits& limits);
+
+}  // namespace impulse::derivations::file

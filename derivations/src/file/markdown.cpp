@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "file/markdown.hpp"
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <string>
+
+namespace impulse::derivations::file {
+
+namespace {
+
+constexpr std::array<std::pair<std::string_view, DirectiveKind>, 6> directive_words{{
+    {"assume", DirectiveKind::assume},
+    {"let", DirectiveKind::let},
+    {"given", DirectiveKind::given},
+    {"from", DirectiveKind::from},
+    {"vector", DirectiveKind::vector},
+    {"units", DirectiveKind::units},
+}};
+
+bool blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
+}
+
+class Scanner {
+ public:
+  Scanner(const Source& source, const Limits& limits)
+      : source_(source), text_(source.text()), limits_(limits) {}
+
+  std::vector<Item> run() {
+    std::size_t i = 0;
+    while (i < text_.size()) {
+      i = line(i);
+    }
+    return std::move(items_);
+  }
+
+ private:
+  // One line of prose from its start; returns the offset after it (a display block, a comment
+  // or a fence may take the scan past several lines).
+  std::size_t line(std::size_t start) {
+    const std::size_t end = line_end(start);
+    if (const auto fence = fence_at(start, end)) {
+      return skip_fence(start, end, *fence);
+    }
+    if (directive_at(start, end)) {
+      return next_line(end);
+    }
+    return prose(start);
+  }
+
+  std::size_t line_end(std::size_t i) const {
+    const std::size_t newline = text_.find('\n', i);
+    return newline == std::string::npos ? text_.size() : newline;
+  }
+  std::size_t next_line(std::size_t end) const { return end < text_.size() ? end + 1 : end; }
+
+  struct Fence {
+    char mark;
+    std::size_t length;
+  };
+
+  // A fenced code block opens with up to three spaces and ``` or ~~~ (three or more).
+  std::optional<Fence> fence_at(std::size_t start, std::size_t end) const {
+    std::size_t i = start;
+    while (i < end && i - start < 3 && text_[i] == ' ') {
+      ++i;
+    }
+    if (i >= end || (text_[i] != '`' && text_[i] != '~')) {
+      return std::nullopt;
+    }
+    const char mark = text_[i];
+    std::size_t length = 0;
+    while (i + length < end && text_[i + length] == mark) {
+      ++length;
+    }
+    if (length < 3) {
+      return std::nullopt;
+    }
+    return Fence{mark, length};
+  }
+
+  std::size_t skip_fence(std::size_t start, std::size_t end, Fence fence) {
+    std::size_t i = next_line(end);
+    while (i < text_.size()) {
+      const std::size_t e = line_end(i);
+      if (const auto close = fence_at(i, e);
+          close && close->mark == fence.mark && close->length >= fence.length) {
+        return next_line(e);
+      }
+      i = next_line(e);
+    }
+    throw source_.error(start, "expected the code block opened here to be closed by " +
+                                   std::string(fence.length, fence.mark));
+  }
+
+  bool directive_at(std::size_t start, std::size_t end) {
+    std::size_t i = start;
+    while (i < end && blank(text_[i])) {
+      ++i;
+    }
+    for (const auto& [word, kind] : directive_words) {
+      if (text_.compare(i, word.size(), word) == 0 && i + word.size() < end &&
+          text_[i + word.size()] == ':') {
+        std::size_t content = i + word.size() + 1;
+        std::size_t last = end;
+        while (content < last && blank(text_[content])) {
+          ++content;
+        }
+        while (last > content && blank(text_[last - 1])) {
+          --last;
+        }
+        // Accepted beyond the contract: the directive's LaTeX wrapped in $…$.
+        if (last - content >= 2 && text_[content] == '$' && text_[last - 1] == '$' &&
+            text_[content + 1] != '$') {
+          ++content;
+          --last;
+          while (content < last && blank(text_[content])) {
+            ++content;
+          }
+          while (last > content && blank(text_[last - 1])) {
+            --last;
+          }
+        }
+        items_.push_back(
+            Directive{kind, i, content, std::string_view(text_).substr(content, last - content)});
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // Prose from @p i to the end of its line: looks for $$, skipping code spans, escaped dollars
+  // and HTML comments. A comment or a display block may end on a later line; the scan then goes
+  // on to the end of that line.
+  std::size_t prose(std::size_t i) {
+    std::size_t end = line_end(i);
+    while (i < end) {
+      const char c = text_[i];
+      if (c == '\\' && i + 1 < end) {
+        i += 2;
+      } else if (c == '`') {
+        i = skip_code_span(i, end);
+      } else if (text_.compare(i, 4, "<!--") == 0) {
+        const std::size_t close = text_.find("-->", i + 4);
+        if (close == std::string::npos) {
+          throw source_.error(i, "expected the comment opened here to be closed by -->");
+        }
+        i = close + 3;
+        end = std::max(end, line_end(close));
+      } else if (text_.compare(i, 2, "$$") == 0) {
+        const std::size_t close = display_block(i);
+        end = std::max(end, line_end(close));
+        i = close + 2;
+      } else {
+        ++i;
+      }
+    }
+    return next_line(end);
+  }
+
+  std::size_t skip_code_span(std::size_t i, std::size_t end) const {
+    std::size_t run = 0;
+    while (i + run < end && text_[i + run] == '`') {
+      ++run;
+    }
+    const std::string ticks(run, '`');
+    for (std::size_t k = i + run; k < end;) {
+      const std::size_t found = text_.find(ticks, k);
+      if (found == std::string::npos || found >= end) {
+        break;
+      }
+      std::size_t other = 0;
+      while (found + other < end && text_[found + other] == '`') {
+        ++other;
+      }
+      if (other == run) {
+        return found + run;
+      }
+      k = found + other;
+    }
+    return i + run;  // no closing run: the backticks are literal
+  }
+
+  std::size_t display_block(std::size_t open) {
+    const std::size_t content = open + 2;
+    std::size_t k = content;
+    while (true) {
+      const std::size_t close = text_.find("$$", k);
+      if (close == std::string::npos) {
+        throw source_.error(open, "expected the display block opened here to be closed by $$");
+      }
+      if (close > content && text_[close - 1] == '\\') {  // \$ is a dollar sign
+        k = close + 1;
+        continue;
+      }
+      if (items_.size() >= limits_.equations) {
+        throw source_.error(open, "expected at most " + std::to_string(limits_.equations) +
+                                      " display blocks in one file (this checker's limit)");
+      }
+      if (close - content > limits_.equation_characters) {
+        throw source_.error(open, "expected a display block of at most " +
+                                      std::to_string(limits_.equation_characters) +
+                                      " characters (this checker's limit)");
+      }
+      items_.push_back(
+          Block{open, content, std::string_view(text_).substr(content, close - content)});
+      return close;
+    }
+  }
+
+  const Source& source_;
+  const std::string& text_;
+  const Limits& limits_;
+  std::vector<Item> items_;
+};
+
+}  // namespace
+
+std::vector<Item> read_markdown(const Source& source, const Limits& limits) {
+  return Scanner(source, limits).run();
+}
+
+std::string_view to_string(DirectiveKind kind) {
+  for (const auto& [word, k] : directive_words) {
+    if (k == kind) {
+      return word;
+    }
+  }
+  return "?";
+}
+
+}  // namespace impulse::derivations::file

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Markdown layer of a derivation file: display blocks ($$ … $$) and directive lines, in the
+// order they stand, with their byte offsets. Prose, inline math, code and HTML comments are
+// skipped (a $$ inside a code span, a fenced code block or a comment is not a display block).
+#pragma once
+
+#include <cstddef>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "file/text.hpp"
+
+namespace impulse::derivations::file {
+
+/// The directive words of the format (spec/derivation-format.md).
+enum class DirectiveKind { assume, let, given, from, vector, units };
+
+/// A directive line: `word: content`.
+struct Directive {
+  DirectiveKind kind;
+  std::size_t offset = 0;          ///< where the word begins
+  std::size_t content_offset = 0;  ///< where the content begins (after the colon and spaces)
+  std::string_view content;        ///< the LaTeX after the colon, trimmed
+};
+
+/// A display block: the text between `$$` and `$$`.
+struct Block {
+  std::size_t offset = 0;          ///< where the opening `$$` stands
+  std::size_t content_offset = 0;  ///< the first byte after it
+  std::string_view content;        ///< up to the closing `$$`
+};
+
+using Item = std::variant<Directive, Block>;
+
+/// The directives and display blocks of @p source, in order. Throws ReadError for a block that
+/// is never closed, a fenced code block or comment never closed, or more display blocks than
+/// the limits allow.
+[[nodiscard]] std::vector<Item> read_markdown(const Source& source, const Limits& limits);
+
+/// The name of a directive kind ("assume", …).
+[[nodiscard]] std::string_view to_string(DirectiveKind kind);
+
+}  // namespace impulse::derivations::file

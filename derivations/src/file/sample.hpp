@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The numeric method: random points that satisfy the equations before and the facts (GSL: the
+// free symbols drawn at random, one symbol per equation solved for by root finding), at which
+// the step is evaluated. It is the second opinion on what the exact method decided, and the
+// deciding one when the exact method could not: a point where the step fails is a
+// counterexample; points where it holds prove nothing, and are never reported as "follows".
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "file/facts.hpp"
+
+namespace impulse::derivations::file {
+
+/// Premises and a target, each equal to zero, with the sizes their terms are measured against.
+struct NumericProblem {
+  std::vector<GiNaC::ex> premises;
+  std::vector<GiNaC::ex> premise_scales;  ///< the sum of the absolute values of each one's terms
+  std::vector<GiNaC::ex> denominators;    ///< must not vanish at a point
+  GiNaC::ex target;
+  GiNaC::ex target_scale;
+};
+
+/// What the numeric method saw.
+struct NumericOpinion {
+  std::size_t points = 0;  ///< points on the premises where the target was evaluated
+  double worst = 0.0;      ///< the worst relative residual of the target there
+  /// A point where the target fails (relative residual above 1e-6), every symbol's value.
+  std::optional<std::vector<std::pair<GiNaC::ex, double>>> counterexample;
+  double counterexample_residual = 0.0;
+  std::string how;  ///< what was done, or why no point could be found
+};
+
+/// A relative residual below this is rounding: the step holds at the point.
+inline constexpr double numeric_holds_below = 1e-9;
+/// A relative residual above this shows the step failing at the point.
+inline constexpr double numeric_fails_above = 1e-6;
+
+/// Evaluates @p problem at up to @p points random points (seeded).
+[[nodiscard]] NumericOpinion sample(const NumericProblem& problem, const Facts& facts,
+                                    std::uint64_t seed, std::size_t points);
+
+/// The sum of the absolute values of an expression's terms (its additive parts), the size that
+/// a residual of the expression is measured against.
+[[nodiscard]] GiNaC::ex term_scale(const GiNaC::ex& e);
+
+}  // namespace impulse::derivations::file
