@@ -195,6 +195,18 @@ class Decider {
     if (singles.empty()) {
       return leaf(frame, target);
     }
+    // The step a multiple of an equation before (the most common step: that equation rewritten,
+    // multiplied or divided by a factor): it follows wherever that equation holds.
+    for (const ex& p : singles) {
+      if (const auto quotient = divides(p, target)) {
+        Found found;
+        found.outcome = Outcome::holds;
+        found.how.push_back(is_a<numeric>(*quotient)
+                                ? "the step is the equation before, rewritten"
+                                : "the step is the equation before times " + text(*quotient));
+        return found;
+      }
+    }
     if (const auto choice = best_linear(singles, frame.target, true)) {
       return eliminate(frame, singles, *choice);
     }
@@ -253,12 +265,22 @@ class Decider {
     child.solved = frame.solved;
     child.solved.push_back({choice.symbol, value});
     const GiNaC::exmap substitution{{choice.symbol, value}};
-    for (std::size_t i = 0; i < premises.size(); ++i) {
-      if (i != choice.premise) {
-        child.premises.push_back(premises[i].subs(substitution));
+    try {
+      for (std::size_t i = 0; i < premises.size(); ++i) {
+        if (i != choice.premise) {
+          child.premises.push_back(premises[i].subs(substitution));
+        }
       }
+      child.target = frame.target.subs(substitution);
+    } catch (const std::exception&) {
+      // A denominator vanishes on the whole case: no point of it is one where the equations
+      // are defined, so it holds nothing against the step.
+      Found outside;
+      outside.outcome = Outcome::holds;
+      outside.how.push_back("where " + text(choice.symbol) + " = " + text(value) +
+                            " the equations are not defined");
+      return outside;
     }
-    child.target = frame.target.subs(substitution);
     Found found = run(child);
     const std::string solved_for = "solved for " + text(choice.symbol);
     found.how.insert(found.how.begin(), solved_for);
@@ -346,18 +368,24 @@ class Decider {
     return unknown_case;
   }
 
-  // Premises that are linear in none of their symbols.
-  Found nonlinear(const Frame& frame, const std::vector<ex>& premises, const ex& target) {
-    for (const ex& p : premises) {
-      ex quotient;
-      if (expanded_terms(target) <= budget_.terms &&
-          GiNaC::divide(GiNaC::expand(target), GiNaC::expand(p), quotient)) {
-        Found found;
-        found.outcome = Outcome::holds;
-        found.how.push_back("the step is " + text(quotient) + " times the equation before");
-        return found;
-      }
+  // The quotient target / p when it is a polynomial (p divides the target exactly).
+  std::optional<ex> divides(const ex& p, const ex& target) const {
+    if (expanded_terms(target) > budget_.terms || expanded_terms(p) > budget_.terms) {
+      return std::nullopt;
     }
+    try {
+      ex quotient;
+      if (GiNaC::divide(GiNaC::expand(target), GiNaC::expand(p), quotient)) {
+        return quotient;
+      }
+    } catch (const std::exception&) {
+      // not polynomials (a root, a function): no exact division
+    }
+    return std::nullopt;
+  }
+
+  // Premises that are linear in none of their symbols (and divide no step: see run()).
+  Found nonlinear(const Frame& frame, const std::vector<ex>& premises, const ex& target) {
     if (premises.size() == 1) {
       // An irreducible premise that does not divide the step: the step fails at its generic
       // points. Find one, solving the premise as a quadratic in one symbol.

@@ -215,7 +215,11 @@ class Reader {
       if (name_text.empty()) {
         throw source_.error(at, forms);
       }
-      pending.emplace_back(at, read_symbol(source_, at, name_text, limits_));
+      try {
+        pending.emplace_back(at, read_symbol(source_, at, name_text, limits_));
+      } catch (const ReadError& e) {
+        throw ReadError(e.place(), std::string(forms) + "; " + e.what());
+      }
       if (!found) {
         continue;
       }
@@ -633,11 +637,16 @@ class Checker {
       merge(forward, one);
     }
 
-    // The numeric method, as a second opinion.
+    // The numeric method, as a second opinion. Where the exact method found conditions, the
+    // points where one of them is zero are left out like those where a denominator is.
     NumericOpinion numeric;
     for (std::size_t k = 0; k < step.differences.size(); ++k) {
       std::vector<ex> denominators = before.denominators;
       denominators.insert(denominators.end(), step.denominators.begin(), step.denominators.end());
+      if (forward.outcome == Implication::Outcome::holds_if) {
+        denominators.insert(denominators.end(), forward.conditions.begin(),
+                            forward.conditions.end());
+      }
       NumericProblem problem{before.differences, before.scales, denominators, step.differences[k],
                              step.scales[k]};
       const NumericOpinion one =

@@ -868,7 +868,7 @@ class Parser {
     if (name == "\\text" || name == "\\mathrm") {
       return symbol_atom(depth);
     }
-    throw error(t, "unknown command " + name +
+    throw error(t, "expected a command this checker reads, found the unknown command " + name +
                        " (the LaTeX read here: numbers, symbols, + - \\cdot \\times / ^, "
                        "\\frac, \\sqrt, \\sin, \\cos, \\tan, \\exp, \\ln, \\det, \\| \\|, "
                        "| |, \\left( \\right), \\vec)");

@@ -471,8 +471,11 @@ Meaning Symbols::meaning(const Node& node) {
       throw;
     } catch (const std::exception& e) {
       // GiNaC refuses 1/0 and the like when it builds the expression.
-      throw error(n.offset,
-                  std::string("expected an expression that can be evaluated: ") + e.what());
+      const std::string what = e.what();
+      throw error(n.offset, what.find("division by zero") != std::string::npos
+                                ? "expected an expression that can be evaluated, found a "
+                                  "division by zero"
+                                : "expected an expression that can be evaluated (" + what + ")");
     }
     throw error(n.offset, "expected an expression");
   };

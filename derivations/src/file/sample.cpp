@@ -21,12 +21,25 @@ using GiNaC::ex;
 using GiNaC::is_a;
 
 ex term_scale(const ex& e) {
+  // The size of the terms that cancel when e is evaluated in floating point: sums add the sizes
+  // of their terms, products and whole powers multiply them, so that (F + dt) m at F = -dt is
+  // measured against |F| + |dt|, not against its own rounding.
   if (is_a<GiNaC::add>(e)) {
     ex sum = 0;
     for (std::size_t i = 0; i < e.nops(); ++i) {
       sum += term_scale(e.op(i));
     }
     return sum;
+  }
+  if (is_a<GiNaC::mul>(e)) {
+    ex product = 1;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      product *= term_scale(e.op(i));
+    }
+    return product;
+  }
+  if (is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::posint)) {
+    return GiNaC::pow(term_scale(e.op(0)), e.op(1));
   }
   return GiNaC::abs(e);
 }

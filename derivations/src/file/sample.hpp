@@ -46,8 +46,8 @@ inline constexpr double numeric_fails_above = 1e-6;
 [[nodiscard]] NumericOpinion sample(const NumericProblem& problem, const Facts& facts,
                                     std::uint64_t seed, std::size_t points);
 
-/// The sum of the absolute values of an expression's terms (its additive parts), the size that
-/// a residual of the expression is measured against.
+/// The size a residual of an expression is measured against: its sums add the absolute values
+/// of their terms, its products multiply them (the terms that cancel in floating point).
 [[nodiscard]] GiNaC::ex term_scale(const GiNaC::ex& e);
 
 }  // namespace impulse::derivations::file

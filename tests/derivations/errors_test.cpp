@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Derivation files that cannot be read: each is refused with the place (line and column) where
+// the reader stopped and what it expected there; nothing is checked. The places were counted by
+// hand in each file (tests/derivations/malformed/); the hostile inputs (deep nesting, binary
+// bytes, huge files, thousands of equations) are made here.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "derivations/derivation.hpp"
+
+namespace d = impulse::derivations;
+
+namespace {
+
+struct Expected {
+  std::size_t line;
+  std::size_t column;
+  std::string fragment;  // part of the message
+};
+
+// file → where it is refused (counted by hand) and what the message says.
+const std::map<std::string, Expected> expected{
+    {"unbalanced-brace.md", {3, 17, "expected '}' to close this '{'"}},  // the { of {2m
+    {"unknown-command.md", {3, 7, "unknown command \\foo"}},
+    {"block-never-closed.md", {3, 1, "closed by $$"}},
+    {"assume-not-a-form.md", {3, 13, "expected facts of the forms"}},  // the + of m_1 + m_2
+    {"assume-not-zero.md", {3, 11, "found a relation to 1"}},          // the > of m > 1
+    {"missing-tag.md", {5, 7, "no equation before this line carries \\tag{2}"}},
+    {"no-equation.md", {4, 1, "expected a display equation"}},  // the end of the file
+    {"expression-alone.md", {3, 3, "found an expression without '='"}},
+    {"vector-equals-scalar.md", {5, 12, "expected a vector on this side"}},  // the m
+    {"unknown-environment.md", {3, 3, "found {pmatrix}"}},
+    {"environment-not-ended.md", {3, 3, "expected \\end{aligned}"}},
+    {"duplicate-tag.md", {5, 3, "an equation above already carries"}},
+    {"given-at-end.md", {5, 1, "expected a display block after given:"}},
+    {"from-at-end.md", {5, 1, "expected a display equation after from:"}},
+    {"let-self.md", {3, 11, "does not use x itself"}},  // the x of 2x
+    {"contradictory-facts.md", {4, 9, "m < 0 contradicts m > 0"}},
+    {"units-not-mlt.md", {3, 11, "found 'm'"}},
+    {"relation-in-block.md", {3, 5, "found the relation \\leq"}},
+    {"empty-block.md", {3, 1, "found nothing"}},
+    {"exponent-too-large.md", {3, 10, "an exponent of at most 1000"}},
+    {"comment-not-closed.md", {3, 1, "closed by -->"}},
+    {"fence-not-closed.md", {3, 1, "closed by ```"}},
+    {"det-of-scalars.md", {3, 12, "expected two vectors in \\det"}},
+    {"assume-vector.md", {4, 9, "a vector"}},
+    {"extra-brace.md", {3, 8, "it closes no '{'"}},
+    {"left-without-right.md", {3, 19, "expected \\right to close the \\left at line 3, column 7"}},
+    {"dangling-operator.md", {3, 10, "expected a term, found the end of the expression"}},
+    {"vectors-side-by-side.md", {5, 14, "between two vectors, found them side by side"}},
+    {"divide-by-zero.md", {3, 7, "found a division by zero"}},
+    {"continues-nothing.md", {3, 3, "begins with '='"}},
+    {"vector-after-use.md", {5, 9, "declared a vector before it is used"}},
+    {"text-prose.md", {3, 24, "prose belongs outside the display block"}},
+};
+
+std::string read(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The error a text is refused with; fails the test if it is read.
+d::DerivationError refusal(const std::string& text) {
+  try {
+    (void)d::check_derivation(text, "test.md");
+  } catch (const d::DerivationError& e) {
+    return e;
+  }
+  FAIL("the file was read");
+  return {0, 0, ""};
+}
+
+}  // namespace
+
+TEST_CASE("Malformed derivation files: refused with the place and what was expected",
+          "[derivations][errors]") {
+  std::size_t files = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(IMPULSELAB_DERIVATION_MALFORMED_DIR)) {
+    const std::string name = entry.path().filename().string();
+    INFO(name);
+    const auto e = expected.find(name);
+    REQUIRE(e != expected.end());  // every file has its expectation
+    const d::DerivationError error = refusal(read(entry.path()));
+    INFO(error.line() << ":" << error.column() << ": " << error.what());
+    CHECK(error.line() == e->second.line);
+    CHECK(error.column() == e->second.column);
+    CHECK(std::string(error.what()).find(e->second.fragment) != std::string::npos);
+    ++files;
+  }
+  CHECK(files == expected.size());
+}
+
+TEST_CASE("Hostile derivation files: refused, never a crash, a hang or a stack overflow",
+          "[derivations][errors]") {
+  SECTION("nesting thousands deep") {
+    const std::string deep =
+        "$$a = " + std::string(5000, '(') + "b" + std::string(5000, ')') + "$$";
+    const auto e = refusal(deep);
+    CHECK(std::string(e.what()).find("levels of nesting") != std::string::npos);
+    const std::string braces =
+        "$$a = " + std::string(5000, '{') + "b" + std::string(5000, '}') + "$$";
+    CHECK(std::string(refusal(braces).what()).find("levels of nesting") != std::string::npos);
+    std::string fractions = "b";
+    for (int i = 0; i < 1500; ++i) {  // 15,000 characters: within the size limit
+      fractions = "\\frac{" + fractions + "}{2}";
+    }
+    CHECK(std::string(refusal("$$a = " + fractions + "$$").what()).find("nesting") !=
+          std::string::npos);
+  }
+  SECTION("binary bytes") {
+    // A NUL byte on line 2, column 3; an invalid UTF-8 byte on line 1, column 5.
+    const auto nul = refusal(std::string("ab\ncd") + '\0' + "e");
+    CHECK(nul.line() == 2);
+    CHECK(nul.column() == 3);
+    CHECK(std::string(nul.what()).find("binary") != std::string::npos);
+    const auto bad = refusal("$$a \xFF= b$$");
+    CHECK(bad.line() == 1);
+    CHECK(bad.column() == 5);
+    std::string garbage;
+    for (int i = 0; i < 4096; ++i) {
+      garbage += static_cast<char>((i * 131 + 7) % 256);
+    }
+    (void)refusal(garbage);
+  }
+  SECTION("more than the limits") {
+    const std::string big(d::max_derivation_bytes + 1, 'a');
+    const auto e = refusal(big);
+    CHECK(e.line() == 1);
+    CHECK(e.column() == 1);
+    CHECK(std::string(e.what()).find("at most 4 MiB") != std::string::npos);
+    std::string many;
+    for (int i = 0; i < 2001; ++i) {
+      many += "$$a = b$$\n";
+    }
+    CHECK(std::string(refusal(many).what()).find("at most 2000 display blocks") !=
+          std::string::npos);
+    CHECK(std::string(refusal("$$a = " + std::string(70, '9') + "$$").what())
+              .find("a number of at most 60 characters") != std::string::npos);
+    // (10^{900})^{900} would be a number of 810,000 digits.
+    CHECK(std::string(refusal("$$a = {10^{900}}^{900}$$").what()).find("digits") !=
+          std::string::npos);
+  }
+}
