@@ -70,6 +70,7 @@ struct EquationResult {
   std::string dimension_what;         ///< dimensions: which terms disagree
   std::size_t numeric_points = 0;     ///< points of the numeric method
   double numeric_worst = 0.0;         ///< the worst relative residual it saw
+  double seconds = 0.0;               ///< wall time of its check
 };
 
 /// @brief A checked derivation file.

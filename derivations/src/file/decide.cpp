@@ -69,6 +69,31 @@ double expanded_terms(const ex& e) {
   return 1;
 }
 
+bool factorable(const ex& e) {
+  // GiNaC's factoring (square-free decomposition, then gcds over many variables) costs time that
+  // grows fast with the symbols and the degrees: polynomials of derivations have a few of each.
+  // Beyond these bounds a polynomial is taken as it stands (irreducible), never factored.
+  if (expanded_terms(e) > 300) {
+    return false;
+  }
+  const std::vector<ex> symbols = symbols_of(e);
+  if (symbols.size() > 14) {
+    return false;
+  }
+  int total = 0;
+  for (const ex& s : symbols) {
+    if (!e.is_polynomial(s)) {
+      return false;
+    }
+    const int d = e.degree(s);
+    if (d > 8) {
+      return false;
+    }
+    total += d;
+  }
+  return total <= 40;
+}
+
 std::vector<ex> doubtful_factors(const ex& e, const Facts& facts) {
   std::vector<ex> factors;
   const auto add = [&](const ex& f) {
@@ -82,7 +107,7 @@ std::vector<ex> doubtful_factors(const ex& e, const Facts& facts) {
     }
     factors.push_back(f);
   };
-  const ex product = expanded_terms(e) <= 300 ? GiNaC::factor(e) : e;
+  const ex product = factorable(e) ? GiNaC::factor(e) : e;
   const auto one = [&](const ex& f) {
     if (is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1))) {
       add(f.op(0));
@@ -105,6 +130,8 @@ namespace {
 struct Solved {
   ex symbol;
   ex value;
+  ex divisor;  // what the value divides by: a point where it vanishes is skipped before the
+               // value is evaluated there (GiNaC leaks memory when an evaluation divides by 0)
 };
 
 // One state of the search: polynomial premises (each = 0), the target (a rational expression,
@@ -164,17 +191,39 @@ class Decider {
       found.outcome = Outcome::holds;
       return found;
     }
-    // The premises as products of doubtful factors.
-    std::vector<ex> singles;
-    std::optional<std::pair<std::size_t, std::vector<ex>>> split;
+    // The premises over one denominator; those that hold everywhere say nothing.
+    std::vector<ex> numerators;
     for (const ex& premise : frame.premises) {
       if (expanded_terms(premise) > budget_.terms) {
         return unknown(frame, "an equation before is too large to expand exactly");
       }
       const ex p = numerator(premise);
-      if (p.is_zero()) {
-        continue;  // holds everywhere: says nothing
+      if (!p.is_zero()) {
+        numerators.push_back(p);
       }
+    }
+    // The step a multiple of an equation before (the most common step: that equation rewritten,
+    // multiplied or divided by a factor): it follows wherever that equation holds. Tried first:
+    // it needs no factoring.
+    for (const ex& p : numerators) {
+      if (const auto quotient = divides(p, target)) {
+        Found found;
+        found.outcome = Outcome::holds;
+        found.how.push_back(is_a<numeric>(*quotient)
+                                ? "the step is the equation before, rewritten"
+                                : "the step is the equation before times " + text(*quotient));
+        return found;
+      }
+    }
+    // A premise linear in a symbol whose coefficient the facts keep from zero: substitute it
+    // (before any factoring, which costs more).
+    if (const auto choice = best_linear(numerators, frame.target, true)) {
+      return eliminate(frame, numerators, *choice);
+    }
+    // The premises as products of doubtful factors.
+    std::vector<ex> singles;
+    std::optional<std::pair<std::size_t, std::vector<ex>>> split;
+    for (const ex& p : numerators) {
       std::vector<ex> factors = doubtful_factors(p, facts_);
       if (factors.empty()) {
         // A non-zero constant, or a product the facts keep from zero: no point satisfies it.
@@ -195,8 +244,7 @@ class Decider {
     if (singles.empty()) {
       return leaf(frame, target);
     }
-    // The step a multiple of an equation before (the most common step: that equation rewritten,
-    // multiplied or divided by a factor): it follows wherever that equation holds.
+    // A multiple of a premise's doubtful factors (the factors the facts keep from zero dropped).
     for (const ex& p : singles) {
       if (const auto quotient = divides(p, target)) {
         Found found;
@@ -263,7 +311,7 @@ class Decider {
     Frame child;
     child.depth = frame.depth + 1;
     child.solved = frame.solved;
-    child.solved.push_back({choice.symbol, value});
+    child.solved.push_back({choice.symbol, value, choice.coefficient});
     const GiNaC::exmap substitution{{choice.symbol, value}};
     try {
       for (std::size_t i = 0; i < premises.size(); ++i) {
@@ -401,7 +449,7 @@ class Decider {
           Frame leaf_frame = frame;
           leaf_frame.premises.clear();
           const ex value = (-b + root * GiNaC::sqrt(b * b - 4 * a * c)) / (2 * a);
-          leaf_frame.solved.push_back({u, value});
+          leaf_frame.solved.push_back({u, value, a});
           leaf_frame.target = frame.target.subs(GiNaC::exmap{{u, value}});
           Found found = leaf(leaf_frame, target, /*exact_only=*/false);
           if (found.outcome == Outcome::fails) {
@@ -515,7 +563,8 @@ class Decider {
     double best_cost = std::numeric_limits<double>::infinity();
     std::size_t valid = 0;
     std::uint64_t state = 0x9E3779B97F4A7C15ULL;
-    for (std::size_t attempt = 0; attempt < budget_.attempts && valid < 6; ++attempt) {
+    for (std::size_t attempt = 0; attempt < budget_.attempts && valid < budget_.candidates;
+         ++attempt) {
       GiNaC::exmap point;
       for (std::size_t k = 0; k < free.size(); ++k) {
         const std::vector<numeric> list = candidates(facts_.of_symbol(free[k]));
@@ -531,6 +580,10 @@ class Decider {
       try {
         bool ok = true;
         for (auto s = frame.solved.rbegin(); s != frame.solved.rend() && ok; ++s) {
+          if (is_zero_value(s->divisor.subs(point))) {
+            ok = false;
+            break;
+          }
           const ex v = GiNaC::normal(s->value.subs(point));
           if (!real_number(v)) {
             ok = false;
@@ -809,15 +862,16 @@ Implication implies(const Problem& original, const Facts& facts, const Budget& b
     result.how += (i == 0 ? "" : "; ") + found.how[i];
   }
   // What the step divides by that the equations before did not: where it vanishes, the step
-  // is not even defined.
+  // is not even defined. (As written, before sines and cosines are rewritten: 1 + 3 cos^2 is
+  // positive as it stands.)
   if (result.outcome == Outcome::holds || result.outcome == Outcome::holds_if) {
     std::vector<ex> before;
-    for (const ex& d : problem.premise_denominators) {
+    for (const ex& d : original.premise_denominators) {
       for (const ex& f : doubtful_factors(numerator(d), facts)) {
         before.push_back(f);
       }
     }
-    for (const ex& d : problem.target_denominators) {
+    for (const ex& d : original.target_denominators) {
       for (const ex& f : doubtful_factors(numerator(d), facts)) {
         const auto known = [&](const ex& g) { return same_up_to_constant(f, g); };
         if (std::any_of(before.begin(), before.end(), known) ||

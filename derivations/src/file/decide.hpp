@@ -46,6 +46,7 @@ struct Budget {
   std::size_t frames = 96;     ///< cases and substitutions explored
   double terms = 4000;         ///< terms of an expanded polynomial
   std::size_t attempts = 160;  ///< candidate points for a counterexample
+  std::size_t candidates = 6;  ///< counterexamples found before the simplest is chosen
 };
 
 /// Decides whether @p problem's target follows from its premises under @p facts.
@@ -59,6 +60,10 @@ struct Budget {
 
 /// An upper estimate of the terms of @p e once expanded (for the size guard).
 [[nodiscard]] double expanded_terms(const GiNaC::ex& e);
+
+/// Whether @p e is small enough to factor: few terms, symbols and degrees (factoring a
+/// polynomial of many symbols and high degrees can take minutes).
+[[nodiscard]] bool factorable(const GiNaC::ex& e);
 
 /// The factors of @p e (a polynomial) that the facts do not show to be non-zero, each once,
 /// without numeric factors. Empty when @p e is a non-zero constant.

@@ -132,13 +132,17 @@ std::string render_text(const DerivationReport& r, bool colour) {
   return out.str();
 }
 
+// A table cell cannot hold '|': the LaTeX norm \| becomes \Vert, a bar \vert.
 std::string escape_markdown(const std::string& text) {
   std::string out;
-  for (const char c : text) {
-    if (c == '|') {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\\' && i + 1 < text.size() && text[i + 1] == '|') {
+      out += "\\Vert ";
+      ++i;
+    } else if (text[i] == '|') {
       out += "\\vert ";
     } else {
-      out += c;
+      out += text[i];
     }
   }
   return out;
@@ -225,6 +229,7 @@ std::string render_json(const DerivationReport& r) {
     if (!e.how.empty()) {
       j["how"] = e.how;
     }
+    j["seconds"] = e.seconds;
     if (e.verdict != Verdict::premise && e.verdict != Verdict::dimensions) {
       j["numeric"] = {{"points", e.numeric_points}, {"worst_relative_residual", e.numeric_worst}};
     }
