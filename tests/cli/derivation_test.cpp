@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// impulselab check NOTES.md run as a student runs it: the exit statuses of the contract (0 every
+// step passes, 1 one does not, 2 the file cannot be read, with FILE:LINE:COLUMN), the three
+// formats, --output, and hostile files: huge, binary, not Markdown.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli/program.hpp"
+
+namespace t = impulselab::test;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+using nlohmann::json;
+
+namespace {
+
+std::string derivation(const std::string& name) {
+  return t::quote(std::string(IMPULSELAB_DERIVATION_FILES_DIR) + "/" + name);
+}
+
+}  // namespace
+
+TEST_CASE("check NOTES.md: every step follows, exit 0", "[cli][derivations]") {
+  const t::Run r = t::run("check " + derivation("s3-elastic.md"));
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  CHECK_THAT(r.out, Contains("follows-if"));
+  CHECK_THAT(r.out, Contains("Every step follows."));
+}
+
+TEST_CASE("check NOTES.md: a slip, exit 1, its line stands out", "[cli][derivations]") {
+  const t::Run r = t::run("check " + derivation("slip-sign-1-1.md"));
+  REQUIRE(r.status == 1);
+  CHECK_THAT(r.out, Contains(">>  13  does-not-follow"));  // the slip's line, marked
+  CHECK_THAT(r.out, Contains("First failing line: 13"));
+  CHECK_THAT(r.out, Contains("counterexample:"));
+  CHECK_THAT(r.err, Contains("line 13 does-not-follow"));
+}
+
+TEST_CASE("check NOTES.md --format json and markdown", "[cli][derivations]") {
+  const t::Run r = t::run("check " + derivation("slip-sign-1-1.md") + " --format json");
+  REQUIRE(r.status == 1);
+  const json report = json::parse(r.out);
+  CHECK(report.at("summary").at("does-not-follow") == 1);
+  const json& last = report.at("equations").back();
+  CHECK(last.at("line") == 13);
+  CHECK(last.at("verdict") == "does-not-follow");
+  CHECK(last.at("counterexample").is_object());
+  const t::Run m = t::run("check " + derivation("s3-elastic.md") + " --format markdown");
+  REQUIRE(m.status == 0);
+  CHECK_THAT(m.out, Contains("| line | verdict | equation | details |"));
+}
+
+TEST_CASE("check NOTES.md --output writes the report whole", "[cli][derivations]") {
+  const auto folder = t::fresh_folder("derivation-output");
+  const auto file = folder / "report.json";
+  const t::Run r = t::run("check " + derivation("s1-inelastic.md") + " --format json --output " +
+                          t::quote(file.string()));
+  REQUIRE(r.status == 0);
+  CHECK(r.out.empty());
+  CHECK(json::parse(t::read_text(file)).at("summary").at("follows") == 3);
+}
+
+TEST_CASE("check NOTES.md: a file that cannot be read, exit 2 with FILE:LINE:COLUMN",
+          "[cli][derivations]") {
+  const std::string path =
+      std::string(IMPULSELAB_DERIVATION_MALFORMED_DIR) + "/unbalanced-brace.md";
+  const t::Run r = t::run("check " + t::quote(path));
+  REQUIRE(r.status == 2);
+  CHECK(r.out.empty());
+  // The contract's form, as compilers print it, alone on standard error.
+  CHECK(r.err == path + ":3:17: expected '}' to close this '{'\n");
+}
+
+TEST_CASE("check NOTES.md: hostile files end in exit 2, never a crash", "[cli][derivations]") {
+  const auto folder = t::fresh_folder("derivation-hostile");
+  SECTION("a 100 MB file") {
+    const auto big = folder / "big.md";
+    std::ofstream(big).put('#');
+    std::filesystem::resize_file(big, std::uintmax_t{100} << 20);  // sparse: costs no disk
+    const t::Run r = t::run("check " + t::quote(big.string()));
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err,
+               StartsWith(big.string() + ":1:1: expected a derivation file of at most 4 MiB"));
+  }
+  SECTION("binary garbage") {
+    const auto bin = folder / "garbage.md";
+    std::ofstream out(bin, std::ios::binary);
+    for (int i = 0; i < 10000; ++i) {
+      out.put(static_cast<char>((i * 7919 + 13) % 256));
+    }
+    out.close();
+    const t::Run r = t::run("check " + t::quote(bin.string()));
+    CHECK(r.status == 2);
+    CHECK_FALSE(r.signalled);
+    CHECK_THAT(r.err, StartsWith(bin.string() + ":1:"));
+  }
+  SECTION("not a Markdown file, or a section of the paper with it") {
+    CHECK(t::run("check notes.txt").status == 2);
+    const t::Run r = t::run("check " + derivation("s3-elastic.md") + " --section 4");
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Contains("--section"));
+    CHECK(t::run("check " + derivation("s3-elastic.md") + " --samples 100000").status == 2);
+  }
+  SECTION("a file that does not exist") {
+    const t::Run r = t::run("check " + t::quote((folder / "missing.md").string()));
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Contains("cannot read"));
+  }
+}
