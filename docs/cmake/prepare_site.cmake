@@ -9,6 +9,9 @@
 #                      counterexample
 #      {{labs}}        the labs found in tutorials/NN-name/README.md
 #      {{summary}}     the counts of each outcome ("65 verified, 13 errata, ...")
+#      {{derivation:NAME}}  the example derivation tutorials/derivations/NAME.md as written (a
+#                      code block), then its report as `impulselab check --format markdown`
+#                      wrote it during the build (math turned into Doxygen's \f$ … \f$)
 #    Every check of the report must appear on some page, and every ID on a page in the report.
 #  - the Doxyfile is written from docs/Doxyfile.in, with the labs' folders as images folders.
 #
@@ -192,9 +195,22 @@ foreach(page IN LISTS pages)
       set(replacement "${labs_list}")
     elseif(what STREQUAL "summary" AND id STREQUAL "")
       set(replacement "${summary}")
+    elseif(what STREQUAL "derivation" AND EXISTS "${SOURCE_DIR}/tutorials/derivations/${id}.md"
+           AND EXISTS "${DOCS_BINARY_DIR}/report/derivations/${id}.md")
+      file(READ "${SOURCE_DIR}/tutorials/derivations/${id}.md" source)
+      string(FIND "${source}" "<!-- expect" pins)  # the test's pins are not for readers
+      if(pins GREATER -1)
+        string(SUBSTRING "${source}" 0 ${pins} source)
+      endif()
+      string(STRIP "${source}" source)
+      file(READ "${DOCS_BINARY_DIR}/report/derivations/${id}.md" checked)
+      string(REGEX REPLACE "\\$([^$]+)\\$" "\\\\f$\\1\\\\f$" checked "${checked}")
+      string(CONCAT replacement "The file `tutorials/derivations/${id}.md`:\n\n```\n${source}\n"
+                                "```\n\nWhat `impulselab check` reports for it:\n\n${checked}\n")
     else()
       message(FATAL_ERROR "${page}: ${placeholder} names no check of the report (or no "
-                          "placeholder: {{check:ID}}, {{verdict:ID}}, {{errata}}, {{labs}}, {{summary}})")
+                          "placeholder: {{check:ID}}, {{verdict:ID}}, {{errata}}, {{labs}}, "
+                          "{{summary}}, {{derivation:NAME}})")
     endif()
     string(REPLACE "${placeholder}" "${replacement}" text "${text}")
   endforeach()
