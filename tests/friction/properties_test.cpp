@@ -128,7 +128,7 @@ TEST_CASE("Without friction the three laws give the paper's impulse at a single 
 }
 
 TEST_CASE(
-    "Coulomb's bound, momentum and energy over random contacts; the energetic law never "
+    "Coulomb's bound, momentum and energy over random contacts: the energetic law never "
     "gains energy",
     "[friction]") {
   impulse::test::Sampler sample("friction properties");
