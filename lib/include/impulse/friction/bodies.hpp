@@ -41,7 +41,7 @@ namespace impulse::friction {
 /// @brief The whole impulse on the bumper: @f$ -\vec{n}\,P_n + \vec{t}\,P_t @f$ (the wedge
 /// receives the opposite). The scene format's `on_bumper` with friction.
 /// @param normal the bumper's outward unit normal
-/// @param impulse the contact's impulse (ContactImpulse::normal and ::tangential)
+/// @param impulse the contact's impulse (ContactImpulse::normal and ContactImpulse::tangential)
 /// @return the impulse vector on the bumper
 [[nodiscard]] Eigen::Vector2d on_bumper(const Eigen::Vector2d& normal,
                                         const ContactImpulse& impulse);
