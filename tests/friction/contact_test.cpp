@@ -179,8 +179,12 @@ TEST_CASE("The rod at 45 degrees on a rough floor: slip, stick, and three differ
     REQUIRE(c.impulse.phases().size() == 2);
     CHECK(c.impulse.phases()[0].regime == Slip::slip);
     CHECK(c.impulse.phases()[0].end == Approx(0.2).epsilon(1e-14));
+    CHECK(c.impulse.phases()[0].tangential == Approx(-0.16).epsilon(1e-14));
+    CHECK(c.impulse.phases()[0].u.isApprox(Vector2d(-0.26, 0), 1e-14));
     CHECK(c.impulse.phases()[1].regime == Slip::stick);
     CHECK(c.impulse.phases()[1].end == Approx(expected.normal).epsilon(1e-14));
+    CHECK(c.impulse.phases()[1].tangential == Approx(expected.tangential).epsilon(1e-14));
+    CHECK(c.impulse.phases()[1].u == c.impulse.u_after);
     CHECK(c.impulse.outcome == Slip::stick);
     CHECK(c.impulse.compression == Approx(0.3625).epsilon(1e-14));
     CHECK(c.impulse.work_compression == Approx(-0.147125).epsilon(1e-14));
@@ -217,6 +221,9 @@ TEST_CASE("The rod on a floor of little friction: the slip reverses", "[friction
   CHECK(c.impulse.phases()[0].regime == Slip::slip);
   CHECK(c.impulse.phases()[0].direction == 1.0);
   CHECK(c.impulse.phases()[0].end == Approx(14.0 / 45.0).epsilon(1e-14));
+  CHECK(c.impulse.phases()[0].tangential == Approx(-0.3 * 14.0 / 45.0).epsilon(1e-14));
+  CHECK(c.impulse.phases()[0].u.x() == Approx(-37.0 / 450.0).epsilon(1e-13));
+  CHECK(c.impulse.phases()[0].u.y() == 0.0);
   CHECK(c.impulse.phases()[1].regime == Slip::reversed);
   CHECK(c.impulse.phases()[1].direction == -1.0);
   CHECK(c.impulse.phases()[1].end == Approx(162.0 / 205.0).epsilon(1e-14));

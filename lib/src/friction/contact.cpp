@@ -337,7 +337,7 @@ ContactImpulse resolve_contact(const ContactDynamics& contact, const ContactLaw&
     u = u_next;
 
     if (step == to_slip_stop) {
-      r.phase_list[r.phase_count++] = {regime, s, P};
+      r.phase_list[r.phase_count++] = {regime, s, P, Pt, u};
       slip_can_stop = false;
       if (can_stick(W, mu)) {
         regime = Slip::stick;
@@ -358,7 +358,7 @@ ContactImpulse resolve_contact(const ContactDynamics& contact, const ContactLaw&
       } else if (law.restitution == RestitutionLaw::energetic) {
         r.work_restitution = work_target;
       }
-      r.phase_list[r.phase_count++] = {regime, s, P};
+      r.phase_list[r.phase_count++] = {regime, s, P, Pt, u};
       finished = true;
     }
   }

@@ -135,12 +135,18 @@ struct ContactDynamics {
 /// @param contact the contact to check
 void validate(const ContactDynamics& contact);
 
-/// @brief One friction phase of a collision.
+/// @brief One friction phase of a collision, and where it ended.
+///
+/// Between two ends everything is linear in @f$ P_n @f$, so the ends are the corners of Routh's
+/// diagrams (the slip @f$ u_t @f$, or the separation @f$ u_n @f$, against @f$ P_n @f$), which
+/// start at @f$ (0, u_0) @f$.
 struct Phase {
   Slip regime = Slip::slip;  ///< slip, stick or reversed slip
   /// The direction of the slip along the tangent, +1 or -1 (0 while sticking).
   double direction = 0.0;
-  double end = 0.0;  ///< the normal impulse @f$ P_n @f$ at which the phase ended
+  double end = 0.0;         ///< the normal impulse @f$ P_n @f$ at which the phase ended
+  double tangential = 0.0;  ///< the tangential impulse @f$ P_t @f$ there
+  Eigen::Vector2d u = Eigen::Vector2d::Zero();  ///< (separation, slip) there
 };
 
 /// @brief Whether resolve_contact() found impulses.
