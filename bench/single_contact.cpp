@@ -18,6 +18,7 @@
 #include <numbers>
 #include <random>
 
+#include "impulse/friction/bodies.hpp"
 #include "impulse/material_2d/material_2d.hpp"
 #include "impulse/one_d/one_d.hpp"
 #include "impulse/rigid_2d/rigid_2d.hpp"
@@ -213,6 +214,55 @@ void rigid_unchecked(benchmark::State& state) {
   }
 }
 
+struct FrictionOutcome {
+  double normal, tangential;
+  impulse::multipoint::Body bumper, wedge;
+};
+
+// Beyond the paper (issue 17): the same collisions with Coulomb friction (mu = 0.5, Newton's law
+// at the bumper's elasticity), followed through the normal impulse by the exact single-contact
+// rule through its public path: W and u0 from the bodies (multipoint::contribution), the phases,
+// and the bodies after (multipoint::apply_impulses). Not a pair: it computes more than the
+// paper's impulse (a tangential impulse and the phases), so rigid_single_contact/library is its
+// reference.
+void rigid_friction(benchmark::State& state) {
+  namespace friction = impulse::friction;
+  const auto& configs = table();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Configuration& c = configs[i++ & mask];
+    const auto result =
+        friction::collide(c.bumper, c.wedge, c.point, c.n,
+                          {0.5, c.bumper_elasticity, friction::RestitutionLaw::newton});
+    FrictionOutcome outcome{result.impulse.normal, result.impulse.tangential, result.after.bumper,
+                            result.after.wedge};
+    benchmark::DoNotOptimize(outcome);
+  }
+}
+
+// Not a pair either: the core alone (resolve_contact on W and u0 computed beforehand), to show in
+// the table how much of the above is the rule and how much the bodies' side (building W from the
+// blocks, which allocate, and applying the impulse through the many-body update).
+void rigid_friction_core(benchmark::State& state) {
+  namespace friction = impulse::friction;
+  static const auto contacts = [] {
+    std::array<friction::ContactDynamics, configurations> result{};
+    for (std::size_t k = 0; k < configurations; ++k) {
+      const Configuration& c = table()[k];
+      result[k] = friction::dynamics(c.bumper, c.wedge, c.point, c.n);
+    }
+    return result;
+  }();
+  const auto& configs = table();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ & mask;
+    const auto impulse = friction::resolve_contact(
+        contacts[k], {0.5, configs[k].bumper_elasticity, friction::RestitutionLaw::newton});
+    benchmark::DoNotOptimize(impulse);
+  }
+}
+
 }  // namespace
 
 // Registered in pairs, library first, so that the table reads one case at a time.
@@ -223,5 +273,7 @@ BENCHMARK(material_inlined)->Name("material_single_contact/inlined");
 BENCHMARK(rigid_library)->Name("rigid_single_contact/library");
 BENCHMARK(rigid_inlined)->Name("rigid_single_contact/inlined");
 BENCHMARK(rigid_unchecked)->Name("rigid_single_contact_breakdown/unchecked");
+BENCHMARK(rigid_friction)->Name("rigid_single_contact_friction/library");
+BENCHMARK(rigid_friction_core)->Name("rigid_single_contact_friction_breakdown/core");
 
 BENCHMARK_MAIN();
