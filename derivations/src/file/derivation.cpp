@@ -546,7 +546,7 @@ std::string plain_of(const ex& e) {
 ex readable(const ex& e) {
   const ex n = GiNaC::normal(e);
   if (!factorable(n.numer()) || !factorable(n.denom())) {
-    return n;
+    return n;  // shown over one denominator, unfactored
   }
   try {
     return GiNaC::factor(n.numer()) / GiNaC::factor(n.denom());
