@@ -196,17 +196,20 @@ foreach(page IN LISTS pages)
     elseif(what STREQUAL "summary" AND id STREQUAL "")
       set(replacement "${summary}")
     elseif(what STREQUAL "derivation" AND EXISTS "${SOURCE_DIR}/tutorials/derivations/${id}.md"
-           AND EXISTS "${DOCS_BINARY_DIR}/report/derivations/${id}.md")
+           AND EXISTS "${DOCS_BINARY_DIR}/derivation-reports/${id}.md")
       file(READ "${SOURCE_DIR}/tutorials/derivations/${id}.md" source)
       string(FIND "${source}" "<!-- expect" pins)  # the test's pins are not for readers
       if(pins GREATER -1)
         string(SUBSTRING "${source}" 0 ${pins} source)
       endif()
       string(STRIP "${source}" source)
-      file(READ "${DOCS_BINARY_DIR}/report/derivations/${id}.md" checked)
+      file(READ "${DOCS_BINARY_DIR}/derivation-reports/${id}.md" checked)
       string(REGEX REPLACE "\\$([^$]+)\\$" "\\\\f$\\1\\\\f$" checked "${checked}")
-      string(CONCAT replacement "The file `tutorials/derivations/${id}.md`:\n\n```\n${source}\n"
-                                "```\n\nWhat `impulselab check` reports for it:\n\n${checked}\n")
+      # \verbatim (a <pre> in the page): neither Doxygen's commands nor MathJax's $$ are read
+      # inside it, so the file shows as written.
+      string(CONCAT replacement "The file `tutorials/derivations/${id}.md`:\n\n\\verbatim\n"
+                                "${source}\n\\endverbatim\n\nWhat `impulselab check` reports "
+                                "for it:\n\n${checked}\n")
     else()
       message(FATAL_ERROR "${page}: ${placeholder} names no check of the report (or no "
                           "placeholder: {{check:ID}}, {{verdict:ID}}, {{errata}}, {{labs}}, "

@@ -136,6 +136,8 @@ std::size_t parse_tag(const std::string& html, std::size_t begin, Tag& tag) {
 struct Scanned {
   std::vector<Tag> tags;
   std::string visible_text;   // text outside tags, scripts, styles and comments
+  std::string prose_text;     // the part of it that is not code (<code>, <pre>, Doxygen's
+                              // fragments): where LaTeX source shown on purpose cannot be
   std::string unlinked_text;  // the part of it that is not inside a link
   std::vector<std::string> script_texts;
 };
@@ -144,11 +146,17 @@ Scanned scan(const std::string& html) {
   Scanned result;
   std::size_t i = 0;
   int link_depth = 0;
+  int code_depth = 0;
+  std::vector<bool> fragment_divs;  // for each open <div>: is it (inside) a code fragment?
   while (i < html.size()) {
     const std::size_t open = html.find('<', i);
     const std::string text =
         html.substr(i, open == std::string::npos ? std::string::npos : open - i);
     result.visible_text += text;
+    const bool in_fragment = !fragment_divs.empty() && fragment_divs.back();
+    if (code_depth == 0 && !in_fragment) {
+      result.prose_text += text;
+    }
     if (link_depth == 0) {
       result.unlinked_text += text;
     }
@@ -172,6 +180,16 @@ Scanned scan(const std::string& html) {
       i = end;
     }
     link_depth += tag.name == "a" ? 1 : tag.name == "/a" ? -1 : 0;
+    const bool code = tag.name == "code" || tag.name == "pre" || tag.name == "tt";
+    const bool code_end = tag.name == "/code" || tag.name == "/pre" || tag.name == "/tt";
+    code_depth += code ? 1 : code_end && code_depth > 0 ? -1 : 0;
+    if (tag.name == "div") {
+      const auto cls = tag.attributes.find("class");
+      const bool fragment = cls != tag.attributes.end() && cls->second == "fragment";
+      fragment_divs.push_back(fragment || (!fragment_divs.empty() && fragment_divs.back()));
+    } else if (tag.name == "/div" && !fragment_divs.empty()) {
+      fragment_divs.pop_back();
+    }
     result.tags.push_back(std::move(tag));
   }
   return result;
@@ -333,10 +351,10 @@ std::vector<std::string> untypeset_math(const Scanned& page) {
   }
   for (const char* raw : {"\\f$", "\\f[", "\\f]", "\\(", "\\)", "\\[", "\\]", "\\frac", "\\tag",
                           "\\vec", "\\det", "\\sum", "\\left", "\\mathrm", "\\begin"}) {
-    const std::size_t at = page.visible_text.find(raw);
+    const std::size_t at = page.prose_text.find(raw);
     if (at != std::string::npos) {
       const std::size_t from = at > 40 ? at - 40 : 0;
-      problems.push_back("raw TeX in the visible text: \"" + page.visible_text.substr(from, 100) +
+      problems.push_back("raw TeX in the visible text: \"" + page.prose_text.substr(from, 100) +
                          "\"");
     }
   }

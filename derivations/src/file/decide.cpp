@@ -170,10 +170,15 @@ bool same_up_to_constant(const ex& a, const ex& b) {
   return is_a<numeric>(ratio);
 }
 
+// An expression in a sentence of the report: LaTeX between dollars, as in Markdown.
 std::string text(const ex& e) {
   std::ostringstream out;
   out << GiNaC::latex << e;
-  return out.str();
+  std::string latex = out.str();
+  const std::size_t first = latex.find_first_not_of(' ');
+  const std::size_t last = latex.find_last_not_of(' ');
+  latex = first == std::string::npos ? "" : latex.substr(first, last - first + 1);
+  return "$" + latex + "$";
 }
 
 class Decider {
@@ -419,7 +424,7 @@ class Decider {
       }
       combined.how.push_back(
           cases_text + ": the step holds where " +
-          (failing.size() == 1 ? text(failing[0]) + " \\neq 0" : "these factors are not zero") +
+          (failing.size() == 1 ? text(failing[0] != 0) : "these factors are not zero") +
           ", not where it is zero");
       return combined;
     }
