@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "derivations/derivation.hpp"
+#include "impulse/core/error.hpp"
 #include "file/decide.hpp"
 #include "file/facts.hpp"
 #include "file/latex.hpp"
@@ -864,6 +865,10 @@ DerivationReport check_derivation(std::string text, const std::string& file_name
                                   const DerivationOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   num::quiet_gsl();
+  // The numeric method evaluates a student's expressions at random points, where they may divide
+  // by zero or overflow: that is its business (it discards such points), never a SIGFPE for a
+  // caller that traps floating-point exceptions (the Debug test programs do).
+  const impulse::detail::HeldFloatingPointExceptions held;
   Limits limits;
   limits.bytes = max_derivation_bytes;
   try {
