@@ -10,7 +10,7 @@ namespace impulse::derivations::file {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, DirectiveKind>, 21> directive_words{{
+constexpr std::array<std::pair<std::string_view, DirectiveKind>, 22> directive_words{{
     {"assume", DirectiveKind::assume},
     {"let", DirectiveKind::let},
     {"given", DirectiveKind::given},
@@ -21,6 +21,7 @@ constexpr std::array<std::pair<std::string_view, DirectiveKind>, 21> directive_w
     {"check", DirectiveKind::check},
     {"claim", DirectiveKind::claim},
     {"correction", DirectiveKind::correction},
+    {"evidence", DirectiveKind::evidence},
     {"explanation", DirectiveKind::explanation},
     {"index", DirectiveKind::index},
     {"arrow", DirectiveKind::arrow},

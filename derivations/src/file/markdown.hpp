@@ -27,6 +27,7 @@ enum class DirectiveKind {
   check,
   claim,
   correction,
+  evidence,
   explanation,
   index,
   arrow,

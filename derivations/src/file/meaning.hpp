@@ -139,6 +139,10 @@ class Symbols {
     const Value v = symbol_value(name);
     return v.vector ? GiNaC::ex(0) : v.x;
   }
+  /// What a name stands for: a scalar symbol, or the two of a vector (made on first use).
+  [[nodiscard]] Value value_of(const SymbolName& name) { return symbol_value(name); }
+  /// Whether a name is declared a differential's (`differentials:`).
+  [[nodiscard]] bool is_differential(const SymbolName& name) const { return name.differential; }
   /// The GiNaC symbol of a scalar name (made on first use).
   [[nodiscard]] GiNaC::ex scalar(const SymbolName& name, std::optional<SymbolName> of = {},
                                  int component = 0);

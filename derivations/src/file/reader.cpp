@@ -59,6 +59,9 @@ ReadFile Reader::read() {
   if (from_) {
     throw source_.error(from_->first, "expected a display equation after from:");
   }
+  if (evidence_) {
+    throw source_.error(*evidence_, "expected a display block after evidence:");
+  }
   close_group();
   if (equations_.empty() && groups_.empty()) {
     throw source_.error(source_.text().size(),
@@ -152,6 +155,23 @@ void Reader::read_directive(const Directive& d) {
                             "display block)");
       }
       awaiting_ = Awaiting::correction;
+      break;
+    case DirectiveKind::evidence:
+      in_group("evidence:");
+      if (groups_.back().kind == Kind::claim) {
+        throw source_.error(d.offset,
+                            "expected evidence: in a check, not in a claim (a claim "
+                            "is tested by its rows and its searches)");
+      }
+      if (awaiting_ != Awaiting::nothing) {
+        throw source_.error(d.offset, "expected evidence: after the check's statement");
+      }
+      if (!d.content.empty()) {
+        throw source_.error(d.content_offset,
+                            "expected nothing after evidence: (the evidence is the next display "
+                            "block)");
+      }
+      evidence_ = d.offset;
       break;
     case DirectiveKind::explanation:
       in_group("explanation:");
@@ -321,6 +341,9 @@ void Reader::open_group(const Directive& d) {
 }
 
 void Reader::close_group() {
+  if (evidence_) {
+    throw source_.error(*evidence_, "expected a display block after evidence:");
+  }
   if (!group_open_) {
     return;
   }
@@ -330,6 +353,10 @@ void Reader::close_group() {
   }
   if (awaiting_ == Awaiting::correction) {
     throw source_.error(g.offset, "expected the correction of " + g.id + " (a display block)");
+  }
+  if (!g.correction_equations.empty() && g.explanation.empty()) {
+    throw source_.error(g.offset, "expected explanation: in " + g.id +
+                                      ", which has a correction (what goes wrong, in a sentence)");
   }
   if (g.kind == Kind::equation && !g.label) {
     throw source_.error(g.statement_offset,
@@ -381,8 +408,13 @@ void Reader::read_block(const Block& block) {
   if (group_open_) {
     role = awaiting_ == Awaiting::statement    ? Role::statement
            : awaiting_ == Awaiting::correction ? Role::correction
-                                               : Role::evidence;
+           : evidence_                         ? Role::evidence
+                                               : Role::plain;
+    if (role == Role::plain) {
+      close_group();  // a block that is not the check's: the check ends before it
+    }
   }
+  evidence_.reset();
   bool given = given_.has_value();
   given_.reset();
   if (role == Role::correction) {

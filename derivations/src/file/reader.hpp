@@ -130,6 +130,7 @@ class Reader {
   bool group_open_ = false;
   enum class Awaiting { nothing, statement, correction } awaiting_ = Awaiting::nothing;
   bool statement_given_ = false;
+  std::optional<std::size_t> evidence_;  // evidence: stands here, for the next block
   std::vector<std::size_t> statement_premises_;
 };
 

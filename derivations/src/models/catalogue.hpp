@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The points functions of the models, one file per family (models.cpp names them).
+#pragma once
+
+#include <vector>
+
+#include "models/model.hpp"
+
+namespace impulse::derivations::models {
+
+// line.cpp: two bodies on a line.
+std::vector<Point> spring_contact_on_a_line(Probe&, const Settings&);
+std::vector<Point> damper_contact_on_a_line(Probe&, const Settings&);
+std::vector<Point> spring_damper_contact_on_a_line(Probe&, const Settings&);
+std::vector<Point> bodies_on_a_line_one_elasticity(Probe&, const Settings&);
+std::vector<Point> bodies_on_a_line_two_elasticities(Probe&, const Settings&);
+std::vector<Point> bodies_and_impulses_on_a_line(Probe&, const Settings&);
+std::vector<Point> changes_of_units_on_a_line(Probe&, const Settings&);
+
+}  // namespace impulse::derivations::models
