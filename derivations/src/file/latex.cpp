@@ -1357,6 +1357,7 @@ class Parser {
 struct RowTokens {
   std::vector<Token> tokens;
   std::optional<std::string> tag;
+  std::optional<std::string> label;
   std::size_t offset = 0;
 };
 
@@ -1527,6 +1528,19 @@ std::vector<RowTokens> split_rows(const Source& source, const std::vector<Token>
       while (tokens[close].kind != Tok::end && !is_char(tokens[close], '}')) {
         ++close;
       }
+      if (is_char(tokens[i + 1], '{') && tokens[close].kind != Tok::end) {
+        std::string label(source.text().substr(tokens[i + 1].offset + 1,
+                                               tokens[close].offset - tokens[i + 1].offset - 1));
+        while (!label.empty() && label.back() == ' ') {
+          label.pop_back();
+        }
+        while (!label.empty() && label.front() == ' ') {
+          label.erase(label.begin());
+        }
+        if (!label.empty()) {
+          rows.back().label = label;
+        }
+      }
       i = close;
       continue;
     }
@@ -1635,6 +1649,9 @@ std::vector<Row> read_block(const Source& source, std::size_t content_offset,
         }
         merged.back().tag = row.tag;
       }
+      if (row.label) {
+        merged.back().label = row.label;
+      }
       continue;
     }
     if (!has_equals) {
@@ -1648,6 +1665,7 @@ std::vector<Row> read_block(const Source& source, std::size_t content_offset,
   for (RowTokens& row_tokens : merged) {
     Row row;
     row.tag = row_tokens.tag;
+    row.label = row_tokens.label;
     row.offset = row_tokens.offset;
     std::vector<std::vector<Token>> sides(1);
     const std::vector<bool> top = top_level(row_tokens.tokens);

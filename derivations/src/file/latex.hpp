@@ -91,7 +91,10 @@ struct Row {
   std::vector<Side> sides;  ///< two or more; when `continues`, the first is the empty side
   bool continues = false;   ///< the row began with `=`: its left side is the row before's right
   std::optional<std::string> tag;  ///< `\tag{k}`: "k"
-  std::size_t offset = 0;          ///< where the row begins in the file
+  /// `\label{k}`: "k" (accepted beyond the contract: it names the row for `from:` as a tag does,
+  /// without a number in print)
+  std::optional<std::string> label;
+  std::size_t offset = 0;  ///< where the row begins in the file
 };
 
 /// Reads the rows of a display block. Throws ReadError with the place of whatever is not

@@ -10,7 +10,7 @@ namespace impulse::derivations::file {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, DirectiveKind>, 22> directive_words{{
+constexpr std::array<std::pair<std::string_view, DirectiveKind>, 23> directive_words{{
     {"assume", DirectiveKind::assume},
     {"let", DirectiveKind::let},
     {"given", DirectiveKind::given},
@@ -22,6 +22,7 @@ constexpr std::array<std::pair<std::string_view, DirectiveKind>, 22> directive_w
     {"claim", DirectiveKind::claim},
     {"correction", DirectiveKind::correction},
     {"evidence", DirectiveKind::evidence},
+    {"test", DirectiveKind::test},
     {"explanation", DirectiveKind::explanation},
     {"index", DirectiveKind::index},
     {"arrow", DirectiveKind::arrow},

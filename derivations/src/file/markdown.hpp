@@ -28,6 +28,7 @@ enum class DirectiveKind {
   claim,
   correction,
   evidence,
+  test,
   explanation,
   index,
   arrow,

@@ -339,7 +339,10 @@ Value Symbols::symbol_value(const SymbolName& written) {
             scalar(component_name(name, 1), name, 1)};
   }
   if (const auto parent = component_of(name)) {
-    return {false, scalar(name, parent->first, parent->second), 0};
+    // The component's one name: p_x of \vec p (an `arrow:` letter) is \vec{p}_x.
+    return {false,
+            scalar(component_name(parent->first, parent->second), parent->first, parent->second),
+            0};
   }
   return {false, scalar(name), 0};
 }

@@ -30,6 +30,11 @@ namespace {
 using GiNaC::ex;
 using namespace file;
 
+// A number for a counterexample: a few significant digits, and no "-0".
+std::string shown_number(double x) {
+  return num::brief(x == 0.0 ? 0.0 : x, 6);
+}
+
 std::string symbol_text(Symbols& symbols, const ex& s) {
   const SymbolInfo* info = symbols.info(s);
   if (info == nullptr) {
@@ -243,7 +248,7 @@ bool compare_holds(const Compare& c, const std::vector<double>& values,
   bool sure = true;
   if (!membership) {
     const double d = (left - others[0]) / terms;  // the relation's difference, relative
-    shown = num::brief(left, 6) + " and " + num::brief(others[0], 6);
+    shown = shown_number(left) + " and " + shown_number(others[0]);
     const auto band = [&](double x) { return x > 1e-9 && x < 1e-6; };
     switch (c.kind) {
       case K::equal:
@@ -708,15 +713,14 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
                                    : info->of      ? info->of->latex()
                                                    : info->name.latex();
           text += (text.empty() ? "" : ", ") + name + " = ";
-          text += v.vector ? "[" + num::brief(v.x, 6) + ", " + num::brief(v.y, 6) + "]"
-                           : num::brief(v.x, 6);
+          text += v.vector ? "[" + shown_number(v.x) + ", " + shown_number(v.y) + "]"
+                           : shown_number(v.x);
         }
         for (const std::size_t s : p.solved) {
-          text += "; " + symbol_text(symbols_, symbols[s]) + " = " + num::brief(values[s], 6);
+          text += "; " + symbol_text(symbols_, symbols[s]) + " = " + shown_number(values[s]);
         }
         for (const auto& [u, solution] : p.shown) {
-          text +=
-              "; " + symbol_text(symbols_, u) + " = " + num::brief(solution(values, nullptr), 6);
+          text += "; " + symbol_text(symbols_, u) + " = " + shown_number(solution(values, nullptr));
         }
         return text;
       };
@@ -786,6 +790,10 @@ FileRun::Variant FileRun::run_variant(const Group& g, bool corrected) {
   for (const std::size_t i : g.evidence_equations) {
     tested.emplace_back(i, remapped(eqs[i].premises));
   }
+  const std::set<std::size_t> tests(g.test_equations.begin(), g.test_equations.end());
+  for (const std::size_t i : g.test_equations) {
+    tested.emplace_back(i, std::vector<std::size_t>{});
+  }
   std::string note;
   for (const auto& [index, premises] : tested) {
     const EquationResult r = checker.check(eqs, index, source_, &premises);
@@ -847,8 +855,9 @@ FileRun::Variant FileRun::run_variant(const Group& g, bool corrected) {
         continue;
       }
       facts = e.facts;
-      // A premise of the check (a definition it states) solves for what it defines.
-      if (e.premise) {
+      // A premise of the check (a definition it states) solves for what it defines; a test
+      // does not (it is what is tested).
+      if (e.premise && !tests.contains(index)) {
         for (const ex& d : scalars_of(e, e.substitutions).differences) {
           pool.push_back(d);
         }

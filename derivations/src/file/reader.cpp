@@ -59,8 +59,8 @@ ReadFile Reader::read() {
   if (from_) {
     throw source_.error(from_->first, "expected a display equation after from:");
   }
-  if (evidence_) {
-    throw source_.error(*evidence_, "expected a display block after evidence:");
+  if (evidence_ || test_) {
+    throw source_.error(evidence_ ? *evidence_ : *test_, "expected a display block after it");
   }
   close_group();
   if (equations_.empty() && groups_.empty()) {
@@ -172,6 +172,21 @@ void Reader::read_directive(const Directive& d) {
                             "block)");
       }
       evidence_ = d.offset;
+      break;
+    case DirectiveKind::test:
+      in_group("test:");
+      if (groups_.back().kind == Kind::claim || awaiting_ != Awaiting::nothing) {
+        throw source_.error(d.offset, "expected test: after a check's statement (not in a claim)");
+      }
+      if (groups_.back().models.empty()) {
+        throw source_.error(d.offset,
+                            "expected test: in a check that names a model (the models "
+                            "test what follows it)");
+      }
+      if (!d.content.empty()) {
+        throw source_.error(d.content_offset, "expected nothing after test:");
+      }
+      test_ = d.offset;
       break;
     case DirectiveKind::explanation:
       in_group("explanation:");
@@ -341,8 +356,8 @@ void Reader::open_group(const Directive& d) {
 }
 
 void Reader::close_group() {
-  if (evidence_) {
-    throw source_.error(*evidence_, "expected a display block after evidence:");
+  if (evidence_ || test_) {
+    throw source_.error(evidence_ ? *evidence_ : *test_, "expected a display block after it");
   }
   if (!group_open_) {
     return;
@@ -409,14 +424,24 @@ void Reader::read_block(const Block& block) {
     role = awaiting_ == Awaiting::statement    ? Role::statement
            : awaiting_ == Awaiting::correction ? Role::correction
            : evidence_                         ? Role::evidence
+           : test_                             ? Role::test
                                                : Role::plain;
     if (role == Role::plain) {
       close_group();  // a block that is not the check's: the check ends before it
     }
   }
   evidence_.reset();
+  test_.reset();
   bool given = given_.has_value();
   given_.reset();
+  if (role == Role::test) {
+    if (given || from_) {
+      throw source_.error(block.offset,
+                          "expected a test without given: or from: (it is tested "
+                          "by the models, with the check's equations)");
+    }
+    given = true;  // not derived: the models test it
+  }
   if (role == Role::correction) {
     if (given) {
       throw source_.error(block.offset,
@@ -584,6 +609,13 @@ void Reader::read_block(const Block& block) {
         g.label = "(" + *row.tag + ")";
       }
     }
+    if (row.label) {
+      if (tags_.contains(*row.label)) {
+        throw source_.error(row.offset, "expected a new label, found \\label{" + *row.label +
+                                            "}: an equation above already carries that name");
+      }
+      tags_[*row.label] = last_links;
+    }
     previous_ = given ? block_premises_ : last_links;
   }
   if (!group_open_) {
@@ -613,6 +645,8 @@ void Reader::read_block(const Block& block) {
         indices = read;
       }
     }
+  } else if (role == Role::test) {
+    g.test_equations.insert(g.test_equations.end(), read.begin(), read.end());
   } else {
     g.evidence_equations.insert(g.evidence_equations.end(), read.begin(), read.end());
   }
@@ -757,8 +791,25 @@ void Reader::from(const Directive& d) {
       continue;
     }
     if (text[i] != '(') {
-      throw source_.error(d.content_offset + i,
-                          "expected tags in parentheses after from:, e.g. from: (2), (3)");
+      // Accepted beyond the contract: a check's id names its statement (or its correction).
+      std::size_t end = i;
+      while (end < text.size() && text[end] != ',' && text[end] != ' ') {
+        ++end;
+      }
+      const std::string id(text.substr(i, end - i));
+      const auto named =
+          std::find_if(groups_.begin(), groups_.end(), [&](const Group& g) { return g.id == id; });
+      if (named == groups_.end() || named->kind == Kind::claim) {
+        throw source_.error(d.content_offset + i,
+                            "expected tags in parentheses after from:, e.g. from: (2), (3), or "
+                            "the id of a check above, found " +
+                                id);
+      }
+      const auto& use = named->correction_equations.empty() ? named->statement_equations
+                                                            : named->correction_equations;
+      premises.insert(premises.end(), use.begin(), use.end());
+      i = end;
+      continue;
     }
     const std::size_t close = text.find(')', i);
     if (close == std::string_view::npos) {

@@ -28,6 +28,7 @@ enum class Role {
   statement,   ///< the check's statement (as printed)
   correction,  ///< what holds instead (an erratum)
   evidence,    ///< the check's evidence, in our words: it must follow from the statement
+  test,        ///< what the check's models test besides the statement (not derived)
 };
 
 /// One equation as it is checked: for a link of a chain a = b = c, "a = c".
@@ -65,6 +66,7 @@ struct Group {
   std::vector<std::size_t> statement_equations;
   std::vector<std::size_t> correction_equations;
   std::vector<std::size_t> evidence_equations;
+  std::vector<std::size_t> test_equations;
   std::string correction;   ///< the correction's block as written
   std::string explanation;  ///< what goes wrong (erratum, refuted), in our words
   std::vector<ModelUse> models;
@@ -131,6 +133,7 @@ class Reader {
   enum class Awaiting { nothing, statement, correction } awaiting_ = Awaiting::nothing;
   bool statement_given_ = false;
   std::optional<std::size_t> evidence_;  // evidence: stands here, for the next block
+  std::optional<std::size_t> test_;      // test: stands here, for the next block
   std::vector<std::size_t> statement_premises_;
 };
 

@@ -17,4 +17,9 @@ std::vector<Point> bodies_on_a_line_two_elasticities(Probe&, const Settings&);
 std::vector<Point> bodies_and_impulses_on_a_line(Probe&, const Settings&);
 std::vector<Point> changes_of_units_on_a_line(Probe&, const Settings&);
 
+// plane.cpp: point masses in the plane.
+std::vector<Point> base_turned_to_a_vector(Probe&, const Settings&);
+std::vector<Point> momenta_and_normals_in_the_plane(Probe&, const Settings&);
+std::vector<Point> pucks(Probe&, const Settings&);
+
 }  // namespace impulse::derivations::models
