@@ -13,7 +13,6 @@
 #include <numbers>
 
 #include "impulse/multipoint/multipoint.hpp"
-#include "many.hpp"
 #include "numeric.hpp"
 #include "pulses.hpp"
 #include "sections.hpp"
@@ -262,8 +261,8 @@ Outcome equation_4_3(const Context& c) {
   for (std::size_t i = 0; i < c.share(4); ++i) {
     const PairSolution x = solve_pair(r, true, 4);
     for (std::size_t v = 0; v < x.scene.contacts.size(); ++v) {
-      const double mine = many::contact_energy(x.scene, x.F, 0, v).translational;
-      const double other = many::contact_energy(x.scene, x.F, 1, v).translational;
+      const double mine = contact_energy(x.scene, x.F, 0, v).translational;
+      const double other = contact_energy(x.scene, x.F, 1, v).translational;
       errors.add(mine + other, 0.0, std::abs(mine) + std::abs(other));
     }
   }
@@ -323,7 +322,7 @@ void pair_contacts(const Context& c, int max_contacts, Visit visit) {
       for (std::size_t k = 0; k < x.scene.contacts.size(); ++k) {
         S += x.F(static_cast<Eigen::Index>(k)) * x.scene.contacts[k].n.dot(nv);
       }
-      const double dEo = many::contact_energy(x.scene, x.F, 1, v).translational;
+      const double dEo = contact_energy(x.scene, x.F, 1, v).translational;
       const double terms =
           x.system.A.row(static_cast<Eigen::Index>(v)).cwiseAbs().dot(x.F.cwiseAbs());
       visit(S, b.p.dot(nv), b.m, dEo, terms);
@@ -794,7 +793,7 @@ Outcome many_4_4(const Context& c) {
       }
       if (std::abs(pair) < 1e-9 * (std::abs(all) + b.p.norm()))
         continue;
-      const double dEo = many::contact_energy(s, F, other, v).translational;
+      const double dEo = contact_energy(s, F, other, v).translational;
       const double lhs = all / b.m;
       // Row v of the system is what the balance rests on; its rounding scales with its terms.
       const double scale = std::abs(lhs) + std::abs(2 * b.p.dot(nv) / b.m) +
@@ -834,8 +833,8 @@ Outcome oplus(const Context& c) {
 
 }  // namespace
 
-std::vector<Check> section4_checks() {
-  std::vector<Check> c;
+std::vector<CodedCheck> section4_checks() {
+  std::vector<CodedCheck> c;
   c.push_back(make_check("eq-4.1", "4.1", "(4.1)", Kind::equation,
                          R"(\Delta E_{vt} = \int_{\mathcal{A}} F_v \, \mathrm{d}S_v)",
                          equation_4_1));

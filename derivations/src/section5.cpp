@@ -9,9 +9,8 @@
 #include <complex>
 #include <numbers>
 
-#include "cloud.hpp"
 #include "impulse/multipoint/multipoint.hpp"
-#include "many.hpp"
+#include "models/cloud.hpp"
 #include "numeric.hpp"
 #include "pulses.hpp"
 #include "sections.hpp"
@@ -155,8 +154,8 @@ Outcome energy_balance(const Context& c) {
   for (std::size_t i = 0; i < c.share(4); ++i) {
     const Solved x = solve_scene(r, true, false, 2, 4, true);
     for (std::size_t v = 0; v < x.scene.contacts.size(); ++v) {
-      const auto mine = many::contact_energy(x.scene, x.F, x.scene.contacts[v].a, v);
-      const auto other = many::contact_energy(x.scene, x.F, x.scene.contacts[v].b, v);
+      const auto mine = contact_energy(x.scene, x.F, x.scene.contacts[v].a, v);
+      const auto other = contact_energy(x.scene, x.F, x.scene.contacts[v].b, v);
       const double sum =
           mine.translational + mine.rotational + other.translational + other.rotational;
       // The balance is (J_i / 2) (B_v - (A F)_v): its rounding scales with those summands.
@@ -369,7 +368,7 @@ Outcome equation_5_2(const Context& c) {
       }
       if (std::abs(Pv) < 1e-9 * (std::abs(lhs) * b.m + b.p.norm()))
         continue;
-      const auto other = many::contact_energy(x.scene, x.F, x.scene.contacts[v].b, v);
+      const auto other = contact_energy(x.scene, x.F, x.scene.contacts[v].b, v);
       const double dEov = other.translational + other.rotational;
       const double base = (b.rigid() ? 2 * b.L * dv / b.I : 0.0) + 2 * b.p.dot(nv) / b.m;
       const double scale =
@@ -623,8 +622,8 @@ Outcome claim_elasticity(const Context& c) {
 
 }  // namespace
 
-std::vector<Check> section5_checks() {
-  std::vector<Check> c;
+std::vector<CodedCheck> section5_checks() {
+  std::vector<CodedCheck> c;
   c.push_back(make_check(
       "claim-5-pinned", "5", std::nullopt, Kind::claim,
       R"(E = \frac{L_O^2}{2 I_O},\quad I_O = I + m\,d^2 \text{ for a body pinned at } O)",

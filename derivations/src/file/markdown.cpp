@@ -10,13 +10,14 @@ namespace impulse::derivations::file {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, DirectiveKind>, 23> directive_words{{
+constexpr std::array<std::pair<std::string_view, DirectiveKind>, 24> directive_words{{
     {"assume", DirectiveKind::assume},
     {"let", DirectiveKind::let},
     {"given", DirectiveKind::given},
     {"from", DirectiveKind::from},
     {"vector", DirectiveKind::vector},
     {"units", DirectiveKind::units},
+    {"also", DirectiveKind::also},
     {"section", DirectiveKind::section},
     {"check", DirectiveKind::check},
     {"claim", DirectiveKind::claim},

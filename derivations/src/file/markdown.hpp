@@ -23,6 +23,7 @@ enum class DirectiveKind {
   vector,
   units,
   // beyond the contract
+  also,
   section,
   check,
   claim,

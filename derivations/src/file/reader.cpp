@@ -59,6 +59,9 @@ ReadFile Reader::read() {
   if (from_) {
     throw source_.error(from_->first, "expected a display equation after from:");
   }
+  if (also_) {
+    throw source_.error(also_->first, "expected a display block after also:");
+  }
   if (evidence_ || test_) {
     throw source_.error(evidence_ ? *evidence_ : *test_, "expected a display block after it");
   }
@@ -97,6 +100,9 @@ void Reader::read_directive(const Directive& d) {
       break;
     case DirectiveKind::from:
       from(d);
+      break;
+    case DirectiveKind::also:
+      also_ = std::pair{d.offset, named(d)};
       break;
     case DirectiveKind::vector:
       for (const auto& [at, piece] : split_commas(d.content, d.content_offset)) {
@@ -574,6 +580,13 @@ void Reader::read_block(const Block& block) {
         if (!premise) {
           e.premises =
               first_link ? first_premises : std::vector<std::size_t>{equations_.size() - 1};
+          if (also_) {
+            for (const std::size_t q : also_->second) {
+              if (std::find(e.premises.begin(), e.premises.end(), q) == e.premises.end()) {
+                e.premises.push_back(q);
+              }
+            }
+          }
           if (first_link && e.premises.empty()) {
             e.premise = true;  // nothing before it to follow from
           }
@@ -618,6 +631,7 @@ void Reader::read_block(const Block& block) {
     }
     previous_ = given ? block_premises_ : last_links;
   }
+  also_.reset();
   if (!group_open_) {
     return;
   }
@@ -781,7 +795,7 @@ void Reader::let(const Directive& d) {
   note_used(definition.expression);
 }
 
-void Reader::from(const Directive& d) {
+std::vector<std::size_t> Reader::named(const Directive& d) {
   std::vector<std::size_t> premises;
   std::size_t i = 0;
   const std::string_view text = d.content;
@@ -833,9 +847,14 @@ void Reader::from(const Directive& d) {
     i = close + 1;
   }
   if (premises.empty()) {
-    throw source_.error(d.content_offset, "expected tags after from:, e.g. from: (2), (3)");
+    throw source_.error(d.content_offset, "expected tags after " + std::string(to_string(d.kind)) +
+                                              ":, e.g. (2), (3)");
   }
-  from_ = std::pair{d.offset, premises};
+  return premises;
+}
+
+void Reader::from(const Directive& d) {
+  from_ = std::pair{d.offset, named(d)};
 }
 
 void Reader::units(const Directive& d) {

@@ -96,6 +96,7 @@ class Reader {
   void fact(std::size_t at, const SymbolName& name, Sign sign);
   void let(const Directive& d);
   void from(const Directive& d);
+  std::vector<std::size_t> named(const Directive& d);
   void units(const Directive& d);
   void index(const Directive& d);
   void block_declaration(const Directive& d, bool matrix);
@@ -118,6 +119,7 @@ class Reader {
   std::set<std::string> used_;
   std::optional<std::size_t> given_;
   std::optional<std::pair<std::size_t, std::vector<std::size_t>>> from_;
+  std::optional<std::pair<std::size_t, std::vector<std::size_t>>> also_;
   std::vector<std::size_t> previous_;
   std::vector<std::size_t> block_premises_;
   // The chain of the row before, one per row of an index (a = b, then = c continues it).

@@ -22,4 +22,17 @@ std::vector<Point> base_turned_to_a_vector(Probe&, const Settings&);
 std::vector<Point> momenta_and_normals_in_the_plane(Probe&, const Settings&);
 std::vector<Point> pucks(Probe&, const Settings&);
 
+// rigid.cpp: rigid bodies of point masses, a rod on a penalty contact.
+std::vector<Point> point_cloud_rigid_body(Probe&, const Settings&);
+std::vector<Point> point_cloud_hit_at_several_points(Probe&, const Settings&);
+std::vector<Point> point_cloud_pinned(Probe&, const Settings&);
+std::vector<Point> turned_point(Probe&, const Settings&);
+std::vector<Point> rod_on_a_penalty_spring(Probe&, const Settings&);
+std::vector<Point> rod_on_a_penalty_damper(Probe&, const Settings&);
+
+// contacts.cpp: bodies in contact by the law of restitution.
+std::vector<Point> two_rigid_bodies_elastic(Probe&, const Settings&);
+std::vector<Point> two_rigid_bodies_inelastic(Probe&, const Settings&);
+std::vector<Point> two_rigid_bodies_one_elasticity(Probe&, const Settings&);
+
 }  // namespace impulse::derivations::models
