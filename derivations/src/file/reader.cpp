@@ -575,7 +575,13 @@ void Reader::read_block(const Block& block) {
         chain.last_node = right;
         e.facts = facts_;
         e.substitutions = symbols_.substitutions();
-        const bool premise = given || (equations_.empty() && role == Role::plain);
+        // A given chain a = b = c in a check's statement that no model tests: only a = b is
+        // given; b = c must follow from it (nothing else would test that the links agree).
+        const bool untested_link = given && !first_link &&
+                                   (role == Role::statement || role == Role::correction) &&
+                                   groups_.back().models.empty();
+        const bool premise =
+            (given && !untested_link) || (equations_.empty() && role == Role::plain);
         e.premise = premise;
         if (!premise) {
           e.premises =
