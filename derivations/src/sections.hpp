@@ -52,6 +52,12 @@ std::vector<Finding> printed_system_findings(
     const Context& context, bool rigid, bool elastic,
     const std::function<many::System(const many::Scene&)>& assemble_printed,
     const std::string& scenes);
+/// The same on scenes that @p draw produces, @p count of them.
+std::vector<Finding> printed_system_findings(
+    const Context& context, bool elastic,
+    const std::function<many::System(const many::Scene&)>& assemble_printed,
+    const std::function<many::Scene(num::Random&)>& draw, const std::string& scenes,
+    std::size_t count);
 
 /// The paper's per-contact energies of body k at contact v (sections 4.1 and 5.1): with J_i the
 /// impulses exchanged with the other body of contact v, K all of body k's impulses, both cast on

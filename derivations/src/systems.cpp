@@ -67,11 +67,22 @@ std::vector<Finding> printed_system_findings(
     const Context& c, bool rigid, bool elastic,
     const std::function<many::System(const many::Scene&)>& assemble_printed,
     const std::string& scenes) {
+  return printed_system_findings(
+      c, elastic, assemble_printed,
+      [rigid](num::Random& r) { return many::random_scene(r, rigid, true, 5, 6); }, scenes,
+      c.share(4));
+}
+
+std::vector<Finding> printed_system_findings(
+    const Context& c, bool elastic,
+    const std::function<many::System(const many::Scene&)>& assemble_printed,
+    const std::function<many::Scene(num::Random&)>& draw, const std::string& scenes,
+    std::size_t count) {
   const double e = elastic ? 2.0 : 1.0;
   num::Random r(c.seed);
   num::Errors physics, model_agreement, library;
-  for (std::size_t i = 0; i < c.share(4); ++i) {
-    const many::Scene s = many::random_scene(r, rigid, true, 5, 6);
+  for (std::size_t i = 0; i < count; ++i) {
+    const many::Scene s = draw(r);
     const many::System sys = assemble_printed(s);
     const many::Model md = many::model(s);
     model_agreement.add_relative(many::matrix_error(sys.A, md.A()));
