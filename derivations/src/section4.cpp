@@ -5,7 +5,7 @@
 // with the body's own outward normal n_v; the impulse at contact v is -n_v F_v on it (+n_v F_v on
 // the other body). Work is the integral of force along the path, dS = v dt; elastic: total
 // kinetic energy kept; inelastic: at each contact the two bodies' velocities along n_v are equal.
-// The many-body model of many.hpp judges systems assembled from the printed coefficients.
+// The many-body model of models/scene.hpp judges systems assembled from the printed coefficients.
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <array>

@@ -44,6 +44,51 @@ std::string symbol_text(Symbols& symbols, const ex& s) {
   return info->name.latex();
 }
 
+// A counterexample or a note in plain words: the report shows them as text, not as math, so the
+// LaTeX of the file's symbols and relations is spelled out (\vec{p}_1 as p_1, \leq as ≤).
+std::string plain(std::string text) {
+  static const std::pair<std::string_view, std::string_view> words[] = {
+      {"\\cdot", "·"},       {"\\leq", "≤"},   {"\\geq", "≥"},    {"\\neq", "≠"},
+      {"\\Rightarrow", "⇒"}, {"\\times", "×"}, {"\\tau", "τ"},    {"\\alpha", "α"},
+      {"\\omega", "ω"},      {"\\mu", "μ"},    {"\\lambda", "λ"}, {"\\Delta ", "Δ"},
+      {"\\Delta", "Δ"},      {"\\ell", "ℓ"},   {"\\quad", " "},   {"\\,", " "},
+      {"\\;", " "},          {"\\!", ""},      {"\\left", ""},    {"\\right", ""}};
+  // Accents: \bar{X} as X̄, \tilde{X} as X̃; wrappers: \vec, \mathit, \mathrm, \text dropped.
+  static const std::pair<std::string_view, std::string_view> accents[] = {
+      {"\\bar{", "\u0304"}, {"\\tilde{", "\u0303"}, {"\\hat{", "\u0302"}, {"\\vec{", ""},
+      {"\\mathit{", ""},    {"\\mathrm{", ""},      {"\\text{", ""},      {"\\operatorname{", ""}};
+  for (const auto& [command, mark] : accents) {
+    for (std::size_t at = text.find(command); at != std::string::npos; at = text.find(command)) {
+      const std::size_t open = at + command.size();
+      std::size_t close = open;
+      for (int depth = 1; close < text.size(); ++close) {
+        depth += text[close] == '{' ? 1 : text[close] == '}' ? -1 : 0;
+        if (depth == 0) {
+          break;
+        }
+      }
+      if (close >= text.size()) {
+        break;
+      }
+      const std::string inner = text.substr(open, close - open);
+      text.replace(at, close + 1 - at, inner + std::string(mark));
+    }
+  }
+  for (const auto& [command, word] : words) {
+    for (std::size_t at = text.find(command); at != std::string::npos;
+         at = text.find(command, at + word.size())) {
+      text.replace(at, command.size(), word);
+    }
+  }
+  std::string out;
+  for (const char c : text) {
+    if (c != '{' && c != '}' && c != '\\') {
+      out += c;
+    }
+  }
+  return out;
+}
+
 // What one model found on one variant of a check.
 struct ModelFinding {
   Method method = Method::numeric;
@@ -1259,6 +1304,7 @@ Result FileRun::check_claim(const Group& g, Result r) {
   }
   o.samples = samples > 0 ? std::optional<std::size_t>(samples) : std::nullopt;
   o.note = note + ".";
+  o.counterexample = plain(o.counterexample);
   if (failed) {
     o.status = Status::failed;
     o.explanation = "The claim could not be decided: " + note + ".";
