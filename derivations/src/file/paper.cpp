@@ -298,7 +298,6 @@ bool compare_holds(const Compare& c, const std::vector<double>& values,
   bool sure = true;
   if (!membership) {
     const double d = (left - others[0]) / terms;  // the relation's difference, relative
-    shown = shown_number(left) + " and " + shown_number(others[0]);
     const auto band = [&](double x) { return x > 1e-9 && x < 1e-6; };
     switch (c.kind) {
       case K::equal:
@@ -327,6 +326,9 @@ bool compare_holds(const Compare& c, const std::vector<double>& values,
         break;
       default:
         break;
+    }
+    if (!holds) {  // the sides, for a counterexample (formatting them costs more than the rest)
+      shown = shown_number(left) + " and " + shown_number(others[0]);
     }
   } else if (c.kind == K::in_set) {
     holds = std::any_of(others.begin(), others.end(),
