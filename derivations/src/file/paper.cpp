@@ -184,9 +184,9 @@ class FileRun : public models::Probe {
   // Probe::value: the definitions in force at the check, and its facts.
   GiNaC::exmap probe_substitutions_;
   std::map<std::string, std::vector<ex>> names_;  // a model's names, read once
-  // A model's points, made once per file and shared by the checks that name it: a model knows
-  // nothing of the check (it does not read the probe), so its points depend only on the run's
-  // seed and samples (the rods on a penalty contact cost 30 ms each).
+  // An ODE model's points, made once per file and shared by the checks that name it: a model
+  // knows nothing of the check (it does not read the probe), so its points depend only on the
+  // run's seed and samples (the rods on a penalty contact cost 30 ms each).
   std::map<const models::Model*, std::vector<models::Point>> points_;
 };
 
@@ -375,11 +375,19 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
   // other checks run.
   models::Settings settings{check_seed(options_.seed, use.method + ": " + use.name),
                             options_.samples};
-  auto cached = points_.find(model);
-  if (cached == points_.end()) {
-    cached = points_.emplace(model, model->points(*this, settings)).first;
+  std::vector<models::Point> made;
+  const std::vector<models::Point>* points_in = nullptr;
+  if (model->method == "ode") {  // the costly ones; the others are cheaper made again than kept
+    auto cached = points_.find(model);
+    if (cached == points_.end()) {
+      cached = points_.emplace(model, model->points(*this, settings)).first;
+    }
+    points_in = &cached->second;
+  } else {
+    made = model->points(*this, settings);
+    points_in = &made;
   }
-  const std::vector<models::Point>& points = cached->second;
+  const std::vector<models::Point>& points = *points_in;
 
   // Every expression to evaluate, in one list of symbols.
   std::vector<ex> all;
