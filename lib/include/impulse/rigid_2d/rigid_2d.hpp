@@ -6,8 +6,10 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "impulse/core/checked.hpp"
 #include "impulse/core/elasticity.hpp"
 #include "impulse/core/error.hpp"
+#include "impulse/core/normal.hpp"
 #include "impulse/core/plane.hpp"
 #include "impulse/core/solve.hpp"
 #include "impulse/core/system.hpp"
@@ -100,7 +102,9 @@ struct Collision {
   RigidBody wedge;          ///< the wedge after
 };
 
-/// @brief Collides two rigid bodies at one point: @f$ F\,dt\,(A_1 + A_2) = B_1 + B_2 @f$.
+/// @brief Collides two rigid bodies at one point: @f$ F\,dt\,(A_1 + A_2) = B_1 + B_2 @f$,
+/// checking the bodies, the point and the normal first (InvalidInput naming "bumper", "wedge",
+/// "point" or "normal"; the normal must be of unit length).
 /// @param bumper the body whose outward normal is @p n
 /// @param bumper_elasticity its elasticity
 /// @param wedge the body whose outward normal is -@p n
@@ -111,6 +115,20 @@ struct Collision {
 [[nodiscard]] inline Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
                                        const RigidBody& wedge, Elasticity wedge_elasticity,
                                        const Eigen::Vector2d& point, const Eigen::Vector2d& n);
+
+/// @brief Collides two rigid bodies checked when they were made, along a normal checked when it
+/// was made: only the point is tested (finite, else InvalidInput naming "point").
+/// @param bumper the body whose outward normal is @p n
+/// @param bumper_elasticity its elasticity
+/// @param wedge the body whose outward normal is -@p n
+/// @param wedge_elasticity its elasticity
+/// @param point the contact point in world coordinates
+/// @param n the normal, outward from the bumper
+/// @return the impulse and both bodies after
+[[nodiscard]] inline Collision collide(const Checked<RigidBody>& bumper,
+                                       Elasticity bumper_elasticity,
+                                       const Checked<RigidBody>& wedge, Elasticity wedge_elasticity,
+                                       const Eigen::Vector2d& point, const UnitNormal& n);
 
 // The single-contact path is defined here, inline, so that the caller's compiler sees the whole
 // formula: bench/single_contact.cpp measures it against the same impulse written by hand.
@@ -193,6 +211,19 @@ inline RigidBody apply_impulse(const RigidBody& body, const Eigen::Vector2d& poi
   return after;
 }
 
+namespace detail {
+// Section 3.4 for bodies, point and normal already checked: Fdt (A1 + A2) = B1 + B2, the wedge
+// with its own normal -n, then each body's update.
+inline Collision collide_checked(const RigidBody& bumper, Elasticity bumper_elasticity,
+                                 const RigidBody& wedge, Elasticity wedge_elasticity,
+                                 const Eigen::Vector2d& point, const Eigen::Vector2d& n) {
+  const ScalarSolution solution =
+      solve(share(bumper, point, n, bumper_elasticity) + share(wedge, point, -n, wedge_elasticity));
+  return {solution, apply_impulse(bumper, point, n, solution.Fdt),
+          apply_impulse(wedge, point, -n, solution.Fdt)};
+}
+}  // namespace detail
+
 inline Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
                          const RigidBody& wedge, Elasticity wedge_elasticity,
                          const Eigen::Vector2d& point, const Eigen::Vector2d& n) {
@@ -205,11 +236,17 @@ inline Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
   if (!(bumper_ok & wedge_ok & point_ok & normal_ok)) [[unlikely]] {
     detail::refuse_collision(bumper, wedge, point, n);
   }
-  // Section 3.4: Fdt (A1 + A2) = B1 + B2, the wedge with its own normal -n.
-  const ScalarSolution solution = solve(detail::share(bumper, point, n, bumper_elasticity) +
-                                        detail::share(wedge, point, -n, wedge_elasticity));
-  return {solution, apply_impulse(bumper, point, n, solution.Fdt),
-          apply_impulse(wedge, point, -n, solution.Fdt)};
+  return detail::collide_checked(bumper, bumper_elasticity, wedge, wedge_elasticity, point, n);
+}
+
+inline Collision collide(const Checked<RigidBody>& bumper, Elasticity bumper_elasticity,
+                         const Checked<RigidBody>& wedge, Elasticity wedge_elasticity,
+                         const Eigen::Vector2d& point, const UnitNormal& n) {
+  if (!all_finite(point.x(), point.y())) [[unlikely]] {
+    require_finite("point", point);
+  }
+  return detail::collide_checked(bumper.get(), bumper_elasticity, wedge.get(), wedge_elasticity,
+                                 point, n.vector());
 }
 
 }  // namespace impulse::rigid_2d
