@@ -6,29 +6,60 @@
 #include <Eigen/SparseCore>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "impulse/core/error.hpp"
 
 namespace impulse {
 
-std::string_view to_string(DependentPolicy policy) {
-  switch (policy) {
-    case DependentPolicy::minimum_norm:
-      return "minimum-norm";
-    case DependentPolicy::basic:
-      return "basic";
+void require_dense_fits(Eigen::Index contacts, const SolverOptions& options) {
+  const bool dense_only = options.dependent != DependentPolicy::minimum_norm ||
+                          options.inconsistent != InconsistentPolicy::least_squares;
+  if (!dense_only || contacts <= dense_limit) {
+    return;
   }
-  return "?";
+  std::string message(std::to_string(contacts));
+  message.append(" contacts with the policies \"")
+      .append(name_of(options.dependent))
+      .append("\" and \"")
+      .append(name_of(options.inconsistent))
+      .append("\", which only the dense method serves: it takes at most ")
+      .append(std::to_string(dense_limit))
+      .append(
+          " (its matrices grow as the square of the contacts); the default policies solve "
+          "large scenes with the sparse method");
+  throw InvalidInput(message);
 }
 
-std::string_view to_string(InconsistentPolicy policy) {
-  switch (policy) {
-    case InconsistentPolicy::least_squares:
-      return "least-squares";
-    case InconsistentPolicy::drop_equation:
-      return "drop-equation";
+Eigen::VectorXd detail::least_norm(const Eigen::MatrixXd& M, const Eigen::VectorXd& rhs,
+                                   double threshold) {
+  if (M.rows() == 0 || M.isZero(0.0)) {
+    return Eigen::VectorXd::Zero(M.cols());  // every x acts the same: the least is zero
   }
-  return "?";
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+  if (threshold > 0.0) {
+    cod.setThreshold(threshold);
+  }
+  cod.compute(M);
+  return cod.solve(rhs);
+}
+
+Eigen::VectorXd detail::least_norm_on(const Eigen::MatrixXd& A, const Eigen::VectorXd& B,
+                                      const Eigen::MatrixXd* G, const Eigen::VectorXd* w,
+                                      std::span<const Eigen::Index> on, double rank_tolerance) {
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(B.size());
+  if (on.empty()) {
+    return F;
+  }
+  const std::vector<Eigen::Index> contacts(on.begin(), on.end());
+  if (G != nullptr) {
+    // A = G^T G: a pivot threshold t on A is one of sqrt(t) on G.
+    const double threshold = rank_tolerance > 0.0 ? std::sqrt(rank_tolerance) : 0.0;
+    F(contacts) = least_norm((*G)(Eigen::all, contacts), *w, threshold);
+  } else {
+    F(contacts) = least_norm(A(contacts, contacts), B(contacts), rank_tolerance);
+  }
+  return F;
 }
 
 // The 2-norm of finite numbers, without overflow or underflow in its squares and without raising
@@ -57,7 +88,6 @@ using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 using PivotedQR = Eigen::ColPivHouseholderQR<MatrixXd>;
-using Orthogonal = Eigen::CompleteOrthogonalDecomposition<MatrixXd>;
 
 // What one factorisation of M x ~ rhs tells: the rank, the pivot ratio and the solution that
 // the dependent-system policy asks for (least squares when rhs is outside the range of M).
@@ -81,12 +111,7 @@ Factored factor_and_solve(const MatrixXd& M, const VectorXd& rhs, double thresho
                                         : pivots(0) / pivots(result.rank - 1);
   if (policy == DependentPolicy::minimum_norm) {
     // The least-squares solution of least norm, from the complete orthogonal decomposition.
-    Orthogonal cod;
-    if (threshold > 0.0) {
-      cod.setThreshold(threshold);
-    }
-    cod.compute(M);
-    result.x = cod.solve(rhs);
+    result.x = detail::least_norm(M, rhs, threshold);
   } else {
     // A basic solution: R11 y = (Q^T rhs) on the retained pivots, the free unknowns zero.
     // (Eigen's ColPivHouseholderQR::solve picks its pivots with a fixed threshold of its own.)
@@ -421,6 +446,7 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
 }  // namespace
 
 Solution solve(const ContactSystem& system, const SolverOptions& options) {
+  require_dense_fits(system.size(), options);
   Solution solution;
   solution.B = system.B();
   solution.options = options;
