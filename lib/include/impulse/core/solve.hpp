@@ -57,7 +57,10 @@ struct EnumNames<InconsistentPolicy> {
 enum class SolveMethod {
   /// The sparse method for systems kept sparse (ContactSystem::is_sparse(), i.e. above
   /// sparse_threshold contacts) that carry their factor and use the default policies; the
-  /// dense one otherwise.
+  /// dense one otherwise. A sparse answer in doubt (the Lanczos steps find eigenvalues of A, on
+  /// its range, below the level its shifted pivots resolve, which they take for null space) is
+  /// solved again by the dense method up to dense_limit contacts; its condition estimate then
+  /// keeps the larger of the two methods' estimates.
   automatic,
   /// The complete orthogonal decomposition of G (or of A without a factor): exact rank,
   /// twice the digits, cubic cost and N² storage. The only method for DependentPolicy::basic
@@ -67,8 +70,9 @@ enum class SolveMethod {
   /// conjugate gradients on A preconditioned by a sparse LDLᵀ of @f$ A + \lambda I @f$
   /// (@f$ \lambda = 10^{-10} \max_v A_{vv} @f$), which gives any solution @f$ \hat{x} @f$;
   /// then the minimum-norm one as @f$ G^T y @f$ with @f$ G G^T y = G\,\hat{x} @f$, by
-  /// conjugate gradients preconditioned from the same LDLᵀ. Rank and condition number are
-  /// estimates from the pivots of the LDLᵀ.
+  /// conjugate gradients preconditioned from the same LDLᵀ. The rank is an estimate from the
+  /// pivots of the LDLᵀ; the condition number an estimate from them, A's diagonal and a few
+  /// Lanczos steps on A.
   sparse,
 };
 
@@ -141,11 +145,13 @@ struct Solution {
   /// ratio for the factor G, when the system carries one): an estimate of the condition number
   /// of A on its range (1 for the empty system, infinity when A is zero but N > 0). Relative
   /// errors of Fdt are bounded by roughly this times the input's (docs/pages/accuracy.md has the
-  /// figures measured on hostile scenes). The sparse method gives the larger of the ratio of the
-  /// largest to the smallest retained LDLᵀ pivot and the ratio of A's largest to its smallest
-  /// positive diagonal entry: a rougher estimate, which can be far below the truth when A has
-  /// eigenvalues below about 1e-7 of its largest diagonal entry that are not a dependency
-  /// (the pivots count them as null space).
+  /// figures measured on hostile scenes). The sparse method gives the largest of three lower
+  /// bounds: the ratio of the largest to the smallest retained LDLᵀ pivot, the ratio of A's
+  /// largest to its smallest positive diagonal entry, and the ratio of the extreme Ritz values of
+  /// twelve Lanczos steps on A started in its range (which sees eigenvalues the shifted pivots
+  /// count as null space; rounding may put it above the truth by about ε times the estimate).
+  /// It can still be far below the truth when A's spectrum is spread over more values than
+  /// twelve steps resolve (docs/pages/accuracy.md).
   double condition_estimate = 1.0;
   std::vector<Eigen::Index> dropped;  ///< equations ignored under InconsistentPolicy::drop_equation
   SolverOptions options;              ///< the policies and tolerances used
@@ -202,7 +208,7 @@ Eigen::VectorXd least_norm(const Eigen::MatrixXd& M, const Eigen::VectorXd& rhs,
 // choice that solve() makes for the whole system.
 Eigen::VectorXd least_norm_on(const Eigen::MatrixXd& A, const Eigen::VectorXd& B,
                               const Eigen::MatrixXd* G, const Eigen::VectorXd* w,
-                              std::span<const Eigen::Index> on, double rank_tolerance);
+                              const std::vector<Eigen::Index>& on, double rank_tolerance);
 // The 2-norm of finite numbers, scaled by powers of two so that it neither overflows nor
 // underflows and raises no floating-point exception (Eigen's stableNorm() overflows computing
 // 1 over a subnormal entry). The residuals and tolerances of solve() use it.
