@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <queue>
 #include <string>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -18,14 +18,20 @@
 namespace impulse::methods {
 
 std::int64_t count_passes(std::span<const Eigen::Index> order) {
-  std::int64_t passes = 0;
-  std::unordered_set<Eigen::Index> in_this_pass;
+  // The pass in which each contact last collided: a contact that comes up again in the same
+  // pass ends it.
+  Eigen::Index contacts = 0;
   for (const Eigen::Index v : order) {
-    if (passes == 0 || in_this_pass.contains(v)) {
+    contacts = std::max(contacts, v + 1);
+  }
+  std::vector<std::int64_t> last_pass(static_cast<std::size_t>(contacts), 0);
+  std::int64_t passes = 0;
+  for (const Eigen::Index v : order) {
+    std::int64_t& last = last_pass[static_cast<std::size_t>(v)];
+    if (passes == 0 || last == passes) {
       ++passes;
-      in_this_pass.clear();
     }
-    in_this_pass.insert(v);
+    last = passes;
   }
   return passes;
 }
@@ -49,33 +55,40 @@ void require_options(const SerialOptions& options) {
   }
 }
 
-// The contacts by approach speed, fastest first, the lowest index among equal speeds: a heap of
-// (speed, contact) entries. A contact whose speed changes gets a new entry; the old one stays
+// The approaching contacts by approach speed, fastest first, the lowest index among equal speeds:
+// a heap of (speed, contact) entries of the contacts faster than the threshold (no other can be
+// chosen). A contact whose speed changes gets a new entry if it approaches; its old one stays
 // behind and is skipped when it comes up (its speed is no longer the contact's). The heap is
-// rebuilt from the speeds when the stale entries outnumber the contacts, so that it never holds
-// more than a few entries per contact.
+// rebuilt from the speeds when stale entries outnumber the contacts.
 class Fastest {
  public:
-  explicit Fastest(const Eigen::VectorXd& speeds) : speeds_(speeds) { rebuild(); }
+  Fastest(const Eigen::VectorXd& speeds, double threshold)
+      : speeds_(speeds), threshold_(threshold) {
+    rebuild();
+  }
 
   // Contact v's speed is now `speed`.
   void update(Index v, double speed) {
     speeds_(v) = speed;
-    heap_.push({speed, v});
-    if (heap_.size() > 4 * static_cast<std::size_t>(speeds_.size()) + 64) {
-      rebuild();
+    if (speed > threshold_) {
+      heap_.push({speed, v});
+      if (heap_.size() > 4 * static_cast<std::size_t>(speeds_.size()) + 64) {
+        rebuild();
+      }
     }
   }
 
-  // The fastest contact (the first of equal speeds), and its speed.
-  [[nodiscard]] std::pair<Index, double> top() {
-    while (heap_.top().speed != speeds_(heap_.top().contact)) {
+  // The fastest approaching contact (the first of equal speeds) and its speed, or nothing when
+  // no contact approaches.
+  [[nodiscard]] std::optional<std::pair<Index, double>> top() {
+    while (!heap_.empty() && heap_.top().speed != speeds_(heap_.top().contact)) {
       heap_.pop();  // a stale entry
     }
-    return {heap_.top().contact, heap_.top().speed};
+    if (heap_.empty()) {
+      return std::nullopt;
+    }
+    return std::pair{heap_.top().contact, heap_.top().speed};
   }
-
-  [[nodiscard]] const Eigen::VectorXd& speeds() const { return speeds_; }
 
  private:
   struct Entry {
@@ -89,14 +102,16 @@ class Fastest {
 
   void rebuild() {
     std::vector<Entry> entries;
-    entries.reserve(static_cast<std::size_t>(speeds_.size()));
     for (Index v = 0; v < speeds_.size(); ++v) {
-      entries.push_back({speeds_(v), v});
+      if (speeds_(v) > threshold_) {
+        entries.push_back({speeds_(v), v});
+      }
     }
     heap_ = std::priority_queue<Entry>(std::less<Entry>(), std::move(entries));
   }
 
   Eigen::VectorXd speeds_;
+  double threshold_;
   std::priority_queue<Entry> heap_;
 };
 
@@ -132,12 +147,13 @@ SerialResolution resolve_serial(const multipoint::Configuration& configuration,
     return r;
   }
 
-  Fastest fastest(u);
+  Fastest fastest(u, d.approach_threshold);
   while (true) {
-    const auto [v, approach] = fastest.top();
-    if (!(approach > d.approach_threshold)) {
+    const std::optional<std::pair<Index, double>> next = fastest.top();
+    if (!next) {
       break;  // no contact approaches
     }
+    const auto [v, approach] = *next;
     if (static_cast<std::int64_t>(d.order.size()) >= d.max_collisions) {
       d.status = SerialStatus::collision_limit;
       d.still_approaching = v;
