@@ -186,11 +186,30 @@ inline double normal_velocity(const RigidBody& body, const Eigen::Vector2d& poin
 
 namespace detail {
 // (3.6) at elasticity 2, (3.10) at elasticity 1, for a body, point and normal already validated.
+// with the lever arm det(r, n), which the body's update needs again.
+struct ArmedShare {
+  ScalarContribution share;
+  double arm = 0.0;  // det(r, n)
+};
+inline ArmedShare armed_share(const RigidBody& body, const Eigen::Vector2d& point,
+                              const Eigen::Vector2d& n, Elasticity elasticity) {
+  const double arm = det(point - body.position, n);  // det(r, n)
+  return {{arm * arm / body.inertia + n.squaredNorm() / body.mass,
+           elasticity.value() * (body.L * arm / body.inertia + body.p.dot(n) / body.mass)},
+          arm};
+}
 inline ScalarContribution share(const RigidBody& body, const Eigen::Vector2d& point,
                                 const Eigen::Vector2d& n, Elasticity elasticity) {
-  const double arm = det(point - body.position, n);  // det(r, n)
-  return {arm * arm / body.inertia + n.squaredNorm() / body.mass,
-          elasticity.value() * (body.L * arm / body.inertia + body.p.dot(n) / body.mass)};
+  return armed_share(body, point, n, elasticity).share;
+}
+// The body after the impulse -n Fdt whose lever arm det(r, n) is known: (3.2) with
+// det(r, -n Fdt) = -Fdt det(r, n).
+inline RigidBody apply_armed(const RigidBody& body, const Eigen::Vector2d& n, double arm,
+                             double Fdt) {
+  RigidBody after = body;
+  after.p -= n * Fdt;    // (3.2), translation
+  after.L -= arm * Fdt;  // (3.2), rotation
+  return after;
 }
 }  // namespace detail
 
@@ -217,10 +236,11 @@ namespace detail {
 inline Collision collide_checked(const RigidBody& bumper, Elasticity bumper_elasticity,
                                  const RigidBody& wedge, Elasticity wedge_elasticity,
                                  const Eigen::Vector2d& point, const Eigen::Vector2d& n) {
-  const ScalarSolution solution =
-      solve(share(bumper, point, n, bumper_elasticity) + share(wedge, point, -n, wedge_elasticity));
-  return {solution, apply_impulse(bumper, point, n, solution.Fdt),
-          apply_impulse(wedge, point, -n, solution.Fdt)};
+  const ArmedShare first = armed_share(bumper, point, n, bumper_elasticity);
+  const ArmedShare second = armed_share(wedge, point, -n, wedge_elasticity);
+  const ScalarSolution solution = solve(first.share + second.share);
+  return {solution, apply_armed(bumper, n, first.arm, solution.Fdt),
+          apply_armed(wedge, -n, second.arm, solution.Fdt)};
 }
 }  // namespace detail
 
