@@ -276,6 +276,24 @@ TEST_CASE("with_elasticity overrides every body's own elasticity", "[scene]") {
   CHECK(at_one.elasticity == 1.0);
 }
 
+TEST_CASE("A world at another elasticity is the scene at that elasticity", "[scene]") {
+  // What sweep does: only the elasticities change (the bodies and contacts were checked once).
+  Scene s = worked_example();
+  s.elasticity.reset();
+  s.bodies[0].elasticity = 2.0;
+  s.bodies[1].elasticity = 1.0;
+  const sc::World world(s);
+  for (const double e : {0.0, 0.5, 1.0, 1.7, 2.0, 3.0}) {
+    CAPTURE(e);
+    const auto by_world = sc::resolve(world.with_elasticity(e));
+    const auto by_scene = sc::solve(sc::with_elasticity(s, e));
+    CHECK(by_world.impulses[0].magnitude == by_scene.impulses[0].magnitude);
+    // (1.3) at one elasticity: Fdt (1 + 1) = e 1.5, so Fdt = 0.75 e.
+    CHECK(by_world.impulses[0].magnitude == Approx(0.75 * e).margin(1e-15));
+  }
+  CHECK_THROWS_WITH(world.with_elasticity(-1), "elasticity: must be finite and at least 0, got -1");
+}
+
 TEST_CASE("Bad scenes are refused with the place, the rule and the value", "[scene][errors]") {
   using Catch::Matchers::Contains;
   const auto refused = [](Scene s) { return sc::solve(s); };
