@@ -155,9 +155,14 @@ inline double normal_velocity(const PointMass& body, const Eigen::Vector2d& n) {
 namespace detail {
 // (1.3) on the cast p_n = p . n for a body and normal already validated; (4.5)/(4.8) with a
 // single contact.
+// `squared` is |n|², the same for the bumper's n and the wedge's -n: a collision computes it once.
+inline ScalarContribution share(const PointMass& body, const Eigen::Vector2d& n, double squared,
+                                Elasticity elasticity) {
+  return {squared / body.mass, elasticity.value() * normal_velocity(body, n)};
+}
 inline ScalarContribution share(const PointMass& body, const Eigen::Vector2d& n,
                                 Elasticity elasticity) {
-  return {n.squaredNorm() / body.mass, elasticity.value() * normal_velocity(body, n)};
+  return share(body, n, n.squaredNorm(), elasticity);
 }
 }  // namespace detail
 
@@ -182,8 +187,9 @@ namespace detail {
 inline Collision collide_checked(const PointMass& bumper, Elasticity bumper_elasticity,
                                  const PointMass& wedge, Elasticity wedge_elasticity,
                                  const Eigen::Vector2d& n) {
-  const ScalarSolution solution =
-      solve(share(bumper, n, bumper_elasticity) + share(wedge, -n, wedge_elasticity));
+  const double squared = n.squaredNorm();
+  const ScalarSolution solution = solve(share(bumper, n, squared, bumper_elasticity) +
+                                        share(wedge, -n, squared, wedge_elasticity));
   return {solution, apply_impulse(bumper, n, solution.Fdt), apply_impulse(wedge, -n, solution.Fdt)};
 }
 }  // namespace detail

@@ -191,16 +191,17 @@ struct ArmedShare {
   ScalarContribution share;
   double arm = 0.0;  // det(r, n)
 };
+// `squared` is |n|², the same for the bumper's n and the wedge's -n: a collision computes it once.
 inline ArmedShare armed_share(const RigidBody& body, const Eigen::Vector2d& point,
-                              const Eigen::Vector2d& n, Elasticity elasticity) {
+                              const Eigen::Vector2d& n, double squared, Elasticity elasticity) {
   const double arm = det(point - body.position, n);  // det(r, n)
-  return {{arm * arm / body.inertia + n.squaredNorm() / body.mass,
+  return {{arm * arm / body.inertia + squared / body.mass,
            elasticity.value() * (body.L * arm / body.inertia + body.p.dot(n) / body.mass)},
           arm};
 }
 inline ScalarContribution share(const RigidBody& body, const Eigen::Vector2d& point,
                                 const Eigen::Vector2d& n, Elasticity elasticity) {
-  return armed_share(body, point, n, elasticity).share;
+  return armed_share(body, point, n, n.squaredNorm(), elasticity).share;
 }
 // The body after the impulse -n Fdt whose lever arm det(r, n) is known: (3.2) with
 // det(r, -n Fdt) = -Fdt det(r, n).
@@ -236,8 +237,9 @@ namespace detail {
 inline Collision collide_checked(const RigidBody& bumper, Elasticity bumper_elasticity,
                                  const RigidBody& wedge, Elasticity wedge_elasticity,
                                  const Eigen::Vector2d& point, const Eigen::Vector2d& n) {
-  const ArmedShare first = armed_share(bumper, point, n, bumper_elasticity);
-  const ArmedShare second = armed_share(wedge, point, -n, wedge_elasticity);
+  const double squared = n.squaredNorm();
+  const ArmedShare first = armed_share(bumper, point, n, squared, bumper_elasticity);
+  const ArmedShare second = armed_share(wedge, point, -n, squared, wedge_elasticity);
   const ScalarSolution solution = solve(first.share + second.share);
   return {solution, apply_armed(bumper, n, first.arm, solution.Fdt),
           apply_armed(wedge, -n, second.arm, solution.Fdt)};
