@@ -10,10 +10,14 @@
 namespace impulse {
 
 UnitNormal::UnitNormal(std::string_view what, const Eigen::Vector2d& direction) : n_(direction) {
-  if (is_unit_normal(direction)) [[likely]] {
+  const double largest = std::fmax(std::abs(direction.x()), std::abs(direction.y()));  // quiet
+  // Squared only where that cannot overflow (a unit vector's largest coordinate is at least
+  // 1/sqrt(2)): a caller that traps floating-point exceptions gets no SIGFPE for [1e300, 0].
+  const bool moderate = std::isgreaterequal(largest, 0.5) && std::islessequal(largest, 2.0);
+  if (moderate && is_unit_normal(direction)) [[likely]] {
+    squared_ = direction.squaredNorm();
     return;  // unit within the tolerance: kept as given
   }
-  const double largest = std::max(std::abs(direction.x()), std::abs(direction.y()));
   if (!all_finite_in(direction) || !std::isgreater(largest, 0.0)) {
     throw InvalidInput(std::string(what) + " must be a finite non-zero vector, got [" +
                        format_number(direction.x()) + ", " + format_number(direction.y()) + "]");
@@ -25,8 +29,8 @@ UnitNormal::UnitNormal(std::string_view what, const Eigen::Vector2d& direction) 
                                std::scalbn(direction.y(), -exponent));
   const double length = std::hypot(scaled.x(), scaled.y());
   n_ = scaled / length;
+  squared_ = n_.squaredNorm();
   given_length_ = std::scalbn(length, exponent);
-  rescaled_ = true;
 }
 
 UnitNormal UnitNormal::from_degrees(double degrees) {
@@ -57,6 +61,7 @@ UnitNormal UnitNormal::from_degrees(double degrees) {
       break;
   }
   normal.n_ += Eigen::Vector2d::Zero();  // -0 becomes +0 (a sine of -0 at a multiple of 90°)
+  normal.squared_ = normal.n_.squaredNorm();
   return normal;
 }
 

@@ -39,17 +39,23 @@ class UnitNormal {
   /// @return n, of length 1 within unit_normal_tolerance
   [[nodiscard]] const Eigen::Vector2d& vector() const { return n_; }
 
+  /// @brief @f$ \|\vec{n}\|^2 @f$, computed once: 1 within about 2e-9 (to rounding for a normal
+  /// that was rescaled or made from an angle). The single-contact formulas divide it by each
+  /// body's mass, as (4.5) writes @f$ \vec{n}\cdot\vec{n}/m @f$.
+  /// @return the squared length of vector()
+  [[nodiscard]] double squared_norm() const { return squared_; }
+
   /// @brief Whether the vector given was not of unit length within unit_normal_tolerance and was
   /// divided by its length.
   /// @return true when the normal is not the vector given
-  [[nodiscard]] bool rescaled() const { return rescaled_; }
+  [[nodiscard]] bool rescaled() const { return given_length_ != 1.0; }
 
-  /// @brief The length of the vector given (1 for an angle).
-  /// @return its Euclidean length
+  /// @brief The length of the vector given (1 for an angle, and for a vector kept as given).
+  /// @return its Euclidean length, or 1
   [[nodiscard]] double given_length() const { return given_length_; }
 
   /// @brief The opposite normal: the other body's, @f$ -\vec{n} @f$.
-  /// @return -n (rescaled() and given_length() as this one's)
+  /// @return -n (squared_norm(), rescaled() and given_length() as this one's)
   [[nodiscard]] UnitNormal operator-() const {
     UnitNormal opposite = *this;
     opposite.n_ = -n_;
@@ -59,8 +65,8 @@ class UnitNormal {
  private:
   UnitNormal() = default;
   Eigen::Vector2d n_ = Eigen::Vector2d::UnitX();
-  double given_length_ = 1.0;
-  bool rescaled_ = false;
+  double squared_ = 1.0;       // |n|², the same for -n
+  double given_length_ = 1.0;  // 1 unless the vector given was rescaled
 };
 
 }  // namespace impulse

@@ -184,10 +184,10 @@ inline PointMass apply_impulse(const PointMass& body, const Eigen::Vector2d& n, 
 namespace detail {
 // The collision of two bodies and a normal already checked: the ⊕ of the two shares, then
 // Fdt = B / A, then each body's update.
+// `squared` is |n|², known beforehand for an impulse::UnitNormal.
 inline Collision collide_checked(const PointMass& bumper, Elasticity bumper_elasticity,
                                  const PointMass& wedge, Elasticity wedge_elasticity,
-                                 const Eigen::Vector2d& n) {
-  const double squared = n.squaredNorm();
+                                 const Eigen::Vector2d& n, double squared) {
   const ScalarSolution solution = solve(share(bumper, n, squared, bumper_elasticity) +
                                         share(wedge, -n, squared, wedge_elasticity));
   return {solution, apply_impulse(bumper, n, solution.Fdt), apply_impulse(wedge, -n, solution.Fdt)};
@@ -203,14 +203,15 @@ inline Collision collide(const PointMass& bumper, Elasticity bumper_elasticity,
   if (!(bumper_ok & wedge_ok & normal_ok)) [[unlikely]] {
     detail::refuse_collision(bumper, wedge, n);  // the checks one by one, with messages
   }
-  return detail::collide_checked(bumper, bumper_elasticity, wedge, wedge_elasticity, n);
+  return detail::collide_checked(bumper, bumper_elasticity, wedge, wedge_elasticity, n,
+                                 n.squaredNorm());
 }
 
 inline Collision collide(const Checked<PointMass>& bumper, Elasticity bumper_elasticity,
                          const Checked<PointMass>& wedge, Elasticity wedge_elasticity,
                          const UnitNormal& n) {
   return detail::collide_checked(bumper.get(), bumper_elasticity, wedge.get(), wedge_elasticity,
-                                 n.vector());
+                                 n.vector(), n.squared_norm());
 }
 
 }  // namespace impulse::material_2d

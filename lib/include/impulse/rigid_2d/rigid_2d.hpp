@@ -234,10 +234,11 @@ inline RigidBody apply_impulse(const RigidBody& body, const Eigen::Vector2d& poi
 namespace detail {
 // Section 3.4 for bodies, point and normal already checked: Fdt (A1 + A2) = B1 + B2, the wedge
 // with its own normal -n, then each body's update.
+// `squared` is |n|², known beforehand for an impulse::UnitNormal.
 inline Collision collide_checked(const RigidBody& bumper, Elasticity bumper_elasticity,
                                  const RigidBody& wedge, Elasticity wedge_elasticity,
-                                 const Eigen::Vector2d& point, const Eigen::Vector2d& n) {
-  const double squared = n.squaredNorm();
+                                 const Eigen::Vector2d& point, const Eigen::Vector2d& n,
+                                 double squared) {
   const ArmedShare first = armed_share(bumper, point, n, squared, bumper_elasticity);
   const ArmedShare second = armed_share(wedge, point, -n, squared, wedge_elasticity);
   const ScalarSolution solution = solve(first.share + second.share);
@@ -258,7 +259,8 @@ inline Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
   if (!(bumper_ok & wedge_ok & point_ok & normal_ok)) [[unlikely]] {
     detail::refuse_collision(bumper, wedge, point, n);
   }
-  return detail::collide_checked(bumper, bumper_elasticity, wedge, wedge_elasticity, point, n);
+  return detail::collide_checked(bumper, bumper_elasticity, wedge, wedge_elasticity, point, n,
+                                 n.squaredNorm());
 }
 
 inline Collision collide(const Checked<RigidBody>& bumper, Elasticity bumper_elasticity,
@@ -268,7 +270,7 @@ inline Collision collide(const Checked<RigidBody>& bumper, Elasticity bumper_ela
     require_finite("point", point);
   }
   return detail::collide_checked(bumper.get(), bumper_elasticity, wedge.get(), wedge_elasticity,
-                                 point, n.vector());
+                                 point, n.vector(), n.squared_norm());
 }
 
 }  // namespace impulse::rigid_2d
