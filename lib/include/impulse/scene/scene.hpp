@@ -144,7 +144,8 @@ class World {
   /// @return its name
   [[nodiscard]] std::string contact_name(Eigen::Index v) const;
   /// @brief The options of the methods: the scene's solver, complementarity and serial options,
-  /// and contact_name() for their sentences.
+  /// and contact_name() for their sentences (which refers to this world: the options are for use
+  /// while it lives).
   /// @return the options
   [[nodiscard]] methods::Options options() const;
   /// @brief The same world with every body colliding at elasticity @p value (the bodies' own
