@@ -282,9 +282,14 @@ std::vector<multipoint::Contact> contacts_of(const Scene& scene, std::vector<std
     const Contact& c = scene.contacts[v];
     const UnitNormal n(c.normal);
     if (n.rescaled()) {
+      // As given (every digit), then the length and the normal used as the report prints numbers.
+      const Vector2d& used = n.vector();
       notes.push_back(member(at("contacts", v), "normal") + " " + show(c.normal, scene.dimension) +
-                      " is not of unit length (length " + format_number(n.given_length()) +
-                      "): used as " + show(n.vector(), scene.dimension));
+                      " is not of unit length (length " + number_text(n.given_length()) +
+                      "): used as " +
+                      (scene.dimension == 1
+                           ? number_text(used.x())
+                           : "[" + number_text(used.x()) + ", " + number_text(used.y()) + "]"));
     }
     result.push_back({c.bumper, c.wedge, n.vector(), c.point.value_or(Vector2d::Zero())});
   }
