@@ -287,10 +287,14 @@ const groups = {
     mkdirSync(screenshots, {recursive: true});
     const presets = presetsOfSite();
     check(presets.length >= 18, 'the page has the presets of the tutorials and labs', presets.length);
-    const wide = await open(browser, '', {width: 1280, height: 800});
-    const narrow = await open(browser, '', {width: 360, height: 740, deviceScaleFactor: 2, mobile: true});
-    for (const preset of presets) {
-      for (const [p, suffix] of [[wide, ''], [narrow, '-360']]) {
+    // One page, in front (a page in the background gets no frames): every preset at 1280×800, then
+    // every preset at the width of a phone.
+    const p = await open(browser, '', {width: 1280, height: 800});
+    const sizes = [[{width: 1280, height: 800}, ''],
+                   [{width: 360, height: 740, deviceScaleFactor: 2, mobile: true}, '-360']];
+    for (const [viewport, suffix] of sizes) {
+      await p.setViewport(viewport);
+      for (const preset of presets) {
         const before = await shown(p);
         await p.evaluate(`(() => { const s = document.getElementById('preset');
                                     s.value = ${JSON.stringify(preset.id)};
@@ -301,19 +305,16 @@ const groups = {
           checkAgainstCommandLine(state, commandLine(join(source, preset.file)), `preset ${preset.id}`);
           check(JSON.stringify(JSON.parse(sceneOfHash(state.hash))) === JSON.stringify(preset.scene),
                 `preset ${preset.id}: the address holds its scene`);
-          // MathJax typesets in its own time: the shot waits for it (up to 8 contacts).
-          await p.waitFor(`!window.MathJax || !MathJax.Hub || document.querySelector('#system-equation svg') ||
-                           document.querySelector('#system-equation table')`);
         }
+        // MathJax typesets in its own time: the shot waits for it (up to 8 contacts; a table beyond).
+        await p.waitFor(`document.querySelector('#system-equation svg') || document.querySelector('#system-equation table')`);
         const width = await p.evaluate('document.documentElement.scrollWidth');
-        check(width <= (suffix ? 360 : 1280), `preset ${preset.id}${suffix}: nothing wider than the window`, width);
+        check(width <= viewport.width, `preset ${preset.id}${suffix}: nothing wider than the window`, width);
         await p.screenshot(join(screenshots, `${preset.id}${suffix}.png`), writeFile);
       }
+      await p.fullScreenshot(join(screenshots, `page-full${suffix || '-1280'}.png`), writeFile);
     }
-    await wide.fullScreenshot(join(screenshots, 'page-full-1280.png'), writeFile);
-    await narrow.fullScreenshot(join(screenshots, 'page-full-360.png'), writeFile);
-    checkClean(wide, 'presets at 1280×800');
-    checkClean(narrow, 'presets at 360 px');
+    checkClean(p, 'presets');
   },
 
   async scenes(browser) {
@@ -380,6 +381,7 @@ const groups = {
           'the shared link shows the same controls');
     checkClean(shared, 'shared link');
     await shared.close();
+    await p.send('Page.bringToFront');
 
     // The velocity of ball 1 dragged on the canvas: its handle, 40 px to the left.
     await p.evaluate('document.getElementById("view").scrollIntoView()');
@@ -482,6 +484,14 @@ const groups = {
       const state = await pageState(p);
       check(state.error === '' && state.result !== '', `${file}: its "try it" link opens its scene`, state.error);
       checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(hash)), `try it from ${file}`);
+    }
+    // The page's own links to the paper's equations on the section pages land on their anchors.
+    const equations = await p.evaluate(`[...document.querySelectorAll('#system-source a')].map((a) => a.getAttribute('href'))`);
+    check(equations.length >= 7, 'the page links to the equations (1.3) to (5.5)', equations.join(' '));
+    for (const href of equations) {
+      const [file, anchor] = href.split('#');
+      const html = existsSync(join(site, file)) ? readFileSync(join(site, file), 'utf8') : '';
+      check(html.includes(`id="${anchor}"`), `the link ${href} lands on its equation`);
     }
     checkClean(p, 'links');
   },
