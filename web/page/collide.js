@@ -127,13 +127,16 @@
     lastHash: '',
     fragmentTimer: 0,
     lastFragmentWrite: 0,
+    phases: {},    // where the last update's time went (for web/test/measure.mjs)
   };
 
   // ---------------------------------------------------------------------------------------------
   // Solving: every scene goes through the library, and only through it.
 
   function solve(input) {
+    const started = performance.now();
     const out = state.module.solveScene(input);
+    state.phases.library = performance.now() - started;
     return {
       error: out.error,
       warnings: out.warnings,
@@ -152,6 +155,7 @@
   // scene (controls rebuilt, view fitted); @p options.event: the input event that caused it.
   function show(input, options) {
     const started = performance.now();
+    state.phases = {};
     if (typeof input === 'string') {
       state.text = input;
       state.bytes = null;
@@ -175,20 +179,23 @@
     const solveEnd = performance.now();
     state.result = state.out.result;
     state.details = state.out.details;
-    if (options.relayout || !state.frozen) {
-      state.layout = state.details ? layout(state.scene, state.details) : null;
-    } else {
-      state.layout = layout(state.scene, state.details, state.frozen);
-    }
+    timed('layout', () => {
+      state.layout = !state.details ? null
+                   : options.relayout || !state.frozen ? layout(state.scene, state.details)
+                   : layout(state.scene, state.details, state.frozen);
+    });
     if (options.relayout) {
       buildBodyControls();
     }
     render();
-    writeFragment(Boolean(options.immediate));
+    timed('address', () => writeFragment(Boolean(options.immediate)));
     state.shown += 1;
     document.body.dataset.shown = String(state.shown);
     document.body.dataset.ready = 'true';
     const rendered = performance.now();
+    if (window.impulselabReadyMs === undefined) {
+      window.impulselabReadyMs = rendered;  // since the page began to load (for web/test/measure.mjs)
+    }
     const since = options.event ? options.event.timeStamp : started;
     requestAnimationFrame(() => {
       window.impulselabTiming = {
@@ -196,6 +203,7 @@
         update_ms: rendered - since,
         frame_ms: performance.now() - since,
         contacts: state.result ? state.result.contacts.length : 0,
+        phases: state.phases,
       };
     });
   }
@@ -218,27 +226,24 @@
   // ---------------------------------------------------------------------------------------------
   // The address.
 
-  function currentBytes() {
-    return state.bytes !== null ? state.bytes : new TextEncoder().encode(state.text);
-  }
-
   function writeFragment(immediate) {
     clearTimeout(state.fragmentTimer);
     const write = () => {
-      const hash = fragmentKey + encodeBytes(currentBytes());
+      // encodeURIComponent writes UTF-8 text as the contract says; bytes that are not UTF-8 each
+      // as %XX.
+      const hash = fragmentKey + (state.bytes !== null ? encodeBytes(state.bytes) : encodeURIComponent(state.text));
       state.lastHash = hash;
       state.lastFragmentWrite = performance.now();
       if (location.hash !== hash) {
         history.replaceState(null, '', hash);
       }
     };
-    // A slider dragged across writes the address at most every 150 ms (browsers throttle
-    // history changes); the last position is always written.
-    const wait = 150 - (performance.now() - state.lastFragmentWrite);
-    if (immediate || wait <= 0) {
+    // A slider dragged across writes the address after the result is drawn, at most every 150 ms
+    // (browsers throttle changes of the history); the last position is always written.
+    if (immediate) {
       write();
     } else {
-      state.fragmentTimer = setTimeout(write, wait);
+      state.fragmentTimer = setTimeout(write, Math.max(0, 150 - (performance.now() - state.lastFragmentWrite)));
     }
   }
 
@@ -394,7 +399,7 @@
       group.forEach((v, k) => {
         const c = contacts[v];
         const m = drawn[c.bumper].kind === 'material' ? c.bumper : c.wedge;
-        const angle = (k - (group.length - 1) / 2) * 0.6;
+        const angle = (k - (group.length - 1) / 2) * 1.4 / Math.max(1, group.length - 1);
         points[v] = add(drawn[m].centre, rotate(sub(points[v], drawn[m].centre), angle));
       });
     }
@@ -446,7 +451,8 @@
         if (drawn[s].kind !== 'static') {
           continue;
         }
-        const reach = Math.max(drawn[other].radius, 0.3) * 1.3;
+        const shared = contacts.filter((o) => o.bumper === other || o.wedge === other).length;
+        const reach = Math.max(drawn[other].radius, 0.3) * (shared > 1 && drawn[other].kind === 'material' ? 0.35 : 1.3);
         let surface = surfaces.find((f) => f.body === s && Math.abs(dot(f.outward, outward) - 1) < 1e-9 &&
                                            Math.abs(dot(sub(points[v], f.through), outward)) < 1e-6);
         const tangent = [-outward[1], outward[0]];
@@ -483,10 +489,10 @@
       spinFastest = Math.max(spinFastest, Math.abs(motion[i].spinBefore), Math.abs(motion[i].spinAfter));
     }
     const scales = frozen ? frozen.scales : {
-      // The largest velocity arrow is twice the typical size; the window of the animation lets
-      // the fastest point travel three typical sizes each way.
-      arrow: fastest > 0 ? 2 * typical / fastest : 1,
-      window: fastest > 0 ? 3 * typical / fastest : 1,
+      // The largest velocity arrow is 1.5 times the typical size; the window of the animation
+      // lets the fastest point travel two typical sizes each way.
+      arrow: fastest > 0 ? 1.5 * typical / fastest : 1,
+      window: fastest > 0 ? 2 * typical / fastest : 1,
       spin: spinFastest > 0 ? Math.min(0.6, 0.75 * Math.PI / spinFastest) : 0.6,
     };
 
@@ -518,7 +524,7 @@
       if (d.kind === 'static') {
         return;
       }
-      const reach = d.kind === 'rigid' ? d.radius * 1.3 : d.radius;
+      const reach = d.radius;
       for (const t of [-T, 0, T]) {
         take(placeAt(l, i, t).centre, reach);
       }
@@ -587,6 +593,18 @@
     context.restore();
   }
 
+  // Text with a white rim, readable over lines and bodies.
+  function halo(text, x, y, style = '#1d2430') {
+    context.save();
+    context.lineJoin = 'round';
+    context.strokeStyle = 'rgba(255, 255, 255, 0.9)';
+    context.lineWidth = 3 * devicePixelRatio;
+    context.strokeText(text, x, y);
+    context.fillStyle = style;
+    context.fillText(text, x, y);
+    context.restore();
+  }
+
   function draw() {
     const dpr = devicePixelRatio;
     context.setTransform(1, 0, 0, 1, 0, 0);
@@ -634,8 +652,8 @@
       context.fillStyle = '#4a5260';
       context.font = `${12 * dpr}px system-ui, sans-serif`;
       context.textAlign = 'center';
-      const label = view.to(add(s.through, add(mul(tangent, s.to * 0.7), mul(s.outward, -0.25 * l.typical))));
-      context.fillText(name, label[0], label[1] + 4 * dpr);
+      const middle = view.to(add(s.through, mul(tangent, (s.from + s.to) / 2)));
+      halo(name, middle[0] + inward[0] * 22 * dpr, middle[1] + inward[1] * 22 * dpr + 4 * dpr);
     }
 
     // Bodies.
@@ -671,12 +689,13 @@
       context.beginPath();
       context.arc(c[0], c[1], 2.5 * dpr, 0, 2 * Math.PI);
       context.fill();
-      context.fillStyle = '#1d2430';
       context.font = `${12 * dpr}px system-ui, sans-serif`;
       context.textAlign = 'center';
-      const labelAt = d.kind === 'material' ? c[1] + px(d.radius) + 14 * dpr
-                                            : c[1] + px(d.radius) * 1.3 + 14 * dpr;
-      context.fillText(d.name, c[0], labelAt);
+      // The name inside the body when it fits, else under it.
+      const inside = d.kind === 'rigid' ? 2 * px(Math.min(d.shape.hx, d.shape.hy)) > 14 * dpr
+                                        : 2 * px(d.radius) > context.measureText(d.name).width + 6 * dpr;
+      const below = d.kind === 'material' ? px(d.radius) : px(Math.hypot(d.shape.hx, d.shape.hy));
+      halo(d.name, c[0], inside ? c[1] - 6 * dpr : c[1] + below + 14 * dpr);
     });
 
     // Contacts: the point, the normal (outward from the bumper), the impulse's size.
@@ -690,11 +709,16 @@
       context.arc(p[0], p[1], 3.5 * dpr, 0, 2 * Math.PI);
       context.fill();
       const magnitude = impulses[v] ? impulses[v].magnitude : NaN;
-      context.fillStyle = magnitude < 0 ? '#b42318' : '#1d2430';
-      context.font = `${11 * dpr}px system-ui, sans-serif`;
-      context.textAlign = 'left';
       if (l.contacts.length <= 12) {
-        context.fillText(`${v}: Fdt ${num(magnitude)}`, tip[0] + 4 * dpr, tip[1]);
+        // Beside the normal's tip; for a normal across the screen (a row of balls), above the
+        // bodies instead, where the next body does not hide it.
+        const across = Math.abs(c.normal[1]) < 0.7;
+        const reach = Math.max(l.drawn[c.bumper].radius, l.drawn[c.wedge].radius);
+        const at = across ? view.to(add(l.points[v], [0, reach])) : tip;
+        context.font = `${11 * dpr}px system-ui, sans-serif`;
+        context.textAlign = across ? 'center' : 'left';
+        halo(`${v}: Fdt ${num(magnitude)}`, across ? at[0] : at[0] + 4 * dpr,
+             across ? at[1] - 8 * dpr - (v % 2) * 13 * dpr : at[1], magnitude < 0 ? '#b42318' : '#1d2430');
       }
     });
 
@@ -724,8 +748,8 @@
         handles.push({kind: 'velocity', body: i, at: handle});
       }
       if (d.kind === 'rigid') {
-        const ring = px(d.radius) * 1.3;
-        context.strokeStyle = '#9aa3b0';
+        const ring = px(d.radius) * 0.8;
+        context.strokeStyle = 'rgba(154, 163, 176, 0.55)';
         context.lineWidth = 1 * dpr;
         context.beginPath();
         context.arc(c[0], c[1], ring, 0, 2 * Math.PI);
@@ -878,6 +902,7 @@
     if (!state.playing) {
       return;
     }
+    const started = performance.now();
     const elapsed = Math.min(0.1, (now - state.lastFrame) / 1000);
     state.lastFrame = now;
     // The whole window (-T .. T) takes 3 s, or 15 s in slow motion.
@@ -887,6 +912,7 @@
       t = -1;
     }
     setTime(t);
+    window.impulselabFrameMs = performance.now() - started;  // the cost of one frame's drawing
     requestAnimationFrame(frame);
   }
 
@@ -966,10 +992,11 @@
       slider,
       refresh(scene) {
         const value = spec.value(scene);
-        if (document.activeElement !== input && value !== undefined) {
+        if (document.activeElement !== input && value !== undefined && input.value !== String(value)) {
           input.value = String(value);
         }
-        if (slider && document.activeElement !== slider && typeof value === 'number' && isFinite(value)) {
+        if (slider && document.activeElement !== slider && typeof value === 'number' && isFinite(value) &&
+            slider.value !== String(toSlider(value))) {
           slider.value = String(toSlider(value));
         }
       },
@@ -1246,6 +1273,52 @@
     return dim === 1 ? num(x[0], scale) : `[${num(x[0], scale)}, ${num(x[1], scale)}]`;
   }
 
+  // Fills @p table: @p head the header cells ([text, class]), @p rows arrays of cells (a text, or
+  // {text, cls, colour}). The cells are rebuilt only when the table's shape changes; otherwise only
+  // the texts that changed are written, so that a control moved on a scene of a hundred contacts
+  // does not rebuild a thousand cells.
+  function fillTable(table, head, rows) {
+    const shape = `${head.map((h) => h[0]).join('|')}#${rows.length}`;
+    if (table.dataset.shape !== shape) {
+      table.dataset.shape = shape;
+      table.textContent = '';
+      const thead = table.createTHead().insertRow();
+      for (const [text, cls] of head) {
+        const th = document.createElement('th');
+        th.textContent = text;
+        if (cls) {
+          th.className = cls;
+        }
+        thead.appendChild(th);
+      }
+      const body = table.createTBody();
+      for (let r = 0; r < rows.length; ++r) {
+        const tr = body.insertRow();
+        for (let c = 0; c < head.length; ++c) {
+          tr.insertCell();
+        }
+      }
+    }
+    const body = table.tBodies[0];
+    rows.forEach((row, r) => {
+      const cells = body.rows[r].cells;
+      row.forEach((cell, c) => {
+        const value = typeof cell === 'object' ? cell : {text: cell};
+        const td = cells[c];
+        if (td.textContent !== value.text) {
+          td.textContent = value.text;
+        }
+        const cls = value.cls || '';
+        if (td.className !== cls) {
+          td.className = cls;
+        }
+        if (value.colour && td.style.getPropertyValue('--colour') !== value.colour) {
+          td.style.setProperty('--colour', value.colour);
+        }
+      });
+    });
+  }
+
   function renderTables() {
     const r = state.result;
     const d = state.details;
@@ -1253,61 +1326,58 @@
     const bodiesTable = $('bodies-table');
     const contactsTable = $('contacts-table');
     if (!r || !d) {
-      impulses.innerHTML = bodiesTable.innerHTML = contactsTable.innerHTML = '';
+      for (const table of [impulses, bodiesTable, contactsTable]) {
+        table.textContent = '';
+        delete table.dataset.shape;
+      }
       $('summary').textContent = '';
       return;
     }
     const dim = d.dimension;
     const largestImpulse = Math.max(0, ...r.impulses.map((i) => Math.abs(i.magnitude)));
-    let html = '<thead><tr><th>contact</th><th class="name">bumper → wedge</th>' +
-               '<th>F dt</th><th>on the bumper</th></tr></thead><tbody>';
-    for (const i of r.impulses) {
-      const pulls = i.magnitude < -1e-12 * largestImpulse;
-      html += `<tr><td>${i.contact}</td><td class="name">${escapeHtml(i.bumper)} → ${escapeHtml(i.wedge)}</td>` +
-              `<td class="${pulls ? 'pulls' : ''}">${num(i.magnitude, largestImpulse)}${pulls ? ' (pulls)' : ''}</td>` +
-              `<td>${vectorText(i.on_bumper, dim, largestImpulse)}</td></tr>`;
-    }
-    impulses.innerHTML = html + '</tbody>';
+    fillTable(impulses, [['contact'], ['bumper → wedge', 'name'], ['F dt'], ['on the bumper']],
+              r.impulses.map((i) => {
+                const pulls = i.magnitude < -1e-12 * largestImpulse;
+                return [String(i.contact), {text: `${i.bumper} → ${i.wedge}`, cls: 'name'},
+                        {text: num(i.magnitude, largestImpulse) + (pulls ? ' (pulls)' : ''), cls: pulls ? 'pulls' : ''},
+                        vectorText(i.on_bumper, dim, largestImpulse)];
+              }));
 
     const speeds = d.bodies.flatMap((b) => [norm(vec(b.before.velocity)), norm(vec(b.after.velocity))]);
     const largestSpeed = Math.max(0, ...speeds);
+    const largestMomentum = Math.max(0, ...d.bodies.map((b) => norm(vec(b.after.momentum))));
     const rigid = d.bodies.some((b) => b.kind === 'rigid');
-    html = '<thead><tr><th class="name">body</th><th>velocity before</th><th>after</th>' +
-           (rigid ? '<th>spin before</th><th>after</th>' : '') +
-           '<th>momentum after</th></tr></thead><tbody>';
-    d.bodies.forEach((b, i) => {
-      const isRigid = b.kind === 'rigid';
-      html += `<tr><td class="name"><span style="color:${colour(i)}">●</span> ${escapeHtml(b.name)}` +
-              `${b.kind === 'static' ? ' (static)' : ''}</td>` +
-              `<td>${vectorText(b.before.velocity, dim, largestSpeed)}</td>` +
-              `<td>${vectorText(b.after.velocity, dim, largestSpeed)}</td>` +
-              (rigid ? `<td>${isRigid ? num(b.before.angular_velocity) : ''}</td>` +
-                       `<td>${isRigid ? num(b.after.angular_velocity, Math.abs(b.before.angular_velocity) + Math.abs(b.after.angular_velocity)) : ''}</td>`
-                     : '') +
-              `<td>${vectorText(b.after.momentum, dim, largestSpeed)}</td></tr>`;
-    });
-    bodiesTable.innerHTML = html + '</tbody>';
+    const largestSpin = Math.max(0, ...d.bodies.flatMap((b) => [Math.abs(b.before.angular_velocity), Math.abs(b.after.angular_velocity)]));
+    fillTable(bodiesTable,
+              [['body', 'name'], ['velocity before'], ['after'],
+               ...(rigid ? [['spin before'], ['after']] : []), ['momentum after']],
+              d.bodies.map((b, i) => {
+                const spins = b.kind === 'rigid' ? [num(b.before.angular_velocity, largestSpin), num(b.after.angular_velocity, largestSpin)] : ['', ''];
+                return [{text: b.name + (b.kind === 'static' ? ' (static)' : ''), cls: 'name body', colour: colour(i)},
+                        vectorText(b.before.velocity, dim, largestSpeed), vectorText(b.after.velocity, dim, largestSpeed),
+                        ...(rigid ? spins : []), vectorText(b.after.momentum, dim, largestMomentum)];
+              }));
 
     const largestApproach = Math.max(0, ...r.contacts.flatMap((c) => [Math.abs(c.approach_before), Math.abs(c.approach_after)]));
-    html = '<thead><tr><th>contact</th><th>before</th><th>after</th><th class="name"></th></tr></thead><tbody>';
-    for (const c of r.contacts) {
-      const after = Math.abs(c.approach_after) <= 1e-12 * largestApproach ? 0 : c.approach_after;
-      const word = after > 0 ? 'still closing' : after < 0 ? 'separating' : 'sliding apart at 0';
-      html += `<tr><td>${c.contact}</td><td>${num(c.approach_before, largestApproach)}</td>` +
-              `<td>${num(c.approach_after, largestApproach)}</td><td class="name">${word}</td></tr>`;
-    }
-    contactsTable.innerHTML = html + '</tbody>';
+    fillTable(contactsTable, [['contact'], ['before'], ['after'], ['', 'name']],
+              r.contacts.map((c) => {
+                const after = Math.abs(c.approach_after) <= 1e-12 * largestApproach ? 0 : c.approach_after;
+                const word = after > 0 ? 'still closing' : after < 0 ? 'separating' : 'neither';
+                return [String(c.contact), num(c.approach_before, largestApproach),
+                        num(c.approach_after, largestApproach), {text: word, cls: 'name'}];
+              }));
 
     const method = r.method || 'simultaneous';
     const methodName = {simultaneous: 'the paper\'s system', complementarity: 'complementarity',
                         serial: 'serial collisions'}[method];
     const p = r.momentum;
-    $('summary').innerHTML =
-        `Method: ${methodName}. Kinetic energy ${num(r.energy.before)} → ${num(r.energy.after)} ` +
-        `(change ${num(r.energy.change, r.energy.before)}). Momentum ${vectorText(p.before, dim, norm(vec(p.before)) + norm(vec(p.after)))} → ` +
-        `${vectorText(p.after, dim, norm(vec(p.before)) + norm(vec(p.after)))}.` +
+    const momentumScale = norm(vec(p.before)) + norm(vec(p.after));
+    $('summary').textContent =
+        `Method: ${methodName}. Kinetic energy ${num(r.energy.before)} → ${num(r.energy.after, r.energy.before)} ` +
+        `(change ${num(r.energy.change, r.energy.before)}). Momentum ${vectorText(p.before, dim, momentumScale)} → ` +
+        `${vectorText(p.after, dim, momentumScale)}.` +
         (r.serial ? ` ${r.serial.collisions} collisions in ${r.serial.passes} passes.` : '') +
-        (r.complementarity ? ` Algorithm: ${escapeHtml(r.complementarity.algorithm)}, ${r.complementarity.iterations} iterations.` : '');
+        (r.complementarity ? ` Algorithm: ${r.complementarity.algorithm}, ${r.complementarity.iterations} iterations.` : '');
   }
 
   const svgNS = 'http://www.w3.org/2000/svg';
@@ -1377,37 +1447,43 @@
         }
       }
     }
-    const size = 240;
+    const size = 200;
     const pad = 18;
     const spanX = Math.max(box2[2] - box2[0], 1e-300);
     const spanY = d.dimension === 1 ? Math.max(box2[3] - box2[1], 1) : Math.max(box2[3] - box2[1], 1e-300);
     const scale = d.dimension === 1 ? (size - 2 * pad) / spanX : (size - 2 * pad) / Math.max(spanX, spanY);
     const rowHeight = d.dimension === 1 ? Math.min(18, (size - 2 * pad) / (movable.length + 1)) : 0;
-    const height = d.dimension === 1 ? 2 * pad + rowHeight * (movable.length + 1) : size;
+    const height = d.dimension === 1 ? 2 * pad + rowHeight * (movable.length + 1)
+                                     : Math.max(60, (box2[3] - box2[1]) * scale + 2 * pad);
     const toScreen = (p, panel) => d.dimension === 1
         ? [panel * (size + 20) + pad + (p[0] - box2[0]) * scale, pad + (-p[1]) * rowHeight]
-        : [panel * (size + 20) + pad + (p[0] - box2[0]) * scale, pad + (box2[3] - p[1]) * scale];
+        : [panel * (size + 20) + pad + (p[0] - box2[0]) * scale,
+           height / 2 + ((box2[3] + box2[1]) / 2 - p[1]) * scale];
     let svg = `<svg xmlns="${svgNS}" viewBox="0 0 ${2 * size + 20} ${height + 16}" role="img" ` +
               'aria-label="Momentum of each body, tip to tail, before and after">' +
-              '<defs><marker id="tip" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" markerHeight="7" ' +
-              'orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="context-stroke"/></marker></defs>';
+              '<defs><marker id="tip" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="10" markerHeight="10" ' +
+              'markerUnits="userSpaceOnUse" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" ' +
+              'fill="context-stroke"/></marker><marker id="total-tip" viewBox="0 0 10 10" refX="9" refY="5" ' +
+              'markerWidth="16" markerHeight="16" markerUnits="userSpaceOnUse" orient="auto-start-reverse">' +
+              '<path d="M0,0 L10,5 L0,10 z" fill="#8e949c"/></marker></defs>';
     chains.forEach((chain, panel) => {
       const origin = toScreen([0, 0], panel);
       svg += `<text x="${panel * (size + 20) + 4}" y="${height + 12}">${panel ? 'after' : 'before'}</text>`;
       svg += `<line x1="${origin[0]}" y1="0" x2="${origin[0]}" y2="${height}" stroke="#c9d0da"/>`;
-      for (const part of chain.parts) {
-        const a = toScreen(part.from, panel);
-        const b = toScreen(part.to, panel);
-        if (Math.hypot(b[0] - a[0], b[1] - a[1]) > 0.5) {
-          svg += `<line x1="${a[0].toFixed(2)}" y1="${a[1].toFixed(2)}" x2="${b[0].toFixed(2)}" y2="${b[1].toFixed(2)}" ` +
-                 `stroke="${colour(part.i)}" stroke-width="2.5" marker-end="url(#tip)"/>`;
-        }
-      }
+      // The total first, wide and pale, so that the bodies' arrows stay visible on top of it.
       const a = toScreen(d.dimension === 1 ? [0, chain.total[1]] : [0, 0], panel);
       const b = toScreen(chain.total, panel);
       if (Math.hypot(b[0] - a[0], b[1] - a[1]) > 0.5) {
         svg += `<line x1="${a[0].toFixed(2)}" y1="${a[1].toFixed(2)}" x2="${b[0].toFixed(2)}" y2="${b[1].toFixed(2)}" ` +
-               'stroke="#1d2430" stroke-width="4" marker-end="url(#tip)"/>';
+               'stroke="#8e949c" stroke-width="7" marker-end="url(#total-tip)"/>';
+      }
+      for (const part of chain.parts) {
+        const from = toScreen(part.from, panel);
+        const to = toScreen(part.to, panel);
+        if (Math.hypot(to[0] - from[0], to[1] - from[1]) > 0.5) {
+          svg += `<line x1="${from[0].toFixed(2)}" y1="${from[1].toFixed(2)}" x2="${to[0].toFixed(2)}" y2="${to[1].toFixed(2)}" ` +
+                 `stroke="${colour(part.i)}" stroke-width="2.5" marker-end="url(#tip)"/>`;
+        }
       }
     });
     box.innerHTML = svg + '</svg>';
@@ -1471,18 +1547,40 @@
       box.appendChild(script);
       window.MathJax.Hub.Queue(['Typeset', window.MathJax.Hub, box]);
     } else {
-      let html = '<table class="matrix" aria-label="The system: each row of A, its impulse and its B">' +
-                 '<thead><tr><th>v</th>' + (s.A ? `<th colspan="${n}">row v of A</th>` : '') +
-                 '<th>F<sub>v</sub> dt</th><th>B<sub>v</sub></th></tr></thead><tbody>';
-      const rows = Math.min(n, 200);
-      for (let v = 0; v < rows; ++v) {
-        html += `<tr><td>${v}</td>` + (s.A ? s.A[v].map((x) => `<td>${num(x, scaleA)}</td>`).join('') : '') +
-                `<td>${num(fdt[v], scaleF)}</td><td>${num(s.B[v], scaleB)}</td></tr>`;
+      // Too big to typeset: A as a picture (blue positive, red negative, white zero: a cradle's
+      // band, a stack's blocks), and the first rows of F dt and B as a table.
+      if (!box.querySelector('canvas.matrix-map')) {
+        box.innerHTML = '<canvas class="matrix-map" role="img"></canvas><div class="table-box">' +
+                        '<table id="system-table" aria-label="The impulses and B, row by row"></table></div>';
       }
-      if (rows < n) {
-        html += `<tr><td colspan="${(s.A ? n : 0) + 3}">… ${n - rows} more rows in the JSON below</td></tr>`;
+      const map = box.querySelector('canvas.matrix-map');
+      if (s.A) {
+        const cell = Math.max(1, Math.floor(240 / n));
+        map.width = map.height = cell * n;
+        map.hidden = false;
+        map.setAttribute('aria-label', `A, ${n} by ${n}: blue positive entries, red negative, white zero`);
+        const g = map.getContext('2d');
+        g.fillStyle = '#fff';
+        g.fillRect(0, 0, map.width, map.height);
+        for (let v = 0; v < n; ++v) {
+          for (let j = 0; j < n; ++j) {
+            const x = s.A[v][j];
+            if (Math.abs(x) > 1e-12 * scaleA) {
+              const strength = Math.min(1, Math.abs(x) / scaleA);
+              g.fillStyle = x > 0 ? `rgba(31, 95, 174, ${0.15 + 0.85 * strength})` : `rgba(180, 35, 24, ${0.15 + 0.85 * strength})`;
+              g.fillRect(j * cell, v * cell, cell, cell);
+            }
+          }
+        }
+      } else {
+        map.hidden = true;
       }
-      box.innerHTML = html + '</tbody></table>';
+      const rows = Math.min(n, 20);
+      const table = box.querySelector('table');
+      fillTable(table, [['v'], ['F_v dt'], ['B_v']],
+                [...Array(rows).keys()].map((v) => [String(v), num(fdt[v], scaleF), num(s.B[v], scaleB)]));
+      (table.caption || table.createCaption()).textContent =
+          rows < n ? `The first ${rows} of ${n} rows (all of them in the JSON below)` : '';
     }
     const method = r.method || 'simultaneous';
     facts.innerHTML =
@@ -1500,6 +1598,12 @@
         'the elasticity e of each body scales its share of B (1 inelastic, 2 elastic).';
   }
 
+  function timed(name, work) {
+    const started = performance.now();
+    work();
+    state.phases[name] = (state.phases[name] || 0) + performance.now() - started;
+  }
+
   function render() {
     const out = state.out;
     $('scene-error').textContent = out ? out.error : '';
@@ -1509,12 +1613,12 @@
     if (out && out.error && state.scene === null) {
       $('scene-text-box').open = true;
     }
-    syncControls();
-    renderTables();
-    renderEnergy();
-    renderMomentum();
-    renderSystem();
-    setTime(state.t);
+    timed('controls', syncControls);
+    timed('tables', renderTables);
+    timed('energy', renderEnergy);
+    timed('momentum', renderMomentum);
+    timed('system', renderSystem);
+    timed('canvas', () => setTime(state.t));
   }
 
   // For the browser tests: where the handles are drawn, in the window's coordinates.
