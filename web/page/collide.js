@@ -84,8 +84,13 @@
     if (x === 0) {
       return '0';
     }
-    const text = Number(x.toPrecision(6)).toString();
-    return text.replace('e+', 'e');
+    // As printf's %g: six significant digits, exponential below 1e-4 and from 1e6 on.
+    const exponent = Math.floor(Math.log10(Math.abs(Number(x.toPrecision(6)))));
+    if (exponent < -4 || exponent >= 6) {
+      const [mantissa, power] = x.toExponential(5).split('e');
+      return `${Number(mantissa)}e${power.replace('+', '')}`;
+    }
+    return String(Number(x.toPrecision(6)));
   }
 
   const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
