@@ -664,8 +664,10 @@
       context.fillStyle = '#4a5260';
       context.font = `${12 * dpr}px system-ui, sans-serif`;
       context.textAlign = 'center';
-      const middle = view.to(add(s.through, mul(tangent, (s.from + s.to) / 2)));
-      halo(name, middle[0] + inward[0] * 22 * dpr, middle[1] + inward[1] * 22 * dpr + 4 * dpr);
+      // The name near one end, inside the body, where the bodies on it do not cover it.
+      const end = Math.abs(b[0] - a[0]) >= Math.abs(b[1] - a[1]) ? (b[0] > a[0] ? b : a) : (b[1] > a[1] ? b : a);
+      context.textAlign = 'right';
+      halo(name, end[0] + inward[0] * 22 * dpr, end[1] + inward[1] * 22 * dpr + 4 * dpr);
     }
 
     // Bodies.
