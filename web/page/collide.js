@@ -709,7 +709,9 @@
       const inside = d.kind === 'rigid' ? 2 * px(Math.min(d.shape.hx, d.shape.hy)) > 14 * dpr
                                         : 2 * px(d.radius) > context.measureText(d.name).width + 6 * dpr;
       const below = d.kind === 'material' ? px(d.radius) : px(Math.hypot(d.shape.hx, d.shape.hy));
-      halo(d.name, c[0], inside ? c[1] - 6 * dpr : c[1] + below + 14 * dpr);
+      if (l.drawn.length <= 30) {  // beyond, the names would cover each other: the tables have them
+        halo(d.name, c[0], inside ? c[1] - 6 * dpr : c[1] + below + 14 * dpr);
+      }
     });
 
     // Contacts: the point, the normal (outward from the bumper), the impulse's size.
@@ -1171,12 +1173,18 @@
     const preset = $('preset');
     const id = matchingPreset();
     preset.value = id;
-    if (document.activeElement !== $('scene-text')) {
+    fillSceneText();
+  }
+
+  // The scene's text in the editor, while the editor is open (a closed one is filled when opened).
+  function fillSceneText() {
+    if ($('scene-text-box').open && document.activeElement !== $('scene-text')) {
       $('scene-text').value = state.bytes !== null ? new TextDecoder().decode(state.bytes)
                             : state.fromControls && state.scene ? JSON.stringify(state.scene, null, 2)
                             : state.text;
     }
   }
+  $('scene-text-box').addEventListener('toggle', fillSceneText);
 
   function setSolver(key, value, fallback) {
     edit((scene) => {
@@ -1291,7 +1299,10 @@
   // {text, cls, colour}). The cells are rebuilt only when the table's shape changes; otherwise only
   // the texts that changed are written, so that a control moved on a scene of a hundred contacts
   // does not rebuild a thousand cells.
-  function fillTable(table, head, rows) {
+  function fillTable(table, head, allRows, what) {
+    // A table shows its first 25 rows (a person reads no more; a change then redraws a few
+    // hundred cells, not thousands): the JSON below has them all.
+    const rows = allRows.slice(0, 25);
     const shape = `${head.map((h) => h[0]).join('|')}#${rows.length}`;
     if (table.dataset.shape !== shape) {
       table.dataset.shape = shape;
@@ -1311,6 +1322,14 @@
         for (let c = 0; c < head.length; ++c) {
           tr.insertCell();
         }
+      }
+    }
+    const note = rows.length < allRows.length
+                     ? `The first ${rows.length} of ${allRows.length} ${what || 'rows'} (all of them in the JSON below)` : '';
+    if (note || table.caption) {
+      const caption = table.caption || table.createCaption();
+      if (caption.textContent !== note) {
+        caption.textContent = note;
       }
     }
     const body = table.tBodies[0];
@@ -1589,12 +1608,8 @@
       } else {
         map.hidden = true;
       }
-      const rows = Math.min(n, 20);
-      const table = box.querySelector('table');
-      fillTable(table, [['v'], ['F_v dt'], ['B_v']],
-                [...Array(rows).keys()].map((v) => [String(v), num(fdt[v], scaleF), num(s.B[v], scaleB)]));
-      (table.caption || table.createCaption()).textContent =
-          rows < n ? `The first ${rows} of ${n} rows (all of them in the JSON below)` : '';
+      fillTable(box.querySelector('table'), [['v'], ['F_v dt'], ['B_v']],
+                [...Array(n).keys()].map((v) => [String(v), num(fdt[v], scaleF), num(s.B[v], scaleB)]));
     }
     const method = r.method || 'simultaneous';
     facts.innerHTML =
