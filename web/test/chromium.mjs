@@ -209,13 +209,16 @@ export class Page {
     await writeFile(file, Buffer.from(data, 'base64'));
   }
 
-  async fullScreenshot(file, writeFile) {
+  // The whole page: the window made as tall as the page for the shot, so that what is drawn only
+  // near the window (content-visibility: auto) is drawn; then the window as it was.
+  async fullScreenshot(file, writeFile, viewport) {
     const {cssContentSize} = await this.send('Page.getLayoutMetrics');
-    const {data} = await this.send('Page.captureScreenshot', {
-      format: 'png', captureBeyondViewport: true,
-      clip: {x: 0, y: 0, width: cssContentSize.width, height: cssContentSize.height, scale: 1},
-    });
+    const height = Math.ceil(cssContentSize.height);
+    await this.setViewport({...viewport, height});
+    await new Promise((r) => setTimeout(r, 200));
+    const {data} = await this.send('Page.captureScreenshot', {format: 'png'});
     await writeFile(file, Buffer.from(data, 'base64'));
+    await this.setViewport(viewport);
   }
 
   // Keyboard: a key on the focused element ('ArrowRight', 'Tab', 'Enter', ' ').

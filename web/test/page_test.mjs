@@ -312,7 +312,7 @@ const groups = {
         check(width <= viewport.width, `preset ${preset.id}${suffix}: nothing wider than the window`, width);
         await p.screenshot(join(screenshots, `${preset.id}${suffix}.png`), writeFile);
       }
-      await p.fullScreenshot(join(screenshots, `page-full${suffix || '-1280'}.png`), writeFile);
+      await p.fullScreenshot(join(screenshots, `page-full${suffix || '-1280'}.png`), writeFile, viewport);
     }
     checkClean(p, 'presets');
   },
