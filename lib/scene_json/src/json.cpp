@@ -848,7 +848,12 @@ std::string report_json(const Result& result) {
 
 SolveOutput solve_output(const World& world, std::string_view source,
                          std::optional<methods::Method> method, Format format, bool colour) {
-  const Result result = resolve(world, method.value_or(world.scene().method));
+  return solve_output(resolve(world, method.value_or(world.scene().method)), source, format,
+                      colour);
+}
+
+SolveOutput solve_output(const Result& result, std::string_view source, Format format,
+                         bool colour) {
   if (result.status != SolveStatus::success) {
     // Every number of the scene is a valid double, but their products or sums are not: the
     // input is beyond what double precision can solve, so it is refused like other bad input.

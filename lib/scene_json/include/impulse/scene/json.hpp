@@ -168,6 +168,17 @@ struct SolveOutput {
                                        std::optional<methods::Method> method, Format format,
                                        bool colour = false);
 
+/// @brief solve_output() on a scene already resolved (scene::resolve()): the same report,
+/// refusal and warnings, for a caller that also needs the Result itself (the interactive page
+/// draws the bodies' motion from it).
+/// @param result the resolved scene
+/// @param source how messages name the scene
+/// @param format text or JSON
+/// @param colour whether the text report may use ANSI bold
+/// @return the report, or why the method did not finish, and the warnings
+[[nodiscard]] SolveOutput solve_output(const Result& result, std::string_view source, Format format,
+                                       bool colour = false);
+
 /// @brief `impulselab solve --compare` on a checked scene: every method (methods::all_methods)
 /// on one assembled and solved system, side by side in @p format; the system's warnings once,
 /// then each method's impulse warnings with its name in front ("serial: …"); `unfinished` holds
