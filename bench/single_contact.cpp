@@ -1,15 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Goal 1 of issue 7: the A·Fdt = B form costs nothing for a single contact.
+// Goal 1 of issues 7 and 16: the A·Fdt = B form costs nothing for a single contact.
 //
 // Each case is measured twice in one run: `<case>/library` goes through the library's public
-// path (validation, each body's contribution, their sum, the solve Fdt = B / A, each body's
-// update: `collide`), `<case>/inlined` writes the same impulse and the same bodies after as one
-// formula, the way an engine would hand-code it, without the checks. Both read their inputs
-// from the same pre-generated array of configurations, cycling through it, and both hand the
-// same outcome, the impulse and the two bodies after (the library's own types), to
-// benchmark::DoNotOptimize, so that neither can be folded away or hoisted out of the loop.
-// The library's diagnostics (A, B, residual, flags) are not part of the outcome: a caller who
-// does not read them does not pay for them, since the path is inline.
+// path for bodies checked when they were made (impulse::Checked bodies and an
+// impulse::UnitNormal, made once per configuration before the timing: bad input is refused
+// there, with its message): `collide`, i.e. each body's contribution, their sum, the solve
+// Fdt = B / A, each body's update. `<case>/inlined` writes the same impulse and the same bodies
+// after as one formula, the way an engine would hand-code it. Both read their inputs from the
+// same pre-generated configurations, cycling through them, and both hand the same outcome, the
+// impulse and the two bodies after (the library's own types), to benchmark::DoNotOptimize, so
+// that neither can be folded away or hoisted out of the loop. The library's diagnostics (A, B,
+// residual, flags) are not part of the outcome: a caller who does not read them does not pay for
+// them, since the path is inline. Run the pairs interleaved
+// (--benchmark_enable_random_interleaving=true, several repetitions): bench/run does.
+//
+// Not pairs, for the breakdown: `<case>/checked_each_time`, the overload that checks its plain
+// bodies (and the normal's length) at every collision, as every collision did before issue 16.
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -18,6 +24,10 @@
 #include <numbers>
 #include <random>
 
+#include <vector>
+
+#include "impulse/core/checked.hpp"
+#include "impulse/core/normal.hpp"
 #include "impulse/friction/bodies.hpp"
 #include "impulse/material_2d/material_2d.hpp"
 #include "impulse/one_d/one_d.hpp"
@@ -26,7 +36,9 @@
 namespace {
 
 using Eigen::Vector2d;
+using impulse::Checked;
 using impulse::Elasticity;
+using impulse::UnitNormal;
 
 // A power of two, so that the index wraps with a mask; large enough that the branch predictor
 // cannot learn the inputs, small enough (a few tens of KiB) to stay in the L1/L2 caches.
@@ -80,6 +92,35 @@ const std::array<Configuration, configurations>& table() {
   return configs;
 }
 
+// The same configurations as the library takes them: bodies checked and normals made once.
+struct CheckedConfiguration {
+  Checked<impulse::rigid_2d::RigidBody> bumper;
+  Checked<impulse::rigid_2d::RigidBody> wedge;
+  Checked<impulse::material_2d::PointMass> bumper_point;
+  Checked<impulse::material_2d::PointMass> wedge_point;
+  Checked<impulse::one_d::Body> first;
+  Checked<impulse::one_d::Body> second;
+  Elasticity bumper_elasticity;
+  Elasticity wedge_elasticity;
+  Vector2d point;
+  UnitNormal n;
+};
+
+const std::vector<CheckedConfiguration>& checked_table() {
+  static const auto configs = [] {
+    std::vector<CheckedConfiguration> result;
+    result.reserve(configurations);
+    for (const Configuration& c : table()) {
+      result.push_back({Checked(c.bumper, "bumper"), Checked(c.wedge, "wedge"),
+                        Checked(c.bumper_point, "bumper"), Checked(c.wedge_point, "wedge"),
+                        Checked(c.first, "first"), Checked(c.second, "second"), c.bumper_elasticity,
+                        c.wedge_elasticity, c.point, UnitNormal(c.n)});
+    }
+    return result;
+  }();
+  return configs;
+}
+
 struct OneDOutcome {
   double Fdt;
   impulse::one_d::Body first, second;
@@ -87,10 +128,10 @@ struct OneDOutcome {
 
 // §1: two bodies on a line, the first on the left (its outward direction +1).
 void one_d_library(benchmark::State& state) {
-  const auto& configs = table();
+  const auto& configs = checked_table();
   std::size_t i = 0;
   for (auto _ : state) {
-    const Configuration& c = configs[i++ & mask];
+    const CheckedConfiguration& c = configs[i++ & mask];
     const auto result =
         impulse::one_d::collide(c.first, c.bumper_elasticity, c.second, c.wedge_elasticity);
     OneDOutcome outcome{result.solution.Fdt, result.first, result.second};
@@ -123,10 +164,10 @@ struct MaterialOutcome {
 
 // §2: two point masses in the plane.
 void material_library(benchmark::State& state) {
-  const auto& configs = table();
+  const auto& configs = checked_table();
   std::size_t i = 0;
   for (auto _ : state) {
-    const Configuration& c = configs[i++ & mask];
+    const CheckedConfiguration& c = configs[i++ & mask];
     const auto result = impulse::material_2d::collide(c.bumper_point, c.bumper_elasticity,
                                                       c.wedge_point, c.wedge_elasticity, c.n);
     MaterialOutcome outcome{result.solution.Fdt, result.bumper, result.wedge};
@@ -159,10 +200,10 @@ struct RigidOutcome {
 
 // §3: two rigid bodies, one contact point.
 void rigid_library(benchmark::State& state) {
-  const auto& configs = table();
+  const auto& configs = checked_table();
   std::size_t i = 0;
   for (auto _ : state) {
-    const Configuration& c = configs[i++ & mask];
+    const CheckedConfiguration& c = configs[i++ & mask];
     const auto result = impulse::rigid_2d::collide(c.bumper, c.bumper_elasticity, c.wedge,
                                                    c.wedge_elasticity, c.point, c.n);
     RigidOutcome outcome{result.solution.Fdt, result.bumper, result.wedge};
@@ -197,19 +238,39 @@ void rigid_inlined(benchmark::State& state) {
   }
 }
 
-// Not a pair: the library's path without its input checks (detail:: functions, not the public
-// API), to show in the table how much of the difference to the inlined formula the checks are.
-void rigid_unchecked(benchmark::State& state) {
-  namespace r2 = impulse::rigid_2d;
+// Not pairs: the overloads that check their plain bodies and the normal at every collision.
+void one_d_checked_each_time(benchmark::State& state) {
   const auto& configs = table();
   std::size_t i = 0;
   for (auto _ : state) {
     const Configuration& c = configs[i++ & mask];
-    const auto solution =
-        impulse::solve(r2::detail::share(c.bumper, c.point, c.n, c.bumper_elasticity) +
-                       r2::detail::share(c.wedge, c.point, -c.n, c.wedge_elasticity));
-    RigidOutcome outcome{solution.Fdt, r2::apply_impulse(c.bumper, c.point, c.n, solution.Fdt),
-                         r2::apply_impulse(c.wedge, c.point, -c.n, solution.Fdt)};
+    const auto result =
+        impulse::one_d::collide(c.first, c.bumper_elasticity, c.second, c.wedge_elasticity);
+    OneDOutcome outcome{result.solution.Fdt, result.first, result.second};
+    benchmark::DoNotOptimize(outcome);
+  }
+}
+
+void material_checked_each_time(benchmark::State& state) {
+  const auto& configs = table();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Configuration& c = configs[i++ & mask];
+    const auto result = impulse::material_2d::collide(c.bumper_point, c.bumper_elasticity,
+                                                      c.wedge_point, c.wedge_elasticity, c.n);
+    MaterialOutcome outcome{result.solution.Fdt, result.bumper, result.wedge};
+    benchmark::DoNotOptimize(outcome);
+  }
+}
+
+void rigid_checked_each_time(benchmark::State& state) {
+  const auto& configs = table();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Configuration& c = configs[i++ & mask];
+    const auto result = impulse::rigid_2d::collide(c.bumper, c.bumper_elasticity, c.wedge,
+                                                   c.wedge_elasticity, c.point, c.n);
+    RigidOutcome outcome{result.solution.Fdt, result.bumper, result.wedge};
     benchmark::DoNotOptimize(outcome);
   }
 }
@@ -272,8 +333,10 @@ BENCHMARK(material_library)->Name("material_single_contact/library");
 BENCHMARK(material_inlined)->Name("material_single_contact/inlined");
 BENCHMARK(rigid_library)->Name("rigid_single_contact/library");
 BENCHMARK(rigid_inlined)->Name("rigid_single_contact/inlined");
-BENCHMARK(rigid_unchecked)->Name("rigid_single_contact_breakdown/unchecked");
 BENCHMARK(rigid_friction)->Name("rigid_single_contact_friction/library");
 BENCHMARK(rigid_friction_core)->Name("rigid_single_contact_friction_breakdown/core");
+BENCHMARK(one_d_checked_each_time)->Name("one_d_single_contact/checked_each_time");
+BENCHMARK(material_checked_each_time)->Name("material_single_contact/checked_each_time");
+BENCHMARK(rigid_checked_each_time)->Name("rigid_single_contact/checked_each_time");
 
 BENCHMARK_MAIN();

@@ -23,29 +23,31 @@
 // Where the solution is exact, energy after minus before is Fdtᵀ(A·Fdt/2 - u) and the approach
 // speeds after are u - A·Fdt, which give the laws above when A·Fdt = e·u. A computed solution
 // leaves the residual r = A·Fdt - B, so the laws hold up to |Fdt||r|/2 and |r|, plus the
-// rounding of the sums that compute energies, momenta and speeds from the bodies.
-#include <algorithm>
+// rounding of the sums that compute energies, momenta and speeds from the bodies. Each law's
+// departure and the magnitudes it is measured against come from tests/support/laws.hpp, which the
+// hostile tests hold results to as well.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "impulse/core/error.hpp"
 #include "impulse/scene/json.hpp"
 #include "impulse/scene/scene.hpp"
+#include "support/laws.hpp"
 
 namespace {
 
 namespace sc = impulse::scene;
-using Eigen::Vector2d;
+namespace laws = impulse::laws;
 
 constexpr double epsilon = std::numeric_limits<double>::epsilon();
-// The laws that depend on the solver's accuracy are checked up to this condition estimate: the
-// same bound above which `impulselab solve` warns (apps/impulselab/warnings.hpp). Beyond it the
-// impulses may carry more rounding than digits, and the laws hold only to that.
-constexpr double max_checked_condition = 1e8;
+// The laws that depend on the solver's accuracy are checked up to the condition estimate above
+// which `impulselab solve` warns: beyond it the impulses may carry more rounding than digits.
+constexpr double max_checked_condition = impulse::ill_conditioned;
 // Rounding allowance per operation summed: each reported quantity is a sum of at most about
 // (contacts + bodies) terms, each carrying a few roundings; 64 leaves room for the constant.
 constexpr double allowance = 64.0;
@@ -83,22 +85,22 @@ void require_within(std::string_view what, double found, double tolerance) {
 }
 
 bool finite(const sc::Motion& m) {
-  return m.velocity.allFinite() && m.momentum.allFinite() && std::isfinite(m.angular_velocity) &&
-         std::isfinite(m.angular_momentum);
+  return impulse::all_finite_in(m.velocity) && impulse::all_finite_in(m.momentum) &&
+         std::isfinite(m.angular_velocity) && std::isfinite(m.angular_momentum);
 }
 
 void require_finite(const sc::Result& r) {
   bool ok = std::isfinite(r.energy_before) && std::isfinite(r.energy_after) &&
-            std::isfinite(r.energy_change) && r.momentum_before.allFinite() &&
-            r.momentum_after.allFinite() && r.system.Fdt.allFinite() && r.system.B.allFinite() &&
-            std::isfinite(r.system.residual) && !std::isnan(r.system.condition_estimate) &&
-            r.system.condition_estimate >= 1.0;
+            std::isfinite(r.energy_change) && impulse::all_finite_in(r.momentum_before) &&
+            impulse::all_finite_in(r.momentum_after) && impulse::all_finite_in(r.outcome.Fdt) &&
+            impulse::all_finite_in(r.system.B) && std::isfinite(r.outcome.residual) &&
+            !std::isnan(r.system.condition_estimate) && r.system.condition_estimate >= 1.0;
   for (const sc::BodyReport& b : r.bodies) {
     ok = ok && finite(b.before) && finite(b.after) && std::isfinite(b.energy_before) &&
          std::isfinite(b.energy_after);
   }
   for (const sc::ImpulseReport& i : r.impulses) {
-    ok = ok && std::isfinite(i.magnitude) && i.on_bumper.allFinite();
+    ok = ok && std::isfinite(i.magnitude) && impulse::all_finite_in(i.on_bumper);
   }
   for (const sc::ContactReport& c : r.contacts) {
     ok = ok && std::isfinite(c.approach_before) && std::isfinite(c.approach_after);
@@ -108,69 +110,28 @@ void require_finite(const sc::Result& r) {
   }
 }
 
-// The elasticity every movable body collides with, if they all share one; else NaN.
-double common_elasticity(const sc::Scene& scene) {
-  double common = std::numeric_limits<double>::quiet_NaN();
-  for (const sc::Body& body : scene.bodies) {
-    if (body.kind == sc::BodyKind::static_body) {
-      continue;
-    }
-    const double e = body.elasticity.value_or(scene.elasticity.value_or(1.0));
-    if (std::isnan(common)) {
-      common = e;
-    } else if (e != common) {
-      return std::numeric_limits<double>::quiet_NaN();
-    }
-  }
-  return common;
+double terms_of(const sc::Result& r) {
+  return static_cast<double>(r.bodies.size() + r.impulses.size() + 2);
 }
 
+// Momentum is conserved when no body is static (a static body takes momentum and is left out of
+// the totals).
 void check_momentum(const sc::Scene& scene, const sc::Result& r) {
-  const bool any_static =
-      std::any_of(scene.bodies.begin(), scene.bodies.end(),
-                  [](const sc::Body& b) { return b.kind == sc::BodyKind::static_body; });
-  if (any_static) {
-    return;  // a static body takes momentum and is left out of the totals
-  }
-  double scale = 0.0;  // the magnitudes that the totals sum
-  for (const sc::BodyReport& b : r.bodies) {
-    scale += b.before.momentum.stableNorm() + b.after.momentum.stableNorm();
-  }
-  scale += 2.0 * r.system.Fdt.cwiseAbs().sum();
-  const auto terms = static_cast<double>(r.bodies.size() + r.impulses.size() + 2);
-  require_within("momentum conserved", (r.momentum_after - r.momentum_before).stableNorm(),
-                 rounding(terms, scale));
-}
-
-// The spread of the movable bodies' inverse masses and inverse moments of inertia: the largest
-// over the smallest (1 for a single movable body without rotation).
-double spread(const sc::Scene& scene) {
-  double largest = 0.0;
-  double smallest = std::numeric_limits<double>::infinity();
-  for (const sc::Body& b : scene.bodies) {
-    if (b.kind == sc::BodyKind::static_body) {
-      continue;
-    }
-    largest = std::max(largest, 1.0 / b.mass);
-    smallest = std::min(smallest, 1.0 / b.mass);
-    if (b.kind == sc::BodyKind::rigid) {
-      largest = std::max(largest, 1.0 / b.inertia);
-      smallest = std::min(smallest, 1.0 / b.inertia);
-    }
-  }
-  return smallest > 0.0 && smallest < std::numeric_limits<double>::infinity() ? largest / smallest
-                                                                              : 1.0;
+  const laws::Departure d = laws::momentum(scene, r);
+  require_within("momentum conserved", d.found, rounding(terms_of(r), d.scale));
 }
 
 double matrix_norm(const impulse::Solution& s) {
-  // stableNorm: the squares of plain norm() underflow to 0 for entries below 1e-154, and would
+  // Quiet norms: the squares of plain norm() underflow to 0 for entries below 1e-154, and would
   // leave a tolerance of nothing (the third long run: a scene of elasticity 2.1e-299).
-  return s.A.size() > 0
-             ? s.A.stableNorm()
-             : Eigen::Map<const Eigen::VectorXd>(s.sparse_A.valuePtr(), s.sparse_A.nonZeros())
-                   .stableNorm();
+  return s.A.size() > 0 ? impulse::detail::quiet_norm(
+                              Eigen::Map<const Eigen::VectorXd>(s.A.data(), s.A.size()))
+                        : impulse::detail::quiet_norm(Eigen::Map<const Eigen::VectorXd>(
+                              s.sparse_A.valuePtr(), s.sparse_A.nonZeros()));
 }
 
+// The laws of the paper's system A·Fdt = B, for the paper's method, where the system is well
+// conditioned and the solver found it consistent.
 void check_well_conditioned(const sc::Scene& scene, const sc::Result& r) {
   const impulse::Solution& s = r.system;
   // A system assembled from bodies is consistent in exact arithmetic (B = GᵀW lies in the range
@@ -180,8 +141,8 @@ void check_well_conditioned(const sc::Scene& scene, const sc::Result& r) {
   if (!(s.condition_estimate <= max_checked_condition) || !s.consistent) {
     return;
   }
-  const auto terms = static_cast<double>(r.bodies.size() + r.impulses.size() + 2);
-  const double Fdt_norm = s.Fdt.stableNorm();
+  const double terms = terms_of(r);
+  const double Fdt_norm = impulse::detail::quiet_norm(s.Fdt);
   // The residual of a backward-stable solution is rounding of the terms A·Fdt and B; solving
   // through the factor G (A = GᵀG) multiplies it by up to the condition number of G, the
   // square root of that of A, and by the square root of the spread s of the bodies' inverse
@@ -190,59 +151,25 @@ void check_well_conditioned(const sc::Scene& scene, const sc::Result& r) {
   // run found that term: masses 7.8e7 and 1 on a line, κ = 1, residual 5.2e-12 against B = 8,
   // fuzz/regressions/mass-ratio-residual.json; docs/pages/accuracy.md measures it.)
   const double residual_tolerance =
-      rounding(terms, (1.0 + std::sqrt(s.condition_estimate) + std::sqrt(spread(scene))) *
-                          (matrix_norm(s) * Fdt_norm + s.B.stableNorm()));
+      rounding(terms, (1.0 + std::sqrt(s.condition_estimate) + std::sqrt(laws::spread(scene))) *
+                          (matrix_norm(s) * Fdt_norm + impulse::detail::quiet_norm(s.B)));
   require_within("residual |A Fdt - B|", s.residual, residual_tolerance);
   const double residual_bound = s.residual + residual_tolerance;
 
-  const double e = common_elasticity(scene);
-  if (std::isnan(e)) {
+  const std::optional<double> e = laws::common_elasticity(scene);
+  if (!e) {
     return;  // bodies of different elasticities: B is not a multiple of u
   }
   // One elasticity e for every movable body: B = e u, so an exact solution changes the energy
   // by (e/2 - 1) uᵀFdt (zero at e = 2) and leaves the approach speeds (1 - e) u (zero at e = 1,
   // reversed at e = 2). The computed one departs from that by Fdtᵀr/2 and by r.
-  double change_energy = 0.0;  // the energies of each body's change of motion (terms that cancel)
-  for (std::size_t k = 0; k < r.bodies.size(); ++k) {
-    const sc::Body& body = scene.bodies[k];
-    if (body.kind == sc::BodyKind::static_body) {
-      continue;
-    }
-    const sc::BodyReport& b = r.bodies[k];
-    change_energy += 0.5 * (b.after.momentum - b.before.momentum).squaredNorm() / body.mass;
-    if (body.kind == sc::BodyKind::rigid) {
-      const double dL = b.after.angular_momentum - b.before.angular_momentum;
-      change_energy += 0.5 * dL * dL / body.inertia;
-    }
-  }
-  double work = 0.0;  // uᵀFdt
-  double work_terms = 0.0;
+  const laws::Departure energy = laws::energy(scene, r, *e);
+  require_within("energy change (e/2 - 1) u.Fdt", energy.found,
+                 0.5 * Fdt_norm * residual_bound + rounding(terms, energy.scale));
   for (std::size_t v = 0; v < r.contacts.size(); ++v) {
-    work += r.contacts[v].approach_before * s.Fdt(static_cast<Eigen::Index>(v));
-    work_terms += std::abs(r.contacts[v].approach_before * s.Fdt(static_cast<Eigen::Index>(v)));
-  }
-  const double factor = e / 2.0 - 1.0;
-  require_within("energy change (e/2 - 1) u.Fdt", std::abs(r.energy_change - factor * work),
-                 0.5 * Fdt_norm * residual_bound +
-                     rounding(terms, r.energy_before + r.energy_after + change_energy +
-                                         std::abs(factor) * work_terms));
-  for (std::size_t v = 0; v < r.contacts.size(); ++v) {
-    const sc::Contact& c = scene.contacts[v];
-    // The speeds summed into the approach: each body's point velocity before and after.
-    double speeds = std::abs(1.0 - e) * std::abs(r.contacts[v].approach_before);
-    for (const std::size_t k : {c.bumper, c.wedge}) {
-      const sc::Body& body = scene.bodies[k];
-      const sc::BodyReport& b = r.bodies[k];
-      speeds += b.before.velocity.stableNorm() + b.after.velocity.stableNorm();
-      if (body.kind == sc::BodyKind::rigid) {
-        const double arm = (c.point.value_or(Vector2d::Zero()) - body.position).stableNorm();
-        speeds += (std::abs(b.before.angular_velocity) + std::abs(b.after.angular_velocity)) * arm;
-      }
-    }
-    require_within(
-        "approach after (1 - e) u",
-        std::abs(r.contacts[v].approach_after - (1.0 - e) * r.contacts[v].approach_before),
-        residual_bound + rounding(terms, speeds));
+    const laws::Departure approach = laws::approach(scene, r, v, *e);
+    require_within("approach after (1 - e) u", approach.found,
+                   residual_bound + rounding(terms, approach.scale));
   }
 }
 
@@ -253,58 +180,43 @@ void check_well_conditioned(const sc::Scene& scene, const sc::Result& r) {
 // hand-worked and 1,000 random scenes (tests/methods/).
 void check_kinematics(const sc::Scene& scene, const sc::Result& r) {
   const impulse::Solution& s = r.system;
+  const Eigen::VectorXd& F = r.outcome.Fdt;
   const Eigen::VectorXd AF =
-      s.A.size() > 0 ? Eigen::VectorXd(s.A * s.Fdt) : Eigen::VectorXd(s.sparse_A * s.Fdt);
+      s.A.size() > 0 ? Eigen::VectorXd(s.A * F) : Eigen::VectorXd(s.sparse_A * F);
   const Eigen::VectorXd AF_terms = s.A.size() > 0
-                                       ? Eigen::VectorXd(s.A.cwiseAbs() * s.Fdt.cwiseAbs())
-                                       : Eigen::VectorXd(s.sparse_A.cwiseAbs() * s.Fdt.cwiseAbs());
-  if (!AF.allFinite() || !AF_terms.allFinite()) {
+                                       ? Eigen::VectorXd(s.A.cwiseAbs() * F.cwiseAbs())
+                                       : Eigen::VectorXd(s.sparse_A.cwiseAbs() * F.cwiseAbs());
+  if (!impulse::all_finite_in(AF) || !impulse::all_finite_in(AF_terms)) {
     return;  // the identity's own terms overflow: nothing to compare with
   }
-  const auto terms = static_cast<double>(r.bodies.size() + r.impulses.size() + 2);
-  double predicted = 0.0;
-  double predicted_terms = 0.0;
-  for (std::size_t v = 0; v < r.contacts.size(); ++v) {
-    const auto i = static_cast<Eigen::Index>(v);
-    const double u = r.contacts[v].approach_before;
-    predicted += s.Fdt(i) * (AF(i) / 2.0 - u);
-    predicted_terms += std::abs(s.Fdt(i)) * (AF_terms(i) / 2.0 + std::abs(u));
-    double speeds = std::abs(u) + AF_terms(i);
-    for (const std::size_t k : {scene.contacts[v].bumper, scene.contacts[v].wedge}) {
-      const sc::Body& body = scene.bodies[k];
-      const sc::BodyReport& b = r.bodies[k];
-      speeds += b.before.velocity.stableNorm() + b.after.velocity.stableNorm();
-      if (body.kind == sc::BodyKind::rigid) {
-        const double arm =
-            (scene.contacts[v].point.value_or(Vector2d::Zero()) - body.position).stableNorm();
-        speeds += (std::abs(b.before.angular_velocity) + std::abs(b.after.angular_velocity)) * arm;
-      }
-    }
-    require_within("approach after = u - A Fdt",
-                   std::abs(r.contacts[v].approach_after - (u - AF(i))), rounding(terms, speeds));
+  const double terms = terms_of(r);
+  const laws::Kinematics k = laws::kinematics(scene, r, AF, AF_terms);
+  for (const laws::Departure& approach : k.approach) {
+    require_within("approach after = u - A Fdt", approach.found, rounding(terms, approach.scale));
   }
-  require_within("energy change = Fdt.(A Fdt / 2 - u)", std::abs(r.energy_change - predicted),
-                 rounding(terms, r.energy_before + r.energy_after + predicted_terms));
+  require_within("energy change = Fdt.(A Fdt / 2 - u)", k.energy.found,
+                 rounding(terms, k.energy.scale));
 }
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  sc::Scene scene;
+  std::optional<sc::World> world;
   try {
-    scene = sc::parse_scene(text, "fuzz.json");
+    world.emplace(sc::parse_world(text, "fuzz.json"));
   } catch (const impulse::InvalidInput& e) {
     if (!std::string_view(e.what()).starts_with("fuzz.json: ")) {
       finding("a refusal that does not name the file", e.what());
     }
     return 0;  // the expected answer to bad input
   }
+  const sc::Scene& scene = world->scene();
   sc::Result result;
   try {
-    result = sc::solve(scene);
+    result = sc::resolve(*world);
   } catch (const impulse::InvalidInput& e) {
-    finding("the reader accepted a scene that solve() refuses", e.what());
+    finding("the reader accepted a scene that resolve() refuses", e.what());
   }
   if (result.status != impulse::SolveStatus::success) {
     return 0;  // beyond double precision: impulselab refuses it as overflowing

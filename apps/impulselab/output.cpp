@@ -66,11 +66,17 @@ std::string scene_name(const std::string& path) {
   return path == "-" ? "<stdin>" : path;
 }
 
-impulse::scene::Scene read_scene(const std::string& path) {
+impulse::scene::World read_world(const std::string& path) {
   if (path == "-") {
-    return impulse::scene::parse_scene(read_stdin(), scene_name(path));
+    return impulse::scene::parse_world(read_stdin(), scene_name(path));
   }
-  return impulse::scene::load_scene(path);
+  return impulse::scene::load_world(path);
+}
+
+void print_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& warning : warnings) {
+    std::fprintf(stderr, "impulselab: warning: %s\n", warning.c_str());
+  }
 }
 
 void write_output(const std::string& path, const std::function<void(std::FILE*)>& write) {

@@ -6,16 +6,17 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "impulse/scene/scene.hpp"
 
 namespace impulselab {
 
 /// The scene in @p path, or in standard input when @p path is "-" (messages then name
-/// "<stdin>"). Throws impulse::InvalidInput naming the file and the place.
+/// "<stdin>"), checked. Throws impulse::InvalidInput naming the file and the place.
 /// @param path a file or "-"
-/// @return the scene, valid
-impulse::scene::Scene read_scene(const std::string& path);
+/// @return the checked scene
+impulse::scene::World read_world(const std::string& path);
 
 /// How messages name the scene at @p path: the path itself, or "<stdin>" for "-".
 /// @param path a file or "-"
@@ -33,6 +34,11 @@ std::string scene_name(const std::string& path);
 /// @param path the file, "-" or empty
 /// @param write writes the whole output to the stream it is given
 void write_output(const std::string& path, const std::function<void(std::FILE*)>& write);
+
+/// Prints each warning on standard error as `impulselab: warning: <warning>`. Warnings do not
+/// change the exit status.
+/// @param warnings the lines
+void print_warnings(const std::vector<std::string>& warnings);
 
 /// Whether output to standard output may use colour: it is a terminal, NO_COLOR is not set and
 /// TERM is not "dumb".

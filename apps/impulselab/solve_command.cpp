@@ -3,14 +3,11 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app.hpp"
-#include "compare.hpp"
-#include "impulse/core/error.hpp"
 #include "impulse/scene/json.hpp"
 #include "output.hpp"
-#include "text_report.hpp"
-#include "warnings.hpp"
 
 namespace impulselab {
 
@@ -24,31 +21,36 @@ struct SolveOptions {
   bool compare = false;  // every method, side by side
 };
 
+// The library makes the report, the refusals and the warnings (impulse::scene::solve_output,
+// the same path as the page that runs the library in a browser); this writes them out.
 void solve(const SolveOptions& options) {
-  impulse::scene::Scene scene = read_scene(options.scene);
-  if (const auto method = impulse::methods::method_named(options.method)) {
-    scene.method = *method;
+  namespace sc = impulse::scene;
+  const sc::World world = read_world(options.scene);
+  const std::string source = scene_name(options.scene);
+  const sc::Format format = options.format == "json" ? sc::Format::json : sc::Format::text;
+  const bool colour = colour_wanted(options.output);
+  const sc::SolveOutput output =
+      options.compare
+          ? sc::compare_output(world, source, format, colour)
+          : sc::solve_output(world, source,
+                             impulse::value_named<impulse::methods::Method>(options.method), format,
+                             colour);
+  if (!output.report.empty()) {
+    write_output(options.output, [&](std::FILE* out) { std::fputs(output.report.c_str(), out); });
   }
-  if (options.compare) {
-    compare_methods(scene, scene_name(options.scene), options.format, options.output);
-    return;
+  print_warnings(output.warnings);
+  if (!output.unfinished.empty()) {
+    throw WorkFailed(output.unfinished);  // exit 1: serial collisions at their bound, and so on
   }
-  const impulse::scene::Result result = impulse::scene::solve(scene);
-  if (result.status != impulse::SolveStatus::success) {
-    // Every number of the scene is a valid double, but their products or sums are not: the
-    // input is beyond what double precision can solve, so it is refused like other bad input.
-    throw impulse::InvalidInput(
-        scene_name(options.scene) +
-        ": the numbers overflow: A·Fdt = B or the state after the collision is not finite "
-        "(masses, inertias, velocities or elasticities too extreme for double precision)");
+}
+
+// The scene format's names of the methods, from the library's table.
+std::vector<std::string> method_names() {
+  std::vector<std::string> names;
+  for (const auto& entry : impulse::EnumNames<impulse::methods::Method>::table) {
+    names.emplace_back(entry.name);
   }
-  require_finished(result, scene_name(options.scene));  // serial collisions within their bound
-  print_impulse_warnings(result);                       // negative impulses, approximate answers
-  const std::string text = options.format == "json" ? impulse::scene::to_json(result).dump(2) + "\n"
-                                                    : text_report(result, scene_name(options.scene),
-                                                                  colour_wanted(options.output));
-  write_output(options.output, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
-  print_warnings(solve_warnings(result, scene_name(options.scene)));
+  return names;
 }
 
 }  // namespace
@@ -72,7 +74,7 @@ void add_solve_command(CLI::App& app) {
                        "how to find the impulses, instead of the scene's solver.method: "
                        "simultaneous (the paper's linear system), complementarity (impulses "
                        "only push) or serial (one contact at a time)")
-          ->check(CLI::IsMember({"simultaneous", "complementarity", "serial"}));
+          ->check(CLI::IsMember(method_names()));
   verb->add_flag("--compare,-c", options->compare,
                  "solve the scene by all three methods and show the answers side by side "
                  "(with --format json: one result per method)")

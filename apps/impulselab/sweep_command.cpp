@@ -6,14 +6,15 @@
 #include <charconv>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app.hpp"
 #include "impulse/core/error.hpp"
+#include "impulse/scene/report.hpp"
 #include "impulse/scene/scene.hpp"
 #include "output.hpp"
-#include "warnings.hpp"
 
 namespace impulselab {
 
@@ -54,31 +55,44 @@ std::string csv_number(double value) {
   return impulse::format_number(value + 0.0);  // shortest text that reads back; no "-0"
 }
 
-impulse::scene::Result solve_at(const impulse::scene::Scene& scene, double e,
+impulse::scene::Result solve_at(const impulse::scene::World& world, double e,
                                 const std::string& source) {
-  impulse::scene::Result result = impulse::scene::solve(impulse::scene::with_elasticity(scene, e));
+  impulse::scene::Result result = impulse::scene::resolve(world.with_elasticity(e));
   if (result.status != impulse::SolveStatus::success) {
     throw impulse::InvalidInput(source + ": the numbers overflow at elasticity " +
                                 impulse::format_number(e) +
                                 ": A·Fdt = B or the state after the collision is not finite");
   }
   // A scene whose solver.method is serial: its collisions must end within their bound.
-  require_finished(result, source + " at elasticity " + impulse::format_number(e));
+  const std::string unfinished = impulse::scene::unfinished_message(
+      result, source + " at elasticity " + impulse::format_number(e));
+  if (!unfinished.empty()) {
+    throw WorkFailed(unfinished);
+  }
   return result;
 }
 
 void sweep(const SweepOptions& options) {
   const Range range = parse_range(options.elasticity);
   const std::string source = scene_name(options.scene);
-  const impulse::scene::Scene scene = read_scene(options.scene);
+  const impulse::scene::World world = read_world(options.scene);
   // Impulses are linear in the elasticity and energies quadratic: if both ends of the range are
-  // finite, so is every value between, and nothing is written before the ends are known good.
-  // A does not depend on the elasticity: one warning about its conditioning serves every row.
-  const std::vector<std::string> warnings =
-      solve_warnings(solve_at(scene, range.at(0), source), source);
-  (void)solve_at(scene, range.at(range.count - 1), source);
+  // finite, so is every value between, and nothing is written before the ends are known good;
+  // their results are the first and last rows. A does not depend on the elasticity: one warning
+  // about its conditioning serves every row.
+  const impulse::scene::Result first = solve_at(world, range.at(0), source);
+  const std::optional<impulse::scene::Result> last =
+      range.count > 1 ? std::optional(solve_at(world, range.at(range.count - 1), source))
+                      : std::nullopt;
+  const std::vector<std::string> warnings = impulse::scene::system_warnings(first, source);
+  const auto row_result = [&](std::size_t i) {
+    if (i == 0) {
+      return first;
+    }
+    return last && i + 1 == range.count ? *last : solve_at(world, range.at(i), source);
+  };
 
-  const std::size_t contacts = scene.contacts.size();
+  const std::size_t contacts = world.scene().contacts.size();
   write_output(options.output, [&](std::FILE* out) {
     std::string header("elasticity,energy_after,energy_change");
     for (std::size_t v = 0; v < contacts; ++v) {
@@ -91,7 +105,7 @@ void sweep(const SweepOptions& options) {
     std::string row;
     for (std::size_t i = 0; i < range.count; ++i) {
       const double e = range.at(i);
-      const impulse::scene::Result r = solve_at(scene, e, source);
+      const impulse::scene::Result r = row_result(i);
       row.assign(csv_number(e));
       row.append(",").append(csv_number(r.energy_after));
       row.append(",").append(csv_number(r.energy_change));

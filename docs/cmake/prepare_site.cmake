@@ -248,6 +248,65 @@ if(missing)
   message(FATAL_ERROR "prepare_site.cmake: no page of docs/pages shows these checks: ${missing}")
 endif()
 
+# --- "Try it": links to the interactive page with a scene filled in ------------------------------
+
+# For every preset of the page (web/presets.txt), a Doxygen alias \tryit_ID (the scene file's
+# name, - as _) that a page or a lab's worksheet writes where the reader should try the scene:
+# a link to collide.html#scene= and the scene's JSON, compact and percent-encoded as
+# encodeURIComponent writes it (the page's contract).
+function(scene_fragment file out)
+  file(READ "${file}" text)
+  string(LENGTH "${text}" length)
+  set(encoded "")
+  set(in_string FALSE)
+  set(escaped FALSE)
+  math(EXPR last "${length} - 1")
+  foreach(i RANGE ${last})
+    string(SUBSTRING "${text}" ${i} 1 c)
+    if(in_string)
+      if(escaped)
+        set(escaped FALSE)
+      elseif(c STREQUAL "\\")
+        set(escaped TRUE)
+      elseif(c STREQUAL "\"")
+        set(in_string FALSE)
+      endif()
+    elseif(c STREQUAL "\"")
+      set(in_string TRUE)
+    elseif(c MATCHES "^[ \t\r\n]$")
+      continue()  # whitespace between tokens: the file's text, compact
+    endif()
+    if(c MATCHES "^[A-Za-z0-9_.!~*'()-]$")
+      string(APPEND encoded "${c}")
+    else()
+      string(HEX "${c}" hex)
+      string(TOUPPER "${hex}" hex)
+      string(REGEX REPLACE "(..)" "%\\1" hex "${hex}")
+      string(APPEND encoded "${hex}")
+    endif()
+  endforeach()
+  set(${out} "${encoded}" PARENT_SCOPE)
+endfunction()
+
+set(DOCS_ALIASES "")
+file(STRINGS "${SOURCE_DIR}/web/presets.txt" preset_lines ENCODING UTF-8)
+foreach(line IN LISTS preset_lines)
+  if(line MATCHES "^#" OR NOT line MATCHES "^[^|]+ \\| ([^|]+[^ |]) \\| ([^ |]+)$")
+    continue()
+  endif()
+  set(label "${CMAKE_MATCH_1}")
+  set(scene_file "${CMAKE_MATCH_2}")
+  get_filename_component(id "${scene_file}" NAME_WE)
+  string(REPLACE "-" "_" id "${id}")
+  scene_fragment("${SOURCE_DIR}/${scene_file}" fragment)
+  string(REPLACE "&" "&amp;" label "${label}")
+  string(REPLACE "<" "&lt;" label "${label}")
+  string(REPLACE "\"" "&quot;" label "${label}")
+  string(APPEND DOCS_ALIASES
+    "ALIASES += \"tryit_${id}=\\htmlonly<a class=\\\"tryit\\\" "
+    "href=\\\"collide.html#scene=${fragment}\\\">Try it: ${label}</a>\\endhtmlonly\"\n")
+endforeach()
+
 # --- The Doxyfile -----------------------------------------------------------------------------
 
 set(DOCS_PAGES "\"${pages_out}\" \"${report_dir}\"")

@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The command line: the scene format's worked example, text and JSON output, standard input,
 // usage errors and their exit statuses.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "cli/program.hpp"
+#include "impulse/core/error.hpp"
+#include "impulse/scene/json.hpp"
 
 namespace t = impulselab::test;
 using Catch::Matchers::Contains;
@@ -133,4 +137,50 @@ TEST_CASE("Scene files that cannot be read: exit 2, the file named", "[cli]") {
   const auto folder = t::run("solve " + t::quote(IMPULSELAB_SCENES_DIR));
   CHECK(folder.status == 2);
   CHECK_THAT(folder.err, Contains("cannot read: it is a directory"));
+}
+
+TEST_CASE("The library's entry point prints what solve --format json prints, and warns alike",
+          "[cli]") {
+  // impulse::scene::solve_to_json is what a page running the library in a browser calls: for
+  // every example scene, every method, its JSON must be the program's standard output byte for
+  // byte, its warnings the program's standard error, and a scene the program refuses must be
+  // refused with the program's message.
+  namespace sc = impulse::scene;
+  std::vector<std::string> scenes;
+  for (const auto& entry : std::filesystem::directory_iterator(IMPULSELAB_SCENES_DIR)) {
+    if (entry.path().extension() == ".json") {
+      scenes.push_back(entry.path().string());
+    }
+  }
+  scenes.push_back(t::cli_tests_path("scenes/ill-conditioned.json"));
+  std::sort(scenes.begin(), scenes.end());
+  for (const std::string& scene : scenes) {
+    for (const auto method : impulse::methods::all_methods) {
+      const std::string name(impulse::name_of(method));
+      CAPTURE(scene, name);
+      const sc::SolveOutput library = sc::solve_to_json(t::read_text(scene), scene, method);
+      const auto program = t::run("solve " + t::quote(scene) + " --format json --method " + name);
+      std::string warnings;
+      for (const std::string& line : library.warnings) {
+        warnings.append("impulselab: warning: ").append(line).append("\n");
+      }
+      if (library.unfinished.empty()) {
+        CHECK(program.status == 0);
+        CHECK(library.report == program.out);
+        CHECK(warnings == program.err);
+      } else {
+        CHECK(program.status == 1);
+        CHECK_THAT(program.err, Contains(library.unfinished));
+      }
+    }
+  }
+  const std::string malformed = t::cli_tests_path("malformed/negative-mass.json");
+  const auto refused = t::run("solve " + t::quote(malformed) + " --format json");
+  CHECK(refused.status == 2);
+  try {
+    (void)sc::solve_to_json(t::read_text(malformed), malformed);
+    FAIL("the library accepted a scene the program refuses");
+  } catch (const impulse::InvalidInput& e) {
+    CHECK(refused.err == "impulselab: error: " + std::string(e.what()) + "\n");
+  }
 }

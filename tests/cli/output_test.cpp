@@ -58,7 +58,7 @@ TEST_CASE("A bad scene leaves an existing --output untouched", "[cli][output]") 
   for (const std::string& verb : std::vector<std::string>{"solve", "sweep"}) {
     CAPTURE(verb);
     const auto run =
-        t::run(verb + " " + t::quote(t::cli_tests_path("malformed/non-unit-normal.json")) +
+        t::run(verb + " " + t::quote(t::cli_tests_path("malformed/zero-normal.json")) +
                (verb == "sweep" ? " -e 0:1:0.5" : "") + " --output " + t::quote(file.string()));
     CHECK(run.status == 2);
     CHECK(t::read_text(file) == precious);

@@ -6,34 +6,10 @@
 #include <string>
 
 #include "cli/program.hpp"
-#include "warnings.hpp"
 
 namespace t = impulselab::test;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
-
-TEST_CASE("The warning starts above the threshold and not for A = 0", "[cli][warnings]") {
-  impulse::scene::Result result;
-  result.system.condition_estimate = impulselab::ill_conditioned;  // at it: no warning
-  CHECK(impulselab::solve_warnings(result, "s.json").empty());
-  result.system.condition_estimate = 1e12;
-  const auto warnings = impulselab::solve_warnings(result, "s.json");
-  REQUIRE(warnings.size() == 1);
-  // 1e12 * 2.2e-16 = 2.2e-4 of the impulses' size.
-  CHECK(warnings[0] ==
-        "s.json: the system A·Fdt = B is ill-conditioned: condition estimate 1e+12, above "
-        "1e+08; rounding may change the impulses by about 0.00022 of their size (the velocities "
-        "after are less affected)");
-  result.system.rank_estimated = true;  // the sparse method's estimate says so
-  result.system.condition_estimate = 1e17;
-  CHECK_THAT(impulselab::solve_warnings(result, "s.json")[0],
-             Contains("condition estimate 1e+17 (estimated), above 1e+08; rounding may change "
-                      "the impulses by about as much as their size"));
-  CHECK_THAT(impulselab::solve_warnings(result, "s.json")[0],
-             Contains("the sparse method's estimate can be far below the true condition"));
-  result.system.condition_estimate = std::numeric_limits<double>::infinity();  // A = 0
-  CHECK(impulselab::solve_warnings(result, "s.json").empty());
-}
 
 TEST_CASE("solve and sweep warn about an ill-conditioned scene and still report it",
           "[cli][warnings]") {

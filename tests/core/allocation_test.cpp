@@ -9,7 +9,9 @@
 #include <limits>
 #include <new>
 
+#include "impulse/core/checked.hpp"
 #include "impulse/core/error.hpp"
+#include "impulse/core/normal.hpp"
 #include "impulse/material_2d/material_2d.hpp"
 #include "impulse/one_d/one_d.hpp"
 #include "impulse/rigid_2d/rigid_2d.hpp"
@@ -119,6 +121,16 @@ TEST_CASE("Single contacts of sections 1-3 allocate nothing",
       sink += impulse::rigid_2d::apply_impulse(ra, point, n, s.Fdt).L;
       sink += impulse::material_2d::apply_impulse(pa, n, s.Fdt).p.x();
       sink += impulse::one_d::apply_impulse(a, 1.0, s.Fdt).momentum;
+      // Bodies and a normal checked when made, and the collisions that take them.
+      const impulse::Checked checked_a(a);
+      const impulse::Checked checked_ra(ra);
+      const impulse::Checked checked_rb(rb);
+      const impulse::UnitNormal unit(n);
+      sink += impulse::one_d::collide(checked_a, e1, impulse::Checked(b), e2).solution.Fdt;
+      sink +=
+          impulse::material_2d::collide(impulse::Checked(pa), e1, impulse::Checked(pb), e2, unit)
+              .solution.Fdt;
+      sink += impulse::rigid_2d::collide(checked_ra, e1, checked_rb, e2, point, unit).solution.Fdt;
     });
     CAPTURE(i, sink);
     REQUIRE(seen == 0);
@@ -134,6 +146,46 @@ TEST_CASE("Bad input is still refused with the value and the same message",
   CHECK_THROWS_WITH(
       impulse::material_2d::collide({-1, {0, 0}}, Elasticity(), ok, Elasticity(), {1, 0}),
       "bumper.mass must be positive and finite, got -1");
+}
+
+TEST_CASE("Checked bodies: refused when made, with the message; then the same collision",
+          "[allocation][errors][section1][section2][section3]") {
+  using impulse::Checked;
+  CHECK_THROWS_WITH(Checked(impulse::one_d::Body{0, 1}, "first"),
+                    "first.mass must be positive and finite, got 0");
+  CHECK_THROWS_WITH(Checked(impulse::material_2d::PointMass{1, {std::nan(""), 0}}, "wedge"),
+                    "wedge.p must be finite, got [nan, 0]");
+  CHECK_THROWS_WITH(Checked(impulse::rigid_2d::RigidBody{1, -2, {0, 0}, {0, 0}, 0}, "bumper"),
+                    "bumper.inertia must be positive and finite, got -2");
+  const impulse::rigid_2d::RigidBody rod{1, 1.0 / 3.0, {0, 0}, {0, -1}, 0};
+  const impulse::rigid_2d::RigidBody ground_like{1e6, 1e6, {0, -1}, {0, 0}, 0};
+  CHECK_THROWS_WITH(
+      impulse::rigid_2d::collide(Checked(rod), Elasticity(), Checked(ground_like), Elasticity(),
+                                 {std::nan(""), 0}, impulse::UnitNormal(Vector2d(0, -1))),
+      "point must be finite, got [nan, 0]");
+  CHECK_THROWS_WITH(impulse::one_d::collide(Checked(impulse::one_d::Body{1, 1}), Elasticity(),
+                                            Checked(impulse::one_d::Body{1, 0}), Elasticity(), 0.5),
+                    "normal must be +1 or -1, got 0.5");
+  // The checked path is the same formula as the path that checks at each collision: the same
+  // impulse and bodies to the last bit, on random configurations.
+  t::Sampler sample("checked bodies");
+  for (int i = 0; i < t::configurations; ++i) {
+    const Elasticity e1(sample.uniform(0, 3));
+    const Elasticity e2(sample.uniform(0, 3));
+    const Vector2d n = sample.unit_vector();
+    const Vector2d point = sample.vector(2);
+    const impulse::rigid_2d::RigidBody ra{sample.mass(), sample.mass(), sample.vector(1),
+                                          sample.vector(10), sample.uniform(-10, 10)};
+    const impulse::rigid_2d::RigidBody rb{sample.mass(), sample.mass(), sample.vector(1),
+                                          sample.vector(10), sample.uniform(-10, 10)};
+    const auto each_time = impulse::rigid_2d::collide(ra, e1, rb, e2, point, n);
+    const auto once =
+        impulse::rigid_2d::collide(Checked(ra), e1, Checked(rb), e2, point, impulse::UnitNormal(n));
+    CAPTURE(i);
+    REQUIRE(once.solution.Fdt == each_time.solution.Fdt);
+    REQUIRE(once.bumper.p == each_time.bumper.p);
+    REQUIRE(once.wedge.L == each_time.wedge.L);
+  }
 }
 
 TEST_CASE("The unit-normal rule without a square root is |length - 1| <= 1e-9",

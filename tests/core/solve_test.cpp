@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "impulse/core/error.hpp"
 #include "impulse/core/solve.hpp"
 
 using impulse::ContactSystem;
@@ -155,9 +156,31 @@ TEST_CASE("The scalar path: Fdt = B / A, and A = 0 when no body can move", "[sol
   CHECK(impossible.residual == 1.0);
 }
 
-TEST_CASE("Policies print as the scene format names them", "[solve]") {
-  CHECK(impulse::to_string(DependentPolicy::minimum_norm) == "minimum-norm");
-  CHECK(impulse::to_string(DependentPolicy::basic) == "basic");
-  CHECK(impulse::to_string(InconsistentPolicy::least_squares) == "least-squares");
-  CHECK(impulse::to_string(InconsistentPolicy::drop_equation) == "drop-equation");
+TEST_CASE("Policies print as the scene format names them, and read back", "[solve]") {
+  CHECK(impulse::name_of(DependentPolicy::minimum_norm) == "minimum-norm");
+  CHECK(impulse::name_of(DependentPolicy::basic) == "basic");
+  CHECK(impulse::name_of(InconsistentPolicy::least_squares) == "least-squares");
+  CHECK(impulse::name_of(InconsistentPolicy::drop_equation) == "drop-equation");
+  CHECK(impulse::value_named<DependentPolicy>("basic") == DependentPolicy::basic);
+  CHECK(impulse::value_named<InconsistentPolicy>("drop-equation") ==
+        InconsistentPolicy::drop_equation);
+  CHECK_FALSE(impulse::value_named<DependentPolicy>("least-squares").has_value());
+  CHECK(impulse::quoted_names<DependentPolicy>() == "\"minimum-norm\", \"basic\"");
+}
+
+TEST_CASE("Policies that only the dense method serves are refused beyond its limit",
+          "[solve][errors]") {
+  // 2,049 contacts with "basic": the dense method alone serves it, and its N x N matrices would
+  // take 8 N^2 bytes (32 MiB at the limit, 80 GB at 100,000 contacts); refused before any is made.
+  impulse::SolverOptions basic;
+  basic.dependent = DependentPolicy::basic;
+  CHECK_NOTHROW(impulse::require_dense_fits(impulse::dense_limit, basic));
+  CHECK_THROWS_WITH(impulse::require_dense_fits(impulse::dense_limit + 1, basic),
+                    Catch::Matchers::StartsWith(
+                        "2049 contacts with the policies \"basic\" and \"least-squares\", which "
+                        "only the dense method serves: it takes at most 2048"));
+  CHECK_NOTHROW(impulse::require_dense_fits(100'000, impulse::SolverOptions{}));
+  // impulse::solve itself refuses such a system (a sparse one of 2,049 contacts, empty).
+  const impulse::ContactSystem many(impulse::dense_limit + 1, impulse::Storage::sparse);
+  CHECK_THROWS_AS(impulse::solve(many, basic), impulse::InvalidInput);
 }

@@ -40,13 +40,14 @@ Eigen::SparseMatrix<double> sparse(const MatrixXd& A) {
 }  // namespace
 
 TEST_CASE("Method names", "[methods]") {
-  for (const auto m : {me::Method::simultaneous, me::Method::complementarity, me::Method::serial}) {
-    CHECK(me::method_named(me::to_string(m)) == m);
+  for (const auto m : me::all_methods) {
+    CHECK(impulse::value_named<me::Method>(impulse::name_of(m)) == m);
   }
-  CHECK(me::to_string(me::Method::complementarity) == "complementarity");
-  CHECK_FALSE(me::method_named("sequential").has_value());
-  CHECK(me::to_string(me::LcpAlgorithm::projected_gauss_seidel) == "projected-gauss-seidel");
-  CHECK(me::to_string(me::SerialStatus::collision_limit) == "collision-limit");
+  CHECK(impulse::name_of(me::Method::complementarity) == "complementarity");
+  CHECK_FALSE(impulse::value_named<me::Method>("sequential").has_value());
+  CHECK(impulse::name_of(me::LcpAlgorithm::projected_gauss_seidel) == "projected-gauss-seidel");
+  CHECK(impulse::name_of(me::LcpStatus::iteration_limit) == "iteration-limit");
+  CHECK(impulse::name_of(me::SerialStatus::collision_limit) == "collision-limit");
 }
 
 TEST_CASE("Lemke: a positive definite system with one contact released", "[methods]") {
@@ -252,7 +253,7 @@ TEST_CASE("A contact that no movable body touches: a zero row, a zero impulse", 
   for (const auto algorithm : {me::LcpAlgorithm::active_set, me::LcpAlgorithm::lemke,
                                me::LcpAlgorithm::projected_gauss_seidel}) {
     for (const bool warm : {true, false}) {
-      CAPTURE(me::to_string(algorithm), warm);
+      CAPTURE(impulse::name_of(algorithm), warm);
       me::ComplementarityOptions options;
       options.algorithm = algorithm;
       options.warm_start = warm;

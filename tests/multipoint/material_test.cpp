@@ -24,6 +24,27 @@ Vector2d velocity(const Body& b) {
   return std::get<PointMass>(b).p / std::get<PointMass>(b).mass;
 }
 
+// Whether two states of the same bodies are equal to the last bit.
+bool same(const std::vector<Body>& a, const std::vector<Body>& b) {
+  if (a.size() != b.size()) {
+    return false;
+  }
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (const auto* p = std::get_if<PointMass>(&a[k])) {
+      const auto& q = std::get<PointMass>(b[k]);
+      if (!(p->mass == q.mass && p->p == q.p)) {
+        return false;
+      }
+    } else if (const auto* r = std::get_if<impulse::rigid_2d::RigidBody>(&a[k])) {
+      const auto& s = std::get<impulse::rigid_2d::RigidBody>(b[k]);
+      if (!(r->p == s.p && r->L == s.L && r->mass == s.mass && r->position == s.position)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 std::vector<Elasticity> random_elasticities(t::Sampler& sample, std::size_t count, double low,
                                             double high) {
   std::vector<Elasticity> result;
@@ -201,6 +222,41 @@ TEST_CASE("Bad scenes are refused with the place and the value", "[section4][err
                     "elasticities must give one value per body (2), got 1");
   CHECK_THROWS_WITH(mp::apply_impulses(two, ok, Eigen::VectorXd::Zero(3)),
                     "Fdt must give one impulse per contact (1), got 3");
+}
+
+TEST_CASE("A configuration is checked once; what it computes is what the free functions compute",
+          "[section4]") {
+  // The free functions check their arguments, then do the work of a Configuration's members:
+  // the same system, approach speeds and bodies after, to the last bit.
+  t::Sampler sample("configuration");
+  for (int i = 0; i < t::configurations; ++i) {
+    const auto scene = t::random_scene(sample, t::Kinds::material_and_rigid, true);
+    const auto es = random_elasticities(sample, scene.bodies.size(), 0, 3);
+    const mp::Configuration configuration(scene.bodies, es, scene.contacts);
+    const auto system = configuration.assemble();
+    const auto free = mp::assemble(scene.bodies, es, scene.contacts);
+    CAPTURE(i);
+    REQUIRE(system.B() == free.B());
+    REQUIRE(system.A() == free.A());
+    REQUIRE(configuration.approach(scene.bodies) == mp::approach(scene.bodies, scene.contacts));
+    const Eigen::VectorXd Fdt =
+        Eigen::VectorXd::Ones(static_cast<Eigen::Index>(scene.contacts.size()));
+    const auto after = configuration.after(Fdt);
+    REQUIRE(same(after, mp::apply_impulses(scene.bodies, scene.contacts, Fdt)));
+    // One contact's impulse at a time, in contact order: the same bodies after.
+    std::vector<Body> stepwise(scene.bodies.begin(), scene.bodies.end());
+    for (Eigen::Index v = 0; v < Fdt.size(); ++v) {
+      configuration.apply(stepwise, v, 1.0);
+    }
+    REQUIRE(same(stepwise, after));
+  }
+  // Bad input is refused when the configuration is made, with the free functions' messages.
+  const std::vector<Body> two{PointMass{1, {1, 0}}, PointMass{1, {0, 0}}};
+  CHECK_THROWS_WITH(mp::Configuration(two, {Elasticity::elastic(), Elasticity::elastic()},
+                                      {{0, 1, {0.6, 0.6}, {0, 0}}}),
+                    Catch::Matchers::StartsWith("contacts[0].normal must be a unit vector"));
+  CHECK_THROWS_WITH(mp::Configuration(two, {Elasticity::elastic()}, {{0, 1, {1, 0}, {0, 0}}}),
+                    "elasticities must give one value per body (2), got 1");
 }
 
 TEST_CASE("Factoring G or factoring A gives the same impulses", "[section4][property]") {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Scene files: reading (all or nothing, every refusal named) and the JSON report.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -58,6 +59,58 @@ TEST_CASE("A scene file is read field by field", "[scene][json]") {
   CHECK(s.contacts[0].normal == Vector2d(1, 0));
   CHECK_FALSE(s.contacts[0].point.has_value());
   CHECK(s.solver.dependent == impulse::DependentPolicy::minimum_norm);
+}
+
+TEST_CASE("A normal may be given as an angle in degrees", "[scene][json]") {
+  // "normal_angle": 90 is the normal [0, 1] exactly (not [6e-17, 1]), 210 is
+  // [cos 210°, sin 210°] = [-sqrt(3)/2, -1/2].
+  const auto with_contact = [](const std::string& contact) {
+    return R"({"dimension": 2, "elasticity": 2,
+      "bodies": [{"name": "a", "kind": "material", "mass": 1, "velocity": [0, 1]},
+                 {"name": "b", "kind": "material", "mass": 1, "velocity": [0, 0]}],
+      "contacts": [)" +
+           contact + "]}";
+  };
+  const sc::Scene up = sc::parse_scene(
+      with_contact(R"({"bumper": "a", "wedge": "b", "normal_angle": 90})"), "s.json");
+  CHECK(up.contacts[0].normal == Vector2d(0, 1));
+  const sc::Scene down = sc::parse_scene(
+      with_contact(R"({"bumper": "a", "wedge": "b", "normal_angle": 210})"), "s.json");
+  CHECK(down.contacts[0].normal.x() == Approx(-std::sqrt(3.0) / 2).epsilon(1e-15));
+  CHECK(down.contacts[0].normal.y() == Approx(-0.5).epsilon(1e-15));
+  // The same collision as the normal [0, 1]: a (velocity (0, 1)) stops, b leaves at (0, 1).
+  const auto r = sc::solve(up);
+  CHECK((r.bodies[1].after.velocity - Vector2d(0, 1)).norm() < 1e-15);
+  CHECK(r.notes.empty());
+  CHECK_THROWS_WITH(sc::parse_scene(with_contact(R"({"bumper": "a", "wedge": "b", "normal": [0, 1],
+                                       "normal_angle": 90})"),
+                                    "s.json"),
+                    "s.json: contacts[0]: give either \"normal\" or \"normal_angle\", not both");
+  CHECK_THROWS_WITH(sc::parse_scene(with_contact(R"({"bumper": "a", "wedge": "b"})"), "s.json"),
+                    "s.json: contacts[0]: missing \"normal\" (or \"normal_angle\"), which every "
+                    "contact needs");
+  CHECK_THROWS_WITH(sc::parse_scene(R"({"dimension": 1, "elasticity": 2,
+      "bodies": [{"name": "a", "kind": "material", "mass": 1, "velocity": 1},
+                 {"name": "b", "kind": "material", "mass": 1, "velocity": 0}],
+      "contacts": [{"bumper": "a", "wedge": "b", "normal_angle": 0}]})",
+                                    "s.json"),
+                    "s.json: contacts[0].normal_angle: does not apply in dimension 1 (give "
+                    "\"normal\": +1 or -1)");
+}
+
+TEST_CASE("A normal not of unit length is made unit, and the JSON report notes it",
+          "[scene][json]") {
+  std::string text = worked_example;
+  text.replace(text.find("[1, 0]}]"), 6, "[3, 0]");
+  const auto json = sc::to_json(sc::solve(sc::parse_scene(text, "s.json")));
+  REQUIRE(json.contains("notes"));
+  CHECK(json["notes"][0] ==
+        "contacts[0].normal [3, 0] is not of unit length (length 3): used as [1, 0]");
+  // [3, 0] / 3 is [1, 0] exactly: the worked example's impulse to the last digit.
+  const auto plain = sc::to_json(sc::solve(sc::parse_scene(worked_example, "s.json")));
+  CHECK(json["impulses"][0]["magnitude"] == plain["impulses"][0]["magnitude"]);
+  // Without a change, no "notes": the scene format's report exactly.
+  CHECK_FALSE(plain.contains("notes"));
 }
 
 TEST_CASE("A 1D scene lies on the x axis, rigid bodies read their rotation", "[scene][json]") {

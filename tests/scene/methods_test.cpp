@@ -3,10 +3,12 @@
 // refused like the other keys, the result of each method, and its JSON report.
 #include <catch2/catch.hpp>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "impulse/core/error.hpp"
 #include "impulse/scene/json.hpp"
+#include "impulse/scene/report.hpp"
 
 using impulse::InvalidInput;
 namespace sc = impulse::scene;
@@ -97,14 +99,20 @@ TEST_CASE("Each method's result: the impulses, the bodies after, the system's di
   }
   CHECK_THAT(velocities(lcp), Catch::Matchers::Approx(std::vector<double>{-2, 1, 2.5}));
   CHECK(lcp.method == me::Method::complementarity);
-  CHECK(lcp.complementarity.status == me::LcpStatus::solved);
-  CHECK(lcp.system.residual == Approx(0.0).margin(1e-13));
+  CHECK(std::get<me::ComplementaritySolution>(lcp.outcome.solution).status ==
+        me::LcpStatus::solved);
+  CHECK(lcp.outcome.residual == Approx(0.0).margin(1e-13));
   CHECK_THAT(velocities(serial), Catch::Matchers::Approx(std::vector<double>{-1.5, 0, 3}));
   CHECK(serial.impulses[0].magnitude == Approx(4.5));
-  CHECK(serial.serial.order == std::vector<Eigen::Index>{0, 1, 0});
+  CHECK(std::get<me::SerialDiagnostics>(serial.outcome.solution).order ==
+        std::vector<Eigen::Index>{0, 1, 0});
   // Serial's impulses do not solve the paper's system: |A F - B| = |(9 - 4.5 - 6, -4.5 + 9 - 3)|
-  // = |(-1.5, 1.5)| = 1.5 sqrt 2.
-  CHECK(serial.system.residual == Approx(1.5 * std::sqrt(2.0)).epsilon(1e-14));
+  // = |(-1.5, 1.5)| = 1.5 sqrt 2. The system itself keeps the paper's own solution, F = (5, 4),
+  // whose residual is 0: rank, consistency and residual describe the same vector.
+  CHECK(serial.outcome.residual == Approx(1.5 * std::sqrt(2.0)).epsilon(1e-14));
+  CHECK(serial.outcome.Fdt.isApprox(Eigen::Vector2d(4.5, 4.5), 1e-14));
+  CHECK(serial.system.Fdt.isApprox(Eigen::Vector2d(5, 4), 1e-14));
+  CHECK(serial.system.residual == Approx(0.0).margin(1e-13));
   // The approach after of serial: (-1.5 - 0, 0 - 3) = (-1.5, -3).
   CHECK(serial.contacts[0].approach_after == Approx(-1.5));
   CHECK(serial.contacts[1].approach_after == Approx(-3));
@@ -113,9 +121,48 @@ TEST_CASE("Each method's result: the impulses, the bodies after, the system's di
   const auto cut = sc::solve(
       sc::parse_scene(two_hit_one(R"({"method": "serial", "max_collisions": 2})"), "s.json"));
   CHECK_FALSE(sc::finished(cut));
-  CHECK(cut.serial.status == me::SerialStatus::collision_limit);
-  CHECK(cut.serial.still_approaching == 0);
-  CHECK(cut.serial.approach_left == Approx(1.5));
+  const auto& diagnostics = std::get<me::SerialDiagnostics>(cut.outcome.solution);
+  CHECK(diagnostics.status == me::SerialStatus::collision_limit);
+  CHECK(diagnostics.still_approaching == 0);
+  CHECK(diagnostics.approach_left == Approx(1.5));
+  // The method's sentence names the contact as the scene does.
+  CHECK_THAT(sc::unfinished_message(cut, "s.json"),
+             Catch::Matchers::StartsWith("s.json: serial collisions did not end: after 2 "
+                                         "collisions (the bound: solver.max_collisions, by "
+                                         "default 1000 per contact), contact 0 (a\u2013b) still "
+                                         "approaches at 1.5"));
+}
+
+TEST_CASE("One system for every method: --compare assembles and solves it once",
+          "[scene][methods]") {
+  const sc::World world(sc::parse_scene(two_hit_one(""), "s.json"));
+  const std::vector<sc::Result> all = sc::resolve(world, me::all_methods);
+  REQUIRE(all.size() == 3);
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    CHECK(all[k].method == me::all_methods[k]);
+    // The same solved system in each: the paper's impulses (5, 4).
+    CHECK(all[k].system.Fdt.isApprox(Eigen::Vector2d(5, 4), 1e-14));
+  }
+  CHECK(all[2].outcome.Fdt.isApprox(Eigen::Vector2d(4.5, 4.5), 1e-14));
+}
+
+TEST_CASE("A method's per-contact values reach both reports without a switch on the method",
+          "[scene][json][methods]") {
+  // What Coulomb friction will add: a tangential impulse and how each contact ended. Added here
+  // by hand to a solved result, they must appear in each entry of "impulses" and as columns of
+  // the text report's table of impulses.
+  sc::Result r = sc::solve(sc::parse_scene(two_hit_one(""), "s.json"));
+  r.outcome.per_contact.push_back({"tangential", "tangential", std::vector<double>{0.25, -0.5}});
+  r.outcome.per_contact.push_back({"slip", "ends", std::vector<std::string>{"stick", "slip"}});
+  const auto json = sc::to_json(r);
+  CHECK(json["impulses"][0]["tangential"] == 0.25);
+  CHECK(json["impulses"][1]["slip"] == "slip");
+  CHECK(keys(json["impulses"][0]) == std::vector<std::string>{"contact", "bumper", "wedge",
+                                                              "magnitude", "on_bumper",
+                                                              "tangential", "slip"});
+  const std::string text = sc::text_report(r, "s.json", false);
+  CHECK_THAT(text, Catch::Matchers::Contains("on bumper  tangential  ends"));
+  CHECK_THAT(text, Catch::Matchers::Contains("0.25  stick"));
 }
 
 TEST_CASE("The JSON report names the method and adds its diagnostics", "[scene][json][methods]") {

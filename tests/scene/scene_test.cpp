@@ -276,6 +276,24 @@ TEST_CASE("with_elasticity overrides every body's own elasticity", "[scene]") {
   CHECK(at_one.elasticity == 1.0);
 }
 
+TEST_CASE("A world at another elasticity is the scene at that elasticity", "[scene]") {
+  // What sweep does: only the elasticities change (the bodies and contacts were checked once).
+  Scene s = worked_example();
+  s.elasticity.reset();
+  s.bodies[0].elasticity = 2.0;
+  s.bodies[1].elasticity = 1.0;
+  const sc::World world(s);
+  for (const double e : {0.0, 0.5, 1.0, 1.7, 2.0, 3.0}) {
+    CAPTURE(e);
+    const auto by_world = sc::resolve(world.with_elasticity(e));
+    const auto by_scene = sc::solve(sc::with_elasticity(s, e));
+    CHECK(by_world.impulses[0].magnitude == by_scene.impulses[0].magnitude);
+    // (1.3) at one elasticity: Fdt (1 + 1) = e 1.5, so Fdt = 0.75 e.
+    CHECK(by_world.impulses[0].magnitude == Approx(0.75 * e).margin(1e-15));
+  }
+  CHECK_THROWS_WITH(world.with_elasticity(-1), "elasticity: must be finite and at least 0, got -1");
+}
+
 TEST_CASE("Bad scenes are refused with the place, the rule and the value", "[scene][errors]") {
   using Catch::Matchers::Contains;
   const auto refused = [](Scene s) { return sc::solve(s); };
@@ -348,16 +366,34 @@ TEST_CASE("Bad scenes are refused with the place, the rule and the value", "[sce
   }
   {
     Scene s = worked_example();
-    s.contacts[0].normal = {0.6, 0.6};
-    CHECK_THROWS_WITH(refused(s), Contains("contacts[0].normal: must be a unit vector (length 1 "
-                                           "within 1e-09), got [0.6, 0.6] of length 0.848528"));
+    s.contacts[0].normal = {0, 0};
+    CHECK_THROWS_WITH(refused(s),
+                      "contacts[0].normal: must be a finite non-zero vector, got [0, 0]");
   }
   {
     Scene s = worked_example();
     s.dimension = 1;
-    s.contacts[0].normal = {0.5, 0};
+    s.contacts[0].normal = {0, 0};
     s.bodies[0].linear = {1.5, 0};
-    CHECK_THROWS_WITH(refused(s), "contacts[0].normal: must be +1 or -1 (within 1e-09), got 0.5");
+    CHECK_THROWS_WITH(refused(s),
+                      "contacts[0].normal: must be a non-zero number (+1 or -1: its "
+                      "sign is the direction), got 0");
+  }
+  {
+    Scene s = worked_example();
+    s.serial.max_collisions = 2'000'000'000;
+    CHECK_THROWS_WITH(refused(s),
+                      "solver.max_collisions: must be at most 1000000000, got 2000000000");
+  }
+  {
+    // The dense method's limit is the library's rule: a scene built in C++ is refused as a file
+    // is, before any matrix is made (3,000 contacts with "basic" would need 72 MB matrices; at
+    // 100,000, 80 GB).
+    Scene s = worked_example();
+    s.contacts.assign(3'000, s.contacts[0]);
+    s.solver.dependent = impulse::DependentPolicy::basic;
+    CHECK_THROWS_WITH(refused(s), Catch::Matchers::StartsWith(
+                                      "contacts: 3000 contacts with the policies \"basic\""));
   }
   {
     Scene s = box_on_ground(1.5);
@@ -376,6 +412,41 @@ TEST_CASE("Bad scenes are refused with the place, the rule and the value", "[sce
     s.contacts.clear();
     CHECK_THROWS_WITH(refused(s), "contacts: must hold at least one contact, got none");
   }
+}
+
+TEST_CASE("A normal of any length is made unit, and the report says so", "[scene]") {
+  // [2, 0] is the worked example's normal at twice the length: the same collision, exactly
+  // (2 / 2 is exact), and a note that names the place, the length and the normal used.
+  Scene doubled = worked_example();
+  doubled.contacts[0].normal = {2, 0};
+  const auto r = sc::solve(doubled);
+  const auto reference = sc::solve(worked_example());
+  CHECK(r.impulses[0].magnitude == reference.impulses[0].magnitude);
+  CHECK(r.bodies[1].after.velocity == reference.bodies[1].after.velocity);
+  REQUIRE(r.notes.size() == 1);
+  CHECK(r.notes[0] == "contacts[0].normal [2, 0] is not of unit length (length 2): used as [1, 0]");
+  CHECK(reference.notes.empty());
+  // A student's [0.7071, 0.7071] (length 0.99998, off by 2e-5): the diagonal, as if typed to
+  // every digit. The puck a (m 1, velocity (1.5, 0)) hits b at rest along n = (1, 1)/sqrt(2):
+  // (1.3) on the cast, u = 1.5/sqrt(2), Fdt = 2 u / 2 = 1.5/sqrt(2), and a keeps (0.75, -0.75).
+  Scene oblique = worked_example();
+  oblique.contacts[0].normal = {0.7071, 0.7071};
+  const auto o = sc::solve(oblique);
+  CHECK(o.impulses[0].magnitude == Approx(1.5 / std::sqrt(2.0)).epsilon(1e-15));
+  CHECK((o.bodies[0].after.velocity - Vector2d(0.75, -0.75)).norm() < 1e-15);
+  CHECK_THAT(o.notes.at(0), Catch::Matchers::StartsWith(
+                                "contacts[0].normal [0.7071, 0.7071] is not of unit length"));
+  // On a line, 0.5 is the direction +1.
+  Scene line = worked_example();
+  line.dimension = 1;
+  line.contacts[0].normal = {0.5, 0};
+  const auto l = sc::solve(line);
+  CHECK(l.impulses[0].magnitude == reference.impulses[0].magnitude);
+  CHECK(l.notes.at(0) == "contacts[0].normal 0.5 is not of unit length (length 0.5): used as 1");
+  // Within 1e-9 of unit length: kept as given, no note (the scene format's unit normals).
+  Scene almost = worked_example();
+  almost.contacts[0].normal = {1 + 0.5e-9, 0};
+  CHECK(sc::solve(almost).notes.empty());
 }
 
 TEST_CASE("Numbers beyond doubles give a non-finite status, not a wrong number", "[scene]") {

@@ -219,25 +219,8 @@ class Decider {
     // The step a multiple of an equation before (the most common step: that equation rewritten,
     // multiplied or divided by a factor): it follows wherever that equation holds. Tried first:
     // it needs no factoring.
-    for (const ex& p : numerators) {
-      if (const auto quotient = divides(p, target)) {
-        Found found;
-        found.outcome = Outcome::holds;
-        found.how.push_back(is_a<numeric>(*quotient)
-                                ? "the step is the equation before, rewritten"
-                                : "the step is the equation before times " + text(*quotient));
-        return found;
-      }
-      // The equation before is the step times a factor the facts keep from zero: the step is
-      // that equation divided by it.
-      if (const auto quotient = divides(target, p);
-          quotient && doubtful_factors(*quotient, facts_).empty()) {
-        Found found;
-        found.outcome = Outcome::holds;
-        found.how.push_back("the step is the equation before divided by " + text(*quotient) +
-                            ", which is not zero");
-        return found;
-      }
+    if (auto found = multiple(numerators, target, true)) {
+      return *found;
     }
     // A premise linear in a symbol whose coefficient the facts keep from zero: substitute it
     // (before any factoring, which costs more).
@@ -269,15 +252,8 @@ class Decider {
       return leaf(frame, target);
     }
     // A multiple of a premise's doubtful factors (the factors the facts keep from zero dropped).
-    for (const ex& p : singles) {
-      if (const auto quotient = divides(p, target)) {
-        Found found;
-        found.outcome = Outcome::holds;
-        found.how.push_back(is_a<numeric>(*quotient)
-                                ? "the step is the equation before, rewritten"
-                                : "the step is the equation before times " + text(*quotient));
-        return found;
-      }
+    if (auto found = multiple(singles, target, false)) {
+      return *found;
     }
     if (const auto choice = best_linear(singles, frame.target, true)) {
       return eliminate(frame, singles, *choice);
@@ -438,6 +414,34 @@ class Decider {
     unknown_case.residual = frame.target;
     unknown_case.how.push_back(cases_text + ": some case could not be decided");
     return unknown_case;
+  }
+
+  // The target a multiple of a premise (it follows wherever that premise holds), or, with
+  // `divided`, a premise the target times a factor the facts keep from zero.
+  std::optional<Found> multiple(const std::vector<ex>& premises, const ex& target,
+                                bool divided) const {
+    for (const ex& p : premises) {
+      if (const auto quotient = divides(p, target)) {
+        Found found;
+        found.outcome = Outcome::holds;
+        found.how.push_back(is_a<numeric>(*quotient)
+                                ? "the step is the equation before, rewritten"
+                                : "the step is the equation before times " + text(*quotient));
+        return found;
+      }
+      if (!divided) {
+        continue;
+      }
+      if (const auto quotient = divides(target, p);
+          quotient && doubtful_factors(*quotient, facts_).empty()) {
+        Found found;
+        found.outcome = Outcome::holds;
+        found.how.push_back("the step is the equation before divided by " + text(*quotient) +
+                            ", which is not zero");
+        return found;
+      }
+    }
+    return std::nullopt;
   }
 
   // The quotient target / p when it is a polynomial (p divides the target exactly).

@@ -666,24 +666,7 @@ class Parser {
 
   // The argument of ^: a braced group, or one character or command.
   Node script(std::size_t depth, const Token& caret) {
-    const Token& next = peek();
-    if (is_char(next, '{')) {
-      const Token open = take();
-      if (is_char(peek(), '}')) {
-        throw error(peek(), "expected an exponent inside the braces");
-      }
-      Node inner = expression(depth + 1);
-      expect_char('}', open, "exponent");
-      return inner;
-    }
-    if (next.kind == Tok::number) {
-      return single_digit(next);
-    }
-    if (next.kind == Tok::letter || (next.kind == Tok::command && greek.contains(next.text))) {
-      return symbol_atom(depth);
-    }
-    throw error(next, "expected an exponent after '^' at " + where(caret) +
-                          " (a digit, a letter or {…}), found " + describe(next));
+    return argument(depth, caret, "an exponent after '^'");
   }
 
   // LaTeX takes one character from a number after ^ or _ : x^23 is x^2 times 3.
@@ -894,8 +877,8 @@ class Parser {
     return first;
   }
 
-  // A braced argument of a command ({…}), or a single token (\frac12).
-  Node argument(std::size_t depth, const Token& command_token) {
+  // A braced argument of a command or of ^ ({…}), or a single token (\frac12, x^2).
+  Node argument(std::size_t depth, const Token& before, const std::string& what = "") {
     const Token& next = peek();
     if (is_char(next, '{')) {
       const Token open = take();
@@ -907,8 +890,9 @@ class Parser {
     if (next.kind == Tok::letter || (next.kind == Tok::command && greek.contains(next.text))) {
       return symbol_atom(depth);
     }
-    throw error(
-        next, "expected an argument {…} after " + command_token.text + ", found " + describe(next));
+    throw error(next, "expected " + (what.empty() ? "an argument after " + before.text : what) +
+                          " at " + where(before) + " (a digit, a letter or {…}), found " +
+                          describe(next));
   }
 
   Node command(std::size_t depth) {

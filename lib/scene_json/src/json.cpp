@@ -12,11 +12,15 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "impulse/core/error.hpp"
+#include "impulse/core/normal.hpp"
+#include "impulse/scene/report.hpp"
 
 namespace impulse::scene {
 
@@ -299,11 +303,10 @@ const std::vector<std::string_view> material_keys{"name",     "kind",     "mass"
                                                   "velocity", "momentum", "elasticity"};
 const std::vector<std::string_view> rigid_keys = body_keys;
 const std::vector<std::string_view> static_keys{"name", "kind"};
-const std::vector<std::string_view> contact_keys{"bumper", "wedge", "normal", "point"};
+const std::vector<std::string_view> contact_keys{"bumper", "wedge", "normal", "normal_angle",
+                                                 "point"};
 const std::vector<std::string_view> solver_keys{"dependent", "inconsistent", "method",
                                                 "max_collisions"};
-// The largest bound on serial collisions a scene may ask for (each costs a scan of the contacts).
-constexpr double most_collisions = 1e9;
 
 std::string join(const std::vector<std::string_view>& words) {
   std::string text;
@@ -331,14 +334,15 @@ class Reader {
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       scene.bodies.push_back(body(bodies[i], element("bodies", i)));
     }
+    try {
+      // The library's rule, before the contacts look names up: a repeated name is reported as
+      // such, not as an unknown one.
+      validate_names(scene.bodies);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(source_ + ": " + e.what());
+    }
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-      // Before the contacts look names up, so that a repeated name is reported as such.
-      const auto [seen, fresh] = names_.emplace(scene.bodies[i].name, i);
-      if (!fresh) {
-        fail(child(element("bodies", i), "name"), in_quotes(scene.bodies[i].name) +
-                                                      " is already the name of " +
-                                                      element("bodies", seen->second));
-      }
+      names_.emplace(scene.bodies[i].name, i);
       ordered_names_.push_back(scene.bodies[i].name);
     }
     const json& contacts = required(document, "", "contacts", "the scene");
@@ -349,7 +353,6 @@ class Reader {
     if (const json* s = optional(document, "solver")) {
       solver(*s, "solver", scene);
     }
-    refuse_dense_beyond_limit(scene);
     return scene;
   }
 
@@ -464,20 +467,14 @@ class Reader {
     return {number(value[0], element(path, 0)), number(value[1], element(path, 1))};
   }
 
-  template <typename T>
-  T member_of(const json& value, std::string_view path,
-              const std::vector<std::pair<std::string_view, T>>& choices) const {
+  // A name of the enum's table (impulse::EnumNames), or a refusal that lists them.
+  template <typename Enum>
+  Enum member_of(const json& value, std::string_view path) const {
     const std::string text = string(value, path);
-    std::string names;
-    for (const auto& [name, choice] : choices) {
-      if (text == name) {
-        return choice;
-      }
-      names.append(names.empty() ? "" : ", ").append(in_quotes(name));
+    if (const auto choice = value_named<Enum>(text)) {
+      return *choice;
     }
-    std::string message("expected one of ");
-    message.append(names).append(", got ").append(in_quotes(text));
-    fail(path, message);
+    fail(path, "expected one of " + quoted_names<Enum>() + ", got " + in_quotes(text));
   }
 
   Body body(const json& value, const std::string& path) const {
@@ -485,11 +482,8 @@ class Reader {
     refuse_unknown_keys(value, path, body_keys, body_keys, "");
     Body b;
     b.name = string(required(value, path, "name", "every body"), child(path, "name"));
-    b.kind = member_of<BodyKind>(required(value, path, "kind", "every body"), child(path, "kind"),
-                                 {{"material", BodyKind::material},
-                                  {"rigid", BodyKind::rigid},
-                                  {"static", BodyKind::static_body}});
-    const std::string kind(to_string(b.kind));
+    b.kind = member_of<BodyKind>(required(value, path, "kind", "every body"), child(path, "kind"));
+    const std::string kind(name_of(b.kind));
     switch (b.kind) {
       case BodyKind::material:
         refuse_unknown_keys(value, path, material_keys, body_keys, kind);
@@ -500,9 +494,6 @@ class Reader {
       case BodyKind::static_body:
         refuse_unknown_keys(value, path, static_keys, body_keys, kind);
         return b;  // immovable: nothing more to read
-    }
-    if (b.kind == BodyKind::rigid && dimension_ != 2) {
-      fail(child(path, "kind"), "a rigid body needs dimension 2, this scene has dimension 1");
     }
     const std::string owner = "a " + kind + " body";
     b.mass = number(required(value, path, "mass", owner), child(path, "mass"));
@@ -561,7 +552,24 @@ class Reader {
     Contact c;
     c.bumper = body_named(required(value, path, "bumper", "every contact"), child(path, "bumper"));
     c.wedge = body_named(required(value, path, "wedge", "every contact"), child(path, "wedge"));
-    c.normal = vector(required(value, path, "normal", "every contact"), child(path, "normal"));
+    const json* normal = optional(value, "normal");
+    const json* angle = optional(value, "normal_angle");
+    if (normal != nullptr && angle != nullptr) {
+      fail(path, "give either \"normal\" or \"normal_angle\", not both");
+    }
+    if (normal == nullptr && angle == nullptr) {
+      fail(path, "missing \"normal\" (or \"normal_angle\"), which every contact needs");
+    }
+    if (normal != nullptr) {
+      c.normal = vector(*normal, child(path, "normal"));
+    } else if (dimension_ != 2) {
+      fail(child(path, "normal_angle"),
+           "does not apply in dimension 1 (give \"normal\": +1 or -1)");
+    } else {
+      // Degrees counter-clockwise from the x axis, exact at multiples of 90 (a finite number:
+      // the reader refuses any other).
+      c.normal = UnitNormal::from_degrees(number(*angle, child(path, "normal_angle"))).vector();
+    }
     if (const json* point = optional(value, "point")) {
       c.point = vector(*point, child(path, "point"));
     }
@@ -575,54 +583,25 @@ class Reader {
     refuse_unknown_keys(value, path, solver_keys, solver_keys, "");
     SolverOptions& options = scene.solver;
     if (const json* d = optional(value, "dependent")) {
-      options.dependent = member_of<DependentPolicy>(
-          *d, child(path, "dependent"),
-          {{to_string(DependentPolicy::minimum_norm), DependentPolicy::minimum_norm},
-           {to_string(DependentPolicy::basic), DependentPolicy::basic}});
+      options.dependent = member_of<DependentPolicy>(*d, child(path, "dependent"));
     }
     if (const json* i = optional(value, "inconsistent")) {
-      options.inconsistent = member_of<InconsistentPolicy>(
-          *i, child(path, "inconsistent"),
-          {{to_string(InconsistentPolicy::least_squares), InconsistentPolicy::least_squares},
-           {to_string(InconsistentPolicy::drop_equation), InconsistentPolicy::drop_equation}});
+      options.inconsistent = member_of<InconsistentPolicy>(*i, child(path, "inconsistent"));
     }
     if (const json* m = optional(value, "method")) {
-      using methods::Method;
-      scene.method =
-          member_of<Method>(*m, child(path, "method"),
-                            {{methods::to_string(Method::simultaneous), Method::simultaneous},
-                             {methods::to_string(Method::complementarity), Method::complementarity},
-                             {methods::to_string(Method::serial), Method::serial}});
+      scene.method = member_of<methods::Method>(*m, child(path, "method"));
     }
     if (const json* c = optional(value, "max_collisions")) {
+      // The type is a whole number of collisions, at least 1 (0 is not written: a scene without
+      // the key gets the default); the bound above is the scene's rule, the same number.
       const std::string where = child(path, "max_collisions");
+      const double most = static_cast<double>(methods::most_collisions);
       const double bound = c->is_number() ? c->get<double>() : 0.0;
-      if (!(bound >= 1.0 && bound <= most_collisions && bound == std::floor(bound))) {
-        expected(*c, where, "a whole number from 1 to 1000000000");
+      if (!(bound >= 1.0 && bound <= most && bound == std::floor(bound))) {
+        expected(*c, where, "a whole number from 1 to " + std::to_string(methods::most_collisions));
       }
       scene.serial.max_collisions = static_cast<std::int64_t>(bound);
     }
-  }
-
-  // The policies other than the defaults are served by the dense method only (see
-  // impulse::SolveMethod), whose N×N matrices grow as the square of the contacts.
-  void refuse_dense_beyond_limit(const Scene& scene) const {
-    const bool dense_only = scene.solver.dependent != DependentPolicy::minimum_norm ||
-                            scene.solver.inconsistent != InconsistentPolicy::least_squares;
-    if (!dense_only || scene.contacts.size() <= limits_.max_dense_contacts) {
-      return;
-    }
-    std::string message(std::to_string(scene.contacts.size()));
-    message.append(" contacts with the policies \"")
-        .append(to_string(scene.solver.dependent))
-        .append("\" and \"")
-        .append(to_string(scene.solver.inconsistent))
-        .append("\", which only the dense method serves: it takes at most ")
-        .append(std::to_string(limits_.max_dense_contacts))
-        .append(
-            " (its matrices grow as the square of the contacts); the default policies solve "
-            "large scenes with the sparse method");
-    fail("contacts", message);
   }
 
   std::string source_;
@@ -658,7 +637,7 @@ std::string too_large_message(std::string_view source, std::size_t max_bytes) {
   return message;
 }
 
-Scene parse_scene(std::string_view text, std::string_view source, const ReadLimits& limits) {
+World parse_world(std::string_view text, std::string_view source, const ReadLimits& limits) {
   const json document = parse_document(text, source, limits);
   Scene scene;
   try {
@@ -670,13 +649,16 @@ Scene parse_scene(std::string_view text, std::string_view source, const ReadLimi
     throw InvalidInput(message);
   }
   try {
-    validate(scene);
+    return World(std::move(scene));  // the scene format's rules: the library's, with the place
   } catch (const InvalidInput& e) {
     std::string message(source);
     message.append(": ").append(e.what());
     throw InvalidInput(message);
   }
-  return scene;
+}
+
+Scene parse_scene(std::string_view text, std::string_view source, const ReadLimits& limits) {
+  return parse_world(text, source, limits).scene();
 }
 
 std::string read_file(const std::string& path, std::size_t max_bytes) {
@@ -719,18 +701,55 @@ Scene load_scene(const std::string& path, const ReadLimits& limits) {
   return parse_scene(read_file(path, limits.max_bytes), path, limits);
 }
 
+World load_world(const std::string& path, const ReadLimits& limits) {
+  return parse_world(read_file(path, limits.max_bytes), path, limits);
+}
+
+namespace {
+nlohmann::ordered_json value_json(const methods::Value& value) {
+  return std::visit(
+      [](const auto& v) -> nlohmann::ordered_json {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, double>) {
+          return clean(v);
+        } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+          nlohmann::ordered_json list = nlohmann::ordered_json::array();
+          for (const double x : v) {
+            list.push_back(clean(x));
+          }
+          return list;
+        } else {
+          return v;
+        }
+      },
+      value);
+}
+}  // namespace
+
 nlohmann::ordered_json to_json(const Result& result) {
   using ojson = nlohmann::ordered_json;
   const int d = result.dimension;
+  const methods::Outcome& o = result.outcome;
   ojson out = ojson::object();
 
   ojson impulses = ojson::array();
-  for (const ImpulseReport& i : result.impulses) {
-    impulses.push_back({{"contact", i.contact},
-                        {"bumper", i.bumper},
-                        {"wedge", i.wedge},
-                        {"magnitude", clean(i.magnitude)},
-                        {"on_bumper", vector_json(i.on_bumper, d)}});
+  for (std::size_t v = 0; v < result.impulses.size(); ++v) {
+    const ImpulseReport& i = result.impulses[v];
+    ojson entry = {{"contact", i.contact},
+                   {"bumper", i.bumper},
+                   {"wedge", i.wedge},
+                   {"magnitude", clean(i.magnitude)},
+                   {"on_bumper", vector_json(i.on_bumper, d)}};
+    for (const methods::ContactColumn& column : o.per_contact) {
+      std::visit(
+          [&](const auto& values) {
+            if (v < values.size()) {
+              entry[column.key] = value_json(methods::Value(values[v]));
+            }
+          },
+          column.values);
+    }
+    impulses.push_back(std::move(entry));
   }
   out["impulses"] = std::move(impulses);
 
@@ -782,43 +801,112 @@ nlohmann::ordered_json to_json(const Result& result) {
   }
   system["B"] = std::move(B);
   system["rank"] = s.rank;
-  system["residual"] = clean(s.residual);
+  system["residual"] = clean(o.residual);  // of the impulses reported
   system["dependent"] = s.dependent;
   system["consistent"] = s.consistent;
-  system["policy"] = std::string(to_string(s.options.dependent));
+  system["policy"] = std::string(name_of(s.options.dependent));
   system["condition_estimate"] = s.condition_estimate;
   out["system"] = std::move(system);
 
-  // Added for the other methods (issue 9), after the keys above so that their order stays; the
-  // paper's method writes none, so that its report is the one the scene format specifies.
-  if (result.method != methods::Method::simultaneous) {
-    out["method"] = std::string(methods::to_string(result.method));
+  // The method's own diagnostics, after the keys above so that their order stays; the paper's
+  // method has none, so that its report is the one the scene format specifies.
+  if (!o.diagnostics.empty()) {
+    const std::string name(name_of(result.method));
+    out["method"] = name;
+    ojson block = ojson::object();
+    for (const methods::Field& field : o.diagnostics) {
+      block[field.key] = value_json(field.value);
+    }
+    out[name] = std::move(block);
   }
-  if (result.method == methods::Method::complementarity) {
-    const methods::ComplementaritySolution& c = result.complementarity;
-    ojson slack = ojson::array();
-    for (Eigen::Index v = 0; v < c.w.size(); ++v) {
-      slack.push_back(clean(c.w(v)));
-    }
-    out["complementarity"] = {{"algorithm", std::string(methods::to_string(c.algorithm))},
-                              {"iterations", c.iterations},
-                              {"complementarity_residual", clean(c.residual)},
-                              {"converged", c.status == methods::LcpStatus::solved},
-                              {"least_norm", c.least_norm},
-                              {"slack", std::move(slack)}};
-  } else if (result.method == methods::Method::serial) {
-    const methods::SerialDiagnostics& serial = result.serial;
-    ojson order = ojson::array();
-    for (const Eigen::Index v : serial.order) {
-      order.push_back(v);
-    }
-    out["serial"] = {{"collisions", serial.order.size()},
-                     {"passes", serial.passes},
-                     {"order", std::move(order)},
-                     {"max_collisions", serial.max_collisions},
-                     {"finished", serial.status == methods::SerialStatus::finished}};
+  if (!result.notes.empty()) {
+    out["notes"] = result.notes;
   }
   return out;
+}
+
+nlohmann::ordered_json comparison_json(std::span<const Result> results, std::string_view source) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const Result& r : results) {
+    const std::string name(name_of(r.method));
+    if (r.outcome.finished) {
+      nlohmann::ordered_json result = to_json(r);
+      if (!result.contains("method")) {
+        result["method"] = name;  // the paper's report names no method; here every one does
+      }
+      out[name] = std::move(result);
+    } else {
+      out[name] = {{"method", name}, {"error", unfinished_message(r, source)}};
+    }
+  }
+  return out;
+}
+
+std::string report_json(const Result& result) {
+  return to_json(result).dump(2) + "\n";
+}
+
+SolveOutput solve_output(const World& world, std::string_view source,
+                         std::optional<methods::Method> method, Format format, bool colour) {
+  return solve_output(resolve(world, method.value_or(world.scene().method)), source, format,
+                      colour);
+}
+
+SolveOutput solve_output(const Result& result, std::string_view source, Format format,
+                         bool colour) {
+  if (result.status != SolveStatus::success) {
+    // Every number of the scene is a valid double, but their products or sums are not: the
+    // input is beyond what double precision can solve, so it is refused like other bad input.
+    throw InvalidInput(overflow_message(result, source, false));
+  }
+  SolveOutput output;
+  output.unfinished = unfinished_message(result, source);
+  if (!output.unfinished.empty()) {
+    return output;
+  }
+  output.report =
+      format == Format::json ? report_json(result) : text_report(result, source, colour);
+  output.warnings = impulse_warnings(result);
+  for (std::string& warning : system_warnings(result, source)) {
+    output.warnings.push_back(std::move(warning));
+  }
+  return output;
+}
+
+SolveOutput compare_output(const World& world, std::string_view source, Format format,
+                           bool colour) {
+  const std::vector<Result> results = resolve(world, methods::all_methods);
+  for (const Result& r : results) {
+    if (r.status != SolveStatus::success) {
+      throw InvalidInput(overflow_message(r, source, true));
+    }
+  }
+  SolveOutput output;
+  output.report = format == Format::json ? comparison_json(results, source).dump(2) + "\n"
+                                         : comparison_text(results, source, colour);
+  // The system A·Fdt = B is the same for every method: one warning about its conditioning.
+  for (const Result& r : results) {
+    if (r.outcome.finished) {
+      output.warnings = system_warnings(r, source);
+      break;
+    }
+  }
+  for (const Result& r : results) {
+    if (r.outcome.finished) {
+      for (std::string& warning : impulse_warnings(r, std::string(name_of(r.method)) + ": ")) {
+        output.warnings.push_back(std::move(warning));
+      }
+    } else {
+      output.unfinished.append(output.unfinished.empty() ? "" : "\n");
+      output.unfinished.append(unfinished_message(r, source));
+    }
+  }
+  return output;
+}
+
+SolveOutput solve_to_json(std::string_view text, std::string_view source,
+                          std::optional<methods::Method> method, const ReadLimits& limits) {
+  return solve_output(parse_world(text, source, limits), source, method, Format::json);
 }
 
 }  // namespace impulse::scene

@@ -1,34 +1,68 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "impulse/core/solve.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <string>
 
 #include "impulse/core/error.hpp"
 
 namespace impulse {
 
-std::string_view to_string(DependentPolicy policy) {
-  switch (policy) {
-    case DependentPolicy::minimum_norm:
-      return "minimum-norm";
-    case DependentPolicy::basic:
-      return "basic";
+void require_dense_fits(Eigen::Index contacts, const SolverOptions& options) {
+  const bool dense_only = options.dependent != DependentPolicy::minimum_norm ||
+                          options.inconsistent != InconsistentPolicy::least_squares;
+  if (!dense_only || contacts <= dense_limit) {
+    return;
   }
-  return "?";
+  std::string message(std::to_string(contacts));
+  message.append(" contacts with the policies \"")
+      .append(name_of(options.dependent))
+      .append("\" and \"")
+      .append(name_of(options.inconsistent))
+      .append("\", which only the dense method serves: it takes at most ")
+      .append(std::to_string(dense_limit))
+      .append(
+          " (its matrices grow as the square of the contacts); the default policies solve "
+          "large scenes with the sparse method");
+  throw InvalidInput(message);
 }
 
-std::string_view to_string(InconsistentPolicy policy) {
-  switch (policy) {
-    case InconsistentPolicy::least_squares:
-      return "least-squares";
-    case InconsistentPolicy::drop_equation:
-      return "drop-equation";
+Eigen::VectorXd detail::least_norm(const Eigen::MatrixXd& M, const Eigen::VectorXd& rhs,
+                                   double threshold) {
+  if (M.rows() == 0 || M.isZero(0.0)) {
+    return Eigen::VectorXd::Zero(M.cols());  // every x acts the same: the least is zero
   }
-  return "?";
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+  if (threshold > 0.0) {
+    cod.setThreshold(threshold);
+  }
+  cod.compute(M);
+  return cod.solve(rhs);
+}
+
+Eigen::VectorXd detail::least_norm_on(const Eigen::MatrixXd& A, const Eigen::VectorXd& B,
+                                      const Eigen::MatrixXd* G, const Eigen::VectorXd* w,
+                                      const std::vector<Eigen::Index>& contacts,
+                                      double rank_tolerance) {
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(B.size());
+  if (contacts.empty()) {
+    return F;
+  }
+  if (G != nullptr) {
+    // A = G^T G: a pivot threshold t on A is one of sqrt(t) on G.
+    const double threshold = rank_tolerance > 0.0 ? std::sqrt(rank_tolerance) : 0.0;
+    F(contacts) = least_norm((*G)(Eigen::all, contacts), *w, threshold);
+  } else {
+    F(contacts) = least_norm(A(contacts, contacts), B(contacts), rank_tolerance);
+  }
+  return F;
 }
 
 // The 2-norm of finite numbers, without overflow or underflow in its squares and without raising
@@ -57,7 +91,6 @@ using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 using PivotedQR = Eigen::ColPivHouseholderQR<MatrixXd>;
-using Orthogonal = Eigen::CompleteOrthogonalDecomposition<MatrixXd>;
 
 // What one factorisation of M x ~ rhs tells: the rank, the pivot ratio and the solution that
 // the dependent-system policy asks for (least squares when rhs is outside the range of M).
@@ -81,12 +114,7 @@ Factored factor_and_solve(const MatrixXd& M, const VectorXd& rhs, double thresho
                                         : pivots(0) / pivots(result.rank - 1);
   if (policy == DependentPolicy::minimum_norm) {
     // The least-squares solution of least norm, from the complete orthogonal decomposition.
-    Orthogonal cod;
-    if (threshold > 0.0) {
-      cod.setThreshold(threshold);
-    }
-    cod.compute(M);
-    result.x = cod.solve(rhs);
+    result.x = detail::least_norm(M, rhs, threshold);
   } else {
     // A basic solution: R11 y = (Q^T rhs) on the retained pivots, the free unknowns zero.
     // (Eigen's ColPivHouseholderQR::solve picks its pivots with a fixed threshold of its own.)
@@ -315,10 +343,108 @@ int range_solution(const SparseMatrix& G, const VectorXd& g, const Preconditione
                                        x);
 }
 
+// The steps of the Lanczos process behind lanczos_spectrum(): each costs a product with A and a
+// reorthogonalisation against the steps before, 20 to 30 ms for all twelve at 100,000 contacts,
+// 4 to 20 % of the sparse solve (bench/README.md); they resolve a spectrum of up to about twelve
+// clusters.
+constexpr int lanczos_steps = 12;
+
+// A lower bound of the condition number of A on its range that sees eigenvalues of any size: a
+// few steps of the Lanczos process on A, fully reorthogonalised, started from a vector
+// of the range of A (A times a fixed vector, whose entries are an integer hash: the same on
+// every machine). The Ritz values lie between A's smallest eigenvalue on the Krylov space, hence
+// on its range, and its largest, so their extreme ratio never exceeds the true one; a cluster of
+// eigenvalues (the 998 equal ones of 1,000 balls around a body of mass 1e-9) is found in as many
+// steps as there are clusters. Ritz values within 1e3 ε of the largest are rounding (a start
+// vector carries rounding along the null space) and do not count. Returns {1, 1} for A = 0.
+struct Spectrum {
+  double largest = 1.0;   // the largest Ritz value: at most A's largest eigenvalue
+  double smallest = 1.0;  // the smallest one above rounding: at least A's smallest on its range
+};
+
+Spectrum lanczos_spectrum(const SparseMatrix& A) {
+  const Index n = A.rows();
+  VectorXd z(n);
+  for (Index i = 0; i < n; ++i) {
+    const auto hash = (static_cast<std::uint64_t>(i) + 1) * 2654435761U % 4294967296U;
+    z(i) = static_cast<double>(hash) / 4294967296.0 - 0.5;
+  }
+  VectorXd q = A * z;
+  double beta = q.norm();
+  if (!(beta > 0.0)) {
+    return {};
+  }
+  // The rounding level of a product A q: a few ε times A's largest absolute row sum (which
+  // bounds its eigenvalues). A step whose new direction is no longer than that has found an
+  // invariant subspace: what is left is rounding, and normalising it would spoil the basis.
+  double row_sum = 0.0;
+  {
+    VectorXd sums = VectorXd::Zero(n);
+    for (Index k = 0; k < A.outerSize(); ++k) {
+      for (SparseMatrix::InnerIterator it(A, k); it; ++it) {
+        sums(it.row()) += std::abs(it.value());
+      }
+    }
+    row_sum = sums.maxCoeff();
+  }
+  const double breakdown = 1e3 * std::numeric_limits<double>::epsilon() * row_sum;
+  const Index steps = std::min<Index>(lanczos_steps, n);
+  MatrixXd Q(n, steps);
+  VectorXd alpha(steps);
+  VectorXd off(steps);
+  Index k = 0;
+  q /= beta;
+  VectorXd w(n);
+  while (k < steps) {
+    Q.col(k) = q;
+    w.noalias() = A * q;
+    alpha(k) = q.dot(w);
+    // Full reorthogonalisation against every Lanczos vector so far, twice ("twice is enough"):
+    // they stay orthogonal to rounding. Once is not: on 1,000 balls around a body of mass 1e9
+    // (κ = 1 + 5e-7) a single pass lets rounding build a Ritz value of 42.
+    for (int pass = 0; pass < 2; ++pass) {
+      const VectorXd coefficients = Q.leftCols(k + 1).transpose() * w;
+      w.noalias() -= Q.leftCols(k + 1) * coefficients;
+    }
+    beta = w.norm();
+    off(k) = beta;
+    ++k;
+    if (!(beta > breakdown)) {
+      break;  // an invariant subspace: its Ritz values are eigenvalues
+    }
+    q = w / beta;
+  }
+  MatrixXd T = MatrixXd::Zero(k, k);
+  for (Index i = 0; i < k; ++i) {
+    T(i, i) = alpha(i);
+    if (i + 1 < k) {
+      T(i, i + 1) = off(i);
+      T(i + 1, i) = off(i);
+    }
+  }
+  const VectorXd ritz =
+      Eigen::SelfAdjointEigenSolver<MatrixXd>(T, Eigen::EigenvaluesOnly).eigenvalues();
+  Spectrum spectrum;
+  spectrum.largest = 0.0;
+  for (Index i = 0; i < ritz.size(); ++i) {
+    spectrum.largest = std::max(spectrum.largest, ritz(i));
+  }
+  spectrum.smallest = spectrum.largest;
+  for (Index i = 0; i < ritz.size(); ++i) {
+    if (ritz(i) > 1e3 * std::numeric_limits<double>::epsilon() * spectrum.largest) {
+      spectrum.smallest = std::min(spectrum.smallest, ritz(i));
+    }
+  }
+  return spectrum.largest > 0.0 ? spectrum : Spectrum{};
+}
+
 // Solves a system that carries its factor with sparse factorisations only. Leaves solution.A
 // empty and fills sparse_A. Returns false when a factorisation failed (the caller then solves
-// densely).
-bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Solution& solution) {
+// densely). Sets `doubtful` when A has eigenvalues on its range below the level the shifted
+// pivots resolve (null_pivot lambda): the pivots then take them for null space, the rank and
+// the iterations' accuracy are estimates that can be far off (docs/pages/accuracy.md).
+bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Solution& solution,
+                  bool& doubtful) {
   solution.method = SolveMethod::sparse;
   solution.rank_estimated = true;
   solution.sparse_A = system.sparse_A();
@@ -375,8 +501,13 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
       smallest_diagonal = std::min(smallest_diagonal, diagonal(i));
     }
   }
+  // The pivots and the diagonal miss eigenvalues hidden under the shift: a few Lanczos steps see
+  // them, and say whether the pivots' picture can be trusted.
+  const Spectrum spectrum = lanczos_spectrum(A);
   solution.condition_estimate =
-      std::max(largest / smallest, diagonal.maxCoeff() / smallest_diagonal);
+      std::max({largest / smallest, diagonal.maxCoeff() / smallest_diagonal,
+                spectrum.largest / spectrum.smallest});
+  doubtful = spectrum.smallest < null_level;
   VectorXd x;
   const auto shifted_inverse = [&](const VectorXd& r) -> VectorXd { return shifted.ldlt.solve(r); };
   solution.iterations = conjugate_gradients(A, B, shifted_inverse, options.sparse_tolerance,
@@ -421,6 +552,7 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
 }  // namespace
 
 Solution solve(const ContactSystem& system, const SolverOptions& options) {
+  require_dense_fits(system.size(), options);
   Solution solution;
   solution.B = system.B();
   solution.options = options;
@@ -431,8 +563,15 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
   const bool sparse = system.has_factor() && default_policies &&
                       (options.method == SolveMethod::sparse ||
                        (options.method == SolveMethod::automatic && system.is_sparse()));
-  if (sparse && solve_sparse(system, options, solution)) {
-    return solution;
+  bool doubtful = false;
+  double sparse_estimate = 1.0;
+  if (sparse && solve_sparse(system, options, solution, doubtful)) {
+    // A sparse answer in doubt (eigenvalues the pivots cannot see) gets the dense method's second
+    // opinion while its matrices stay small; beyond, the estimate at least says how doubtful.
+    if (!doubtful || options.method != SolveMethod::automatic || system.size() > dense_limit) {
+      return solution;
+    }
+    sparse_estimate = solution.condition_estimate;
   }
   solution = Solution{};
   solution.B = system.B();
@@ -475,7 +614,9 @@ Solution solve(const ContactSystem& system, const SolverOptions& options) {
   }
   solution.rank = f.rank;
   solution.dependent = f.rank < n;
-  solution.condition_estimate = f.pivot_ratio;
+  // With the sparse method's Lanczos estimate when it asked for this second opinion: the larger
+  // of two lower bounds.
+  solution.condition_estimate = std::max(f.pivot_ratio, sparse_estimate);
   solution.Fdt = std::move(f.x);
   solution.consistent = within_tolerance(A, B, solution.Fdt, options.consistency_tolerance);
   if (!solution.consistent && options.inconsistent == InconsistentPolicy::drop_equation) {

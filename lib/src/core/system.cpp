@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "impulse/core/error.hpp"
+#include "impulse/core/solve.hpp"
 
 namespace impulse {
 
@@ -114,6 +115,21 @@ Eigen::SparseMatrix<double> ContactSystem::sparse_A() const {
   }
   A.makeCompressed();
   return A;
+}
+
+double ContactSystem::residual(const Eigen::Ref<const Eigen::VectorXd>& Fdt) const {
+  if (Fdt.size() != size()) {
+    throw InvalidInput("Fdt must give one impulse per contact (" + std::to_string(size()) +
+                       "), got " + std::to_string(Fdt.size()));
+  }
+  Eigen::VectorXd r(size());
+  if (sparse_) {
+    r.noalias() = sparse_A() * Fdt;
+  } else {
+    r.noalias() = A_ * Fdt;
+  }
+  r -= B_;
+  return detail::quiet_norm(r);
 }
 
 void ContactSystem::factor(Eigen::MatrixXd& G, Eigen::VectorXd& w) const {

@@ -9,38 +9,10 @@
 #include <utility>
 
 #include "impulse/core/error.hpp"
+#include "impulse/core/text.hpp"
+#include "impulse/methods/resolve.hpp"
 
 namespace impulse::methods {
-
-std::string_view to_string(LcpAlgorithm algorithm) {
-  switch (algorithm) {
-    case LcpAlgorithm::automatic:
-      return "automatic";
-    case LcpAlgorithm::lemke:
-      return "lemke";
-    case LcpAlgorithm::active_set:
-      return "active-set";
-    case LcpAlgorithm::projected_gauss_seidel:
-      return "projected-gauss-seidel";
-  }
-  return "?";
-}
-
-std::string_view to_string(LcpStatus status) {
-  switch (status) {
-    case LcpStatus::solved:
-      return "solved";
-    case LcpStatus::iteration_limit:
-      return "iteration-limit";
-    case LcpStatus::inaccurate:
-      return "inaccurate";
-    case LcpStatus::infeasible:
-      return "infeasible";
-    case LcpStatus::non_finite:
-      return "non-finite";
-  }
-  return "?";
-}
 
 namespace {
 
@@ -246,34 +218,11 @@ struct Factor {
 };
 
 // The least-norm impulses on the contacts `on` (zero elsewhere) that satisfy those contacts'
-// equations (A F)_v = B_v: from a complete orthogonal decomposition of G's columns `on` when the
-// factor is known (half the digits lost), else of A's block.
+// equations (A F)_v = B_v: the choice impulse::solve makes, from the factor's columns when the
+// system carries it (half the digits lost), else from A's block.
 VectorXd on_contacts(const MatrixXd& A, const VectorXd& B, const Factor& factor,
-                     const std::vector<Index>& on) {
-  VectorXd F = VectorXd::Zero(B.size());
-  if (on.empty()) {
-    return F;
-  }
-  // Contacts whose impulses move nothing (no movable body along their normals, which scene files
-  // refuse but hand-made systems may hold) keep the least impulse, 0. (Eigen's QR would also
-  // divide by the row count of an empty factor.)
-  VectorXd x;
-  if (factor.G != nullptr) {
-    const MatrixXd columns = (*factor.G)(Eigen::all, on);
-    if (columns.rows() == 0 || columns.isZero(0.0)) {
-      return F;
-    }
-    x = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(columns).solve(*factor.g);
-  } else {
-    const MatrixXd block = A(on, on);
-    if (block.isZero(0.0)) {
-      return F;
-    }
-    const VectorXd right = B(on);
-    x = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(block).solve(right);
-  }
-  F(on) = x;
-  return F;
+                     const std::vector<Index>& on, double rank_tolerance) {
+  return impulse::detail::least_norm_on(A, B, factor.G, factor.g, on, rank_tolerance);
 }
 
 ComplementaritySolution candidate(const MatrixXd& A, const VectorXd& B, VectorXd F) {
@@ -288,20 +237,22 @@ ComplementaritySolution candidate(const MatrixXd& A, const VectorXd& B, VectorXd
 // contacts in its support, then (minimum_norm) replaced by the least-norm solution when that
 // needs no clipping, and judged against the tolerance.
 ComplementaritySolution settle(const MatrixXd& A, const VectorXd& B, const Factor& factor,
-                               const Pivoted& p, DependentPolicy dependent, double tolerance,
+                               const Pivoted& p, const ComplementarityOptions& options,
                                LcpAlgorithm algorithm) {
+  const double tolerance = options.tolerance;
   const Index n = B.size();
   // The pivoting found which contacts carry an impulse; their impulses are recomputed from their
   // equations, more accurately than a tableau's updates leave them.
-  ComplementaritySolution chosen =
-      candidate(A, B, p.solved ? on_contacts(A, B, factor, p.support) : VectorXd::Zero(n));
+  ComplementaritySolution chosen = candidate(
+      A, B,
+      p.solved ? on_contacts(A, B, factor, p.support, options.rank_tolerance) : VectorXd::Zero(n));
   if (!meets(chosen, tolerance) && p.solved) {
     ComplementaritySolution raw = candidate(A, B, p.z);
     if (raw.residual < chosen.residual) {
       chosen = std::move(raw);
     }
   }
-  if (p.solved && dependent == DependentPolicy::minimum_norm && meets(chosen, tolerance)) {
+  if (p.solved && options.dependent == DependentPolicy::minimum_norm && meets(chosen, tolerance)) {
     // Every solution gives the same A F (it minimises the convex 1/2 F^T A F - B^T F over
     // F >= 0, and for A = G^T G that fixes G F), hence the same slack w. So the solutions are
     // the F >= 0 that carry impulse only where w = 0 and satisfy those contacts' equations; the
@@ -313,7 +264,7 @@ ComplementaritySolution settle(const MatrixXd& A, const VectorXd& B, const Facto
         tight.push_back(v);
       }
     }
-    const VectorXd F = on_contacts(A, B, factor, tight);
+    const VectorXd F = on_contacts(A, B, factor, tight, options.rank_tolerance);
     const double allowed =
         tolerance * std::max(chosen.Fdt.cwiseAbs().maxCoeff(), F.cwiseAbs().maxCoeff());
     if (F.minCoeff() >= -allowed) {
@@ -337,9 +288,9 @@ ComplementaritySolution settle(const MatrixXd& A, const VectorXd& B, const Facto
 }
 
 ComplementaritySolution lemke_with(const MatrixXd& A, const VectorXd& B, const Factor& factor,
-                                   DependentPolicy dependent, double tolerance) {
+                                   const ComplementarityOptions& options) {
   require_sizes(A.rows(), A.cols(), B.size());
-  require_tolerance(tolerance);
+  require_tolerance(options.tolerance);
   const Index n = B.size();
   if (n > pivoting_limit) {
     throw InvalidInput("Lemke's pivoting takes at most " + std::to_string(pivoting_limit) +
@@ -352,7 +303,7 @@ ComplementaritySolution lemke_with(const MatrixXd& A, const VectorXd& B, const F
     return not_finite(n, LcpAlgorithm::lemke);
   }
   const int max_pivots = static_cast<int>(std::min<Index>(100 * (n + 1), 1000000));
-  return settle(A, B, factor, pivot(A, B, max_pivots), dependent, tolerance, LcpAlgorithm::lemke);
+  return settle(A, B, factor, pivot(A, B, max_pivots), options, LcpAlgorithm::lemke);
 }
 
 // ---- The active-set method (Lawson and Hanson, "Solving Least Squares Problems", 1974, ch. 23) --
@@ -361,7 +312,7 @@ ComplementaritySolution lemke_with(const MatrixXd& A, const VectorXd& B, const F
 // and F_v s_v = 0, the complementarity problem. P is the set of contacts allowed an impulse.
 
 Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, const VectorXd& B,
-                      double tolerance, int max_pivots) {
+                      double tolerance, double rank_tolerance, int max_pivots) {
   const Index n = G.cols();
   Pivoted result;
   VectorXd x = VectorXd::Zero(n);
@@ -379,9 +330,11 @@ Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, c
     }
     return set;
   };
+  // The least squares of the set's columns, as impulse::solve solves a factor (pivot threshold
+  // √rank_tolerance on G).
+  const double threshold = rank_tolerance > 0.0 ? std::sqrt(rank_tolerance) : 0.0;
   const auto least_squares = [&](const std::vector<Index>& set) {
-    const MatrixXd columns = G(Eigen::all, set);
-    return VectorXd(Eigen::CompleteOrthogonalDecomposition<MatrixXd>(columns).solve(g));
+    return impulse::detail::least_norm(G(Eigen::all, set), g, threshold);
   };
   if (G.rows() == 0) {
     result.z = x;
@@ -459,7 +412,8 @@ Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, c
 }
 
 ComplementaritySolution active_set_with(const MatrixXd& G, const VectorXd& g,
-                                        DependentPolicy dependent, double tolerance) {
+                                        const ComplementarityOptions& options) {
+  const double tolerance = options.tolerance;
   if (G.rows() != g.size()) {
     throw InvalidInput("G must have one row per entry of g, got G " + std::to_string(G.rows()) +
                        "x" + std::to_string(G.cols()) + " and g of " + std::to_string(g.size()));
@@ -475,8 +429,8 @@ ComplementaritySolution active_set_with(const MatrixXd& G, const VectorXd& g,
   const MatrixXd A = G.transpose() * G;
   const VectorXd B = G.transpose() * g;
   const int max_pivots = static_cast<int>(std::min<Index>(10 * (n + 1), 1000000));
-  const Pivoted p = lawson_hanson(G, g, A, B, tolerance, max_pivots);
-  return settle(A, B, Factor{&G, &g}, p, dependent, tolerance, LcpAlgorithm::active_set);
+  const Pivoted p = lawson_hanson(G, g, A, B, tolerance, options.rank_tolerance, max_pivots);
+  return settle(A, B, Factor{&G, &g}, p, options, LcpAlgorithm::active_set);
 }
 
 }  // namespace
@@ -484,13 +438,19 @@ ComplementaritySolution active_set_with(const MatrixXd& G, const VectorXd& g,
 ComplementaritySolution lemke(const Eigen::Ref<const Eigen::MatrixXd>& A,
                               const Eigen::Ref<const Eigen::VectorXd>& B, DependentPolicy dependent,
                               double tolerance) {
-  return lemke_with(MatrixXd(A), VectorXd(B), Factor{}, dependent, tolerance);
+  ComplementarityOptions options;
+  options.dependent = dependent;
+  options.tolerance = tolerance;
+  return lemke_with(MatrixXd(A), VectorXd(B), Factor{}, options);
 }
 
 ComplementaritySolution active_set(const Eigen::Ref<const Eigen::MatrixXd>& G,
                                    const Eigen::Ref<const Eigen::VectorXd>& g,
                                    DependentPolicy dependent, double tolerance) {
-  return active_set_with(MatrixXd(G), VectorXd(g), dependent, tolerance);
+  ComplementarityOptions options;
+  options.dependent = dependent;
+  options.tolerance = tolerance;
+  return active_set_with(MatrixXd(G), VectorXd(g), options);
 }
 
 ComplementaritySolution projected_gauss_seidel(const SparseMatrix& A, const VectorXd& B,
@@ -552,8 +512,11 @@ ComplementaritySolution projected_gauss_seidel(const SparseMatrix& A, const Vect
   return s;
 }
 
-ComplementaritySolution solve_complementarity(const ContactSystem& system,
-                                              const ComplementarityOptions& options) {
+namespace {
+// The work of both solve_complementarity overloads; `paper` is the warm start's solution, or
+// null to solve the system for it when it is needed.
+ComplementaritySolution solve_with(const ContactSystem& system, const Solution* paper,
+                                   const ComplementarityOptions& options) {
   require_tolerance(options.tolerance);
   const Index n = system.size();
   LcpAlgorithm algorithm = options.algorithm;
@@ -566,9 +529,10 @@ ComplementaritySolution solve_complementarity(const ContactSystem& system,
   const auto iterate = [&]() {
     VectorXd start;
     if (options.warm_start) {
-      const Solution paper = solve(system);
-      if (paper.status == SolveStatus::success) {
-        start = paper.Fdt;
+      const Solution own = paper == nullptr ? solve(system) : Solution{};
+      const Solution& warm = paper == nullptr ? own : *paper;
+      if (warm.status == SolveStatus::success && warm.Fdt.size() == n) {
+        start = warm.Fdt;
       }
     }
     return projected_gauss_seidel(system.sparse_A(), system.B(), options.tolerance,
@@ -593,11 +557,10 @@ ComplementaritySolution solve_complementarity(const ContactSystem& system,
           "the active-set method needs the system's factor G (A = G^T G), which systems "
           "assembled from bodies carry and systems given as A and B do not");
     }
-    pivoted = active_set_with(G, g, options.dependent, options.tolerance);
+    pivoted = active_set_with(G, g, options);
   } else {
     const MatrixXd A = system.is_sparse() ? MatrixXd(system.sparse_A()) : system.A();
-    pivoted = lemke_with(A, system.B(), system.has_factor() ? Factor{&G, &g} : Factor{},
-                         options.dependent, options.tolerance);
+    pivoted = lemke_with(A, system.B(), system.has_factor() ? Factor{&G, &g} : Factor{}, options);
   }
   if (pivoted.status != LcpStatus::inaccurate || options.algorithm != LcpAlgorithm::automatic) {
     return pivoted;
@@ -607,17 +570,30 @@ ComplementaritySolution solve_complementarity(const ContactSystem& system,
   ComplementaritySolution iterated = iterate();
   return iterated.residual < pivoted.residual ? iterated : pivoted;
 }
+}  // namespace
+
+ComplementaritySolution solve_complementarity(const ContactSystem& system,
+                                              const ComplementarityOptions& options) {
+  return solve_with(system, nullptr, options);
+}
+
+ComplementaritySolution solve_complementarity(const ContactSystem& system, const Solution& paper,
+                                              const ComplementarityOptions& options) {
+  return solve_with(system, &paper, options);
+}
 
 ComplementarityResolution resolve_complementarity(std::span<const multipoint::Body> bodies,
                                                   std::span<const Elasticity> elasticities,
                                                   std::span<const multipoint::Contact> contacts,
                                                   const ComplementarityOptions& options) {
+  const multipoint::Configuration configuration({bodies.begin(), bodies.end()},
+                                                {elasticities.begin(), elasticities.end()},
+                                                {contacts.begin(), contacts.end()});
   ComplementarityResolution resolution;
-  resolution.solution =
-      solve_complementarity(multipoint::assemble(bodies, elasticities, contacts), options);
+  resolution.solution = solve_complementarity(configuration.assemble(), options);
   resolution.after = resolution.solution.status == LcpStatus::non_finite
                          ? std::vector<multipoint::Body>(bodies.begin(), bodies.end())
-                         : multipoint::apply_impulses(bodies, contacts, resolution.solution.Fdt);
+                         : configuration.after(resolution.solution.Fdt);
   return resolution;
 }
 
@@ -627,6 +603,85 @@ ComplementarityResolution resolve_complementarity(std::span<const multipoint::Bo
                                                   const ComplementarityOptions& options) {
   const std::vector<Elasticity> elasticities(bodies.size(), elasticity);
   return resolve_complementarity(bodies, elasticities, contacts, options);
+}
+
+namespace {
+// "active-set pivoting, 3 pivots": the algorithm and its count of steps.
+std::string algorithm_phrase(const ComplementaritySolution& c) {
+  const auto steps = static_cast<std::size_t>(c.iterations);
+  switch (c.algorithm) {
+    case LcpAlgorithm::lemke:
+      return "Lemke's pivoting, " + counted(steps, "pivot", "pivots");
+    case LcpAlgorithm::projected_gauss_seidel:
+      return "projected Gauss-Seidel, " + counted(steps, "sweep", "sweeps");
+    case LcpAlgorithm::active_set:
+    case LcpAlgorithm::automatic:
+      break;
+  }
+  return "active-set pivoting, " + counted(steps, "pivot", "pivots");
+}
+}  // namespace
+
+Outcome complementarity(const multipoint::Configuration& configuration, const Paper& paper,
+                        const Options& options) {
+  ComplementarityOptions own = options.complementarity;
+  own.dependent = options.solver.dependent;
+  own.rank_tolerance = options.solver.rank_tolerance;
+  // The warm start is the paper's minimum-norm solution: the one already solved, when the scene
+  // asked for the default policies.
+  const bool default_policies = options.solver.dependent == DependentPolicy::minimum_norm &&
+                                options.solver.inconsistent == InconsistentPolicy::least_squares;
+  ComplementaritySolution c = default_policies
+                                  ? solve_complementarity(paper.system, paper.solution, own)
+                                  : solve_complementarity(paper.system, own);
+  Outcome o;
+  o.method = Method::complementarity;
+  o.finite = c.status != LcpStatus::non_finite;
+  if (!o.finite) {
+    o.Fdt = c.Fdt;
+    o.solution = std::move(c);
+    return o;
+  }
+  o.Fdt = c.Fdt;
+  o.after = configuration.after(c.Fdt);
+  o.residual = paper.system.residual(c.Fdt);
+  o.finished = c.status != LcpStatus::infeasible;
+  if (!o.finished) {
+    o.unfinished =
+        "complementarity: no impulses that only push satisfy A·Fdt >= B (Lemke's pivoting ended "
+        "on a ray)";
+  }
+  const bool approximate = c.status != LcpStatus::solved;
+  const std::string residual = number_text(c.residual);
+  o.details.push_back(algorithm_phrase(c) + (approximate ? " (approximate)" : "") +
+                      ", complementarity residual " + residual +
+                      (c.least_norm ? ", the least-norm solution" : ""));
+  std::string slack("slack A·Fdt - B (0 where a contact pushes):");
+  for (Eigen::Index v = 0; v < c.w.size(); ++v) {
+    slack.append(v == 0 ? " " : ", ").append(chopped(c.w(v), c.scale));
+  }
+  o.details.push_back(std::move(slack));
+  o.summary = algorithm_phrase(c) + ", complementarity residual " + residual +
+              (approximate ? " (approximate)" : "");
+  const std::string against =
+      " against a scale of " + number_text(c.scale) + ": the impulses are approximate";
+  if (c.status == LcpStatus::iteration_limit) {
+    o.warnings.push_back("complementarity: projected Gauss-Seidel stopped after " +
+                         std::to_string(c.iterations) +
+                         " sweeps with the complementarity residual " + residual + against);
+  } else if (c.status == LcpStatus::inaccurate) {
+    o.warnings.push_back(
+        "complementarity: rounding left Lemke's pivoting at the complementarity residual " +
+        residual + against);
+  }
+  o.diagnostics = {{"algorithm", std::string(name_of(c.algorithm))},
+                   {"iterations", std::int64_t{c.iterations}},
+                   {"complementarity_residual", c.residual},
+                   {"converged", c.status == LcpStatus::solved},
+                   {"least_norm", c.least_norm},
+                   {"slack", std::vector<double>(c.w.begin(), c.w.end())}};
+  o.solution = std::move(c);
+  return o;
 }
 
 }  // namespace impulse::methods

@@ -3,39 +3,35 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <queue>
 #include <string>
-#include <unordered_set>
-#include <variant>
+#include <utility>
+#include <vector>
 
 #include "impulse/core/error.hpp"
 #include "impulse/core/solve.hpp"
 #include "impulse/core/system.hpp"
-#include "impulse/material_2d/material_2d.hpp"
-#include "impulse/rigid_2d/rigid_2d.hpp"
+#include "impulse/core/text.hpp"
+#include "impulse/methods/resolve.hpp"
 
 namespace impulse::methods {
 
-std::string_view to_string(SerialStatus status) {
-  switch (status) {
-    case SerialStatus::finished:
-      return "finished";
-    case SerialStatus::collision_limit:
-      return "collision-limit";
-    case SerialStatus::non_finite:
-      return "non-finite";
-  }
-  return "?";
-}
-
 std::int64_t count_passes(std::span<const Eigen::Index> order) {
-  std::int64_t passes = 0;
-  std::unordered_set<Eigen::Index> in_this_pass;
+  // The pass in which each contact last collided: a contact that comes up again in the same
+  // pass ends it.
+  Eigen::Index contacts = 0;
   for (const Eigen::Index v : order) {
-    if (passes == 0 || in_this_pass.contains(v)) {
+    contacts = std::max(contacts, v + 1);
+  }
+  std::vector<std::int64_t> last_pass(static_cast<std::size_t>(contacts), 0);
+  std::int64_t passes = 0;
+  for (const Eigen::Index v : order) {
+    std::int64_t& last = last_pass[static_cast<std::size_t>(v)];
+    if (passes == 0 || last == passes) {
       ++passes;
-      in_this_pass.clear();
     }
-    in_this_pass.insert(v);
+    last = passes;
   }
   return passes;
 }
@@ -43,50 +39,11 @@ std::int64_t count_passes(std::span<const Eigen::Index> order) {
 namespace {
 
 using Eigen::Index;
-using Eigen::Vector2d;
 using multipoint::Body;
 using multipoint::Contact;
+using multipoint::Touch;
 
-// Contact c's approach speed: both bodies' point velocities cast on their own outward normals
-// (as multipoint::approach computes it for every contact).
-double approach_at(std::span<const Body> bodies, const Contact& c) {
-  return multipoint::point_velocity(bodies[c.bumper], c.point).dot(c.normal) +
-         multipoint::point_velocity(bodies[c.wedge], c.point).dot(-c.normal);
-}
-
-// One body's 1x1 block at one contact: (a, b) of the single-contact formula, from the same
-// blocks the paper's many-contact system sums ((4.5)/(4.8), (5.3)/(5.5) with one contact).
-ScalarContribution single(const Body& body, const Vector2d& normal, const Vector2d& point,
-                          Elasticity elasticity) {
-  const multipoint::Touch touch{0, normal, point};
-  const BlockContribution block =
-      multipoint::contribution(body, std::span<const multipoint::Touch>(&touch, 1), elasticity);
-  if (block.contacts.empty()) {
-    return {};  // a static body contributes nothing
-  }
-  return {block.a(0, 0), block.b(0)};
-}
-
-// The impulse -normal * Fdt on a body at a point (nothing for a static body).
-void push(Body& body, const Vector2d& point, const Vector2d& normal, double Fdt) {
-  if (auto* mass = std::get_if<material_2d::PointMass>(&body)) {
-    *mass = material_2d::apply_impulse(*mass, normal, Fdt);
-  } else if (auto* rigid = std::get_if<rigid_2d::RigidBody>(&body)) {
-    *rigid = rigid_2d::apply_impulse(*rigid, point, normal, Fdt);
-  }
-}
-
-}  // namespace
-
-SerialResolution resolve_serial(std::span<const Body> bodies,
-                                std::span<const Elasticity> elasticities,
-                                std::span<const Contact> contacts, const SerialOptions& options) {
-  multipoint::validate(bodies, contacts);
-  if (elasticities.size() != bodies.size()) {
-    throw InvalidInput("elasticities must give one value per body (" +
-                       std::to_string(bodies.size()) + "), got " +
-                       std::to_string(elasticities.size()));
-  }
+void require_options(const SerialOptions& options) {
   if (options.max_collisions < 0) {
     throw InvalidInput("max_collisions must be at least 1 (or 0 for " +
                        std::to_string(collisions_per_contact) + " per contact), got " +
@@ -96,6 +53,76 @@ SerialResolution resolve_serial(std::span<const Body> bodies,
     throw InvalidInput("approach_tolerance must be finite and at least 0, got " +
                        format_number(options.approach_tolerance));
   }
+}
+
+// The approaching contacts by approach speed, fastest first, the lowest index among equal speeds:
+// a heap of (speed, contact) entries of the contacts faster than the threshold (no other can be
+// chosen). A contact whose speed changes gets a new entry if it approaches; its old one stays
+// behind and is skipped when it comes up (its speed is no longer the contact's). The heap is
+// rebuilt from the speeds when stale entries outnumber the contacts.
+class Fastest {
+ public:
+  Fastest(const Eigen::VectorXd& speeds, double threshold)
+      : speeds_(speeds), threshold_(threshold) {
+    rebuild();
+  }
+
+  // Contact v's speed is now `speed`.
+  void update(Index v, double speed) {
+    speeds_(v) = speed;
+    if (speed > threshold_) {
+      heap_.push({speed, v});
+      if (heap_.size() > 4 * static_cast<std::size_t>(speeds_.size()) + 64) {
+        rebuild();
+      }
+    }
+  }
+
+  // The fastest approaching contact (the first of equal speeds) and its speed, or nothing when
+  // no contact approaches.
+  [[nodiscard]] std::optional<std::pair<Index, double>> top() {
+    while (!heap_.empty() && heap_.top().speed != speeds_(heap_.top().contact)) {
+      heap_.pop();  // a stale entry
+    }
+    if (heap_.empty()) {
+      return std::nullopt;
+    }
+    return std::pair{heap_.top().contact, heap_.top().speed};
+  }
+
+ private:
+  struct Entry {
+    double speed;
+    Index contact;
+    // The heap's top is its largest entry: the larger speed, then the smaller contact index.
+    bool operator<(const Entry& other) const {
+      return speed < other.speed || (speed == other.speed && contact > other.contact);
+    }
+  };
+
+  void rebuild() {
+    std::vector<Entry> entries;
+    for (Index v = 0; v < speeds_.size(); ++v) {
+      if (speeds_(v) > threshold_) {
+        entries.push_back({speeds_(v), v});
+      }
+    }
+    heap_ = std::priority_queue<Entry>(std::less<Entry>(), std::move(entries));
+  }
+
+  Eigen::VectorXd speeds_;
+  double threshold_;
+  std::priority_queue<Entry> heap_;
+};
+
+}  // namespace
+
+SerialResolution resolve_serial(const multipoint::Configuration& configuration,
+                                const SerialOptions& options) {
+  require_options(options);
+  const std::span<const Body> bodies = configuration.bodies();
+  const std::span<const Contact> contacts = configuration.contacts();
+  const std::span<const Elasticity> elasticities = configuration.elasticities();
   const auto n = static_cast<Index>(contacts.size());
   SerialResolution r;
   r.after.assign(bodies.begin(), bodies.end());
@@ -105,56 +132,57 @@ SerialResolution resolve_serial(std::span<const Body> bodies,
                          ? options.max_collisions
                          : collisions_per_contact * std::max<std::int64_t>(1, n);
 
-  // Which contacts each body touches: after a collision only theirs change speed.
-  std::vector<std::vector<Index>> touching(bodies.size());
   double speed = 0.0;  // the largest speed of a body's point at a contact, before
-  Eigen::VectorXd u(n);
-  for (Index v = 0; v < n; ++v) {
-    const Contact& c = contacts[static_cast<std::size_t>(v)];
-    touching[c.bumper].push_back(v);
-    touching[c.wedge].push_back(v);
+  for (const Contact& c : contacts) {
     speed = std::max(speed, multipoint::point_velocity(bodies[c.bumper], c.point).norm() +
                                 multipoint::point_velocity(bodies[c.wedge], c.point).norm());
-    u(v) = approach_at(r.after, c);
   }
   d.approach_threshold = options.approach_tolerance * speed;
+  const Eigen::VectorXd u = configuration.approach(r.after);
   if (!all_finite_in(u) || !std::isfinite(speed)) {
     d.status = SerialStatus::non_finite;
     return r;
   }
+  if (n == 0) {
+    return r;
+  }
 
-  while (n > 0) {
-    Index fastest = 0;
-    u.maxCoeff(&fastest);  // the first of equal speeds: the lowest contact index
-    if (!(u(fastest) > d.approach_threshold)) {
+  Fastest fastest(u, d.approach_threshold);
+  while (true) {
+    const std::optional<std::pair<Index, double>> next = fastest.top();
+    if (!next) {
       break;  // no contact approaches
     }
+    const auto [v, approach] = *next;
     if (static_cast<std::int64_t>(d.order.size()) >= d.max_collisions) {
       d.status = SerialStatus::collision_limit;
-      d.still_approaching = fastest;
-      d.approach_left = u(fastest);
+      d.still_approaching = v;
+      d.approach_left = approach;
       break;
     }
-    const Contact& c = contacts[static_cast<std::size_t>(fastest)];
+    const Contact& c = contacts[static_cast<std::size_t>(v)];
     // The single-contact formula: F dt (a_1 + a_2) = b_1 + b_2, each body with its own normal
     // (bumper n, wedge -n) and its own elasticity.
-    const ScalarSolution one =
-        solve(single(r.after[c.bumper], c.normal, c.point, elasticities[c.bumper]) +
-              single(r.after[c.wedge], -c.normal, c.point, elasticities[c.wedge]));
+    const ScalarSolution one = solve(
+        multipoint::share(r.after[c.bumper], Touch{v, c.normal, c.point}, elasticities[c.bumper]) +
+        multipoint::share(r.after[c.wedge], Touch{v, -c.normal, c.point}, elasticities[c.wedge]));
     if (one.status != SolveStatus::success || !std::isfinite(one.Fdt)) {
       d.status = SerialStatus::non_finite;
       break;
     }
-    push(r.after[c.bumper], c.point, c.normal, one.Fdt);  // -n Fdt on the bumper
-    push(r.after[c.wedge], c.point, -c.normal, one.Fdt);  // +n Fdt on the wedge
-    r.Fdt(fastest) += one.Fdt;
-    d.order.push_back(fastest);
+    configuration.apply(r.after, v, one.Fdt);  // -n Fdt on the bumper, +n Fdt on the wedge
+    r.Fdt(v) += one.Fdt;
+    d.order.push_back(v);
+    // After a collision only the contacts of its two bodies change speed.
+    bool finite = true;
     for (const std::size_t body : {c.bumper, c.wedge}) {
-      for (const Index v : touching[body]) {
-        u(v) = approach_at(r.after, contacts[static_cast<std::size_t>(v)]);
+      for (const Touch& t : configuration.touches(body)) {
+        const double changed = configuration.approach(r.after, t.contact);
+        finite = finite && std::isfinite(changed);
+        fastest.update(t.contact, changed);
       }
     }
-    if (!all_finite_in(u)) {
+    if (!finite) {
       d.status = SerialStatus::non_finite;
       break;
     }
@@ -163,10 +191,78 @@ SerialResolution resolve_serial(std::span<const Body> bodies,
   return r;
 }
 
+SerialResolution resolve_serial(std::span<const Body> bodies,
+                                std::span<const Elasticity> elasticities,
+                                std::span<const Contact> contacts, const SerialOptions& options) {
+  require_options(options);
+  const multipoint::Configuration configuration({bodies.begin(), bodies.end()},
+                                                {elasticities.begin(), elasticities.end()},
+                                                {contacts.begin(), contacts.end()});
+  return resolve_serial(configuration, options);
+}
+
 SerialResolution resolve_serial(std::span<const Body> bodies, Elasticity elasticity,
                                 std::span<const Contact> contacts, const SerialOptions& options) {
   const std::vector<Elasticity> elasticities(bodies.size(), elasticity);
   return resolve_serial(bodies, elasticities, contacts, options);
+}
+
+Outcome serial(const multipoint::Configuration& configuration, const Paper& paper,
+               const Options& options) {
+  SerialResolution s = resolve_serial(configuration, options.serial);
+  const SerialDiagnostics& d = s.diagnostics;
+  Outcome o;
+  o.method = Method::serial;
+  o.finite = d.status != SerialStatus::non_finite;
+  o.Fdt = std::move(s.Fdt);
+  o.after = std::move(s.after);  // the state the last collision left
+  if (!o.finite) {
+    o.solution = std::move(s.diagnostics);
+    return o;
+  }
+  o.residual = paper.system.residual(o.Fdt);
+  o.finished = d.status == SerialStatus::finished;
+  if (!o.finished) {
+    o.unfinished =
+        "serial collisions did not end: after " + std::to_string(d.order.size()) +
+        " collisions (the bound: solver.max_collisions, by default " +
+        std::to_string(collisions_per_contact) + " per contact), " +
+        (d.still_approaching >= 0 ? detail::contact_name(options, d.still_approaching) +
+                                        " still approaches at " + number_text(d.approach_left)
+                                  : std::string("a contact still approaches")) +
+        ". Below elasticity 2 the same contacts can collide again and again without "
+        "end (inelastic collapse), and a light body between heavy ones needs many "
+        "collisions: raise \"max_collisions\" in the scene's \"solver\", or choose "
+        "another method";
+  }
+  const std::string counts = counted(d.order.size(), "collision", "collisions") + " in " +
+                             counted(static_cast<std::size_t>(d.passes), "pass", "passes");
+  std::string details = counts + " (bound " + std::to_string(d.max_collisions) + ")";
+  if (!d.order.empty()) {
+    details.append("; contacts in turn:");
+    constexpr std::size_t shown = 40;
+    for (std::size_t k = 0; k < d.order.size() && k < shown; ++k) {
+      details.append(k == 0 ? " " : ", ").append(std::to_string(d.order[k]));
+    }
+    if (d.order.size() > shown) {
+      details.append(", … (--format json lists all)");
+    }
+  }
+  o.details.push_back(std::move(details));
+  o.summary = counts;
+  if (!d.order.empty() && d.order.size() <= 12) {
+    o.summary.append(", order");
+    for (std::size_t k = 0; k < d.order.size(); ++k) {
+      o.summary.append(k == 0 ? " " : ", ").append(std::to_string(d.order[k]));
+    }
+  }
+  o.diagnostics = {{"collisions", static_cast<std::int64_t>(d.order.size())},
+                   {"passes", d.passes},
+                   {"order", std::vector<std::int64_t>(d.order.begin(), d.order.end())},
+                   {"max_collisions", d.max_collisions},
+                   {"finished", d.status == SerialStatus::finished}};
+  o.solution = std::move(s.diagnostics);
+  return o;
 }
 
 }  // namespace impulse::methods

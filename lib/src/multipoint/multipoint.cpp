@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "impulse/multipoint/multipoint.hpp"
 
+#include <cassert>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "impulse/core/error.hpp"
 #include "impulse/core/plane.hpp"
@@ -45,6 +47,50 @@ void require_elasticities(std::span<const Body> bodies, std::span<const Elastici
                        std::to_string(bodies.size()) + "), got " +
                        std::to_string(elasticities.size()));
   }
+}
+
+void require_one_per_contact(std::span<const Contact> contacts,
+                             const Eigen::Ref<const Eigen::VectorXd>& Fdt) {
+  if (Fdt.size() != static_cast<Eigen::Index>(contacts.size())) {
+    throw InvalidInput("Fdt must give one impulse per contact (" + std::to_string(contacts.size()) +
+                       "), got " + std::to_string(Fdt.size()));
+  }
+}
+
+// The work of assemble(), approach() and apply_impulses() on arguments already checked: the free
+// functions check theirs first, a Configuration did when it was made.
+
+ContactSystem assemble_checked(std::span<const Body> bodies,
+                               std::span<const Elasticity> elasticities,
+                               const std::vector<std::vector<Touch>>& grouped, std::size_t contacts,
+                               Storage storage);
+
+double approach_at(std::span<const Body> state, const Contact& c) {
+  return point_velocity(state[c.bumper], c.point).dot(c.normal) +
+         point_velocity(state[c.wedge], c.point).dot(-c.normal);
+}
+
+Eigen::VectorXd approach_checked(std::span<const Body> state, std::span<const Contact> contacts) {
+  Eigen::VectorXd speeds(static_cast<Eigen::Index>(contacts.size()));
+  for (std::size_t v = 0; v < contacts.size(); ++v) {
+    speeds(static_cast<Eigen::Index>(v)) = approach_at(state, contacts[v]);
+  }
+  return speeds;
+}
+
+void apply_at(std::vector<Body>& state, const Contact& c, Eigen::Index v, double magnitude) {
+  apply_impulse(state[c.bumper], Touch{v, c.normal, c.point}, magnitude);  // -n Fdt on the bumper
+  apply_impulse(state[c.wedge], Touch{v, -c.normal, c.point}, magnitude);  // +n Fdt on the wedge
+}
+
+std::vector<Body> after_checked(std::span<const Body> bodies, std::span<const Contact> contacts,
+                                const Eigen::Ref<const Eigen::VectorXd>& Fdt) {
+  std::vector<Body> after(bodies.begin(), bodies.end());
+  for (std::size_t v = 0; v < contacts.size(); ++v) {
+    const auto index = static_cast<Eigen::Index>(v);
+    apply_at(after, contacts[v], index, Fdt(index));
+  }
+  return after;
 }
 
 }  // namespace
@@ -175,8 +221,16 @@ ContactSystem assemble(std::span<const Body> bodies, std::span<const Elasticity>
                        std::span<const Contact> contacts, Storage storage) {
   validate(bodies, contacts);
   require_elasticities(bodies, elasticities);
-  ContactSystem system(static_cast<Eigen::Index>(contacts.size()), storage);
-  const auto grouped = touches_by_body(bodies.size(), contacts);
+  return assemble_checked(bodies, elasticities, touches_by_body(bodies.size(), contacts),
+                          contacts.size(), storage);
+}
+
+namespace {
+ContactSystem assemble_checked(std::span<const Body> bodies,
+                               std::span<const Elasticity> elasticities,
+                               const std::vector<std::vector<Touch>>& grouped, std::size_t contacts,
+                               Storage storage) {
+  ContactSystem system(static_cast<Eigen::Index>(contacts), storage);
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     if (!grouped[k].empty()) {
       system += contribution(bodies[k], grouped[k], elasticities[k]);  // the ⊕ of section 4.5
@@ -184,6 +238,7 @@ ContactSystem assemble(std::span<const Body> bodies, std::span<const Elasticity>
   }
   return system;
 }
+}  // namespace
 
 Eigen::Vector2d point_velocity(const Body& body, const Eigen::Vector2d& point) {
   return std::visit(
@@ -195,38 +250,35 @@ Eigen::Vector2d point_velocity(const Body& body, const Eigen::Vector2d& point) {
 
 Eigen::VectorXd approach(std::span<const Body> bodies, std::span<const Contact> contacts) {
   validate(bodies, contacts);
-  Eigen::VectorXd speeds(static_cast<Eigen::Index>(contacts.size()));
-  for (std::size_t v = 0; v < contacts.size(); ++v) {
-    const Contact& c = contacts[v];
-    speeds(static_cast<Eigen::Index>(v)) = point_velocity(bodies[c.bumper], c.point).dot(c.normal) +
-                                           point_velocity(bodies[c.wedge], c.point).dot(-c.normal);
-  }
-  return speeds;
+  return approach_checked(bodies, contacts);
 }
 
 std::vector<Body> apply_impulses(std::span<const Body> bodies, std::span<const Contact> contacts,
                                  const Eigen::Ref<const Eigen::VectorXd>& Fdt) {
   validate(bodies, contacts);
-  if (Fdt.size() != static_cast<Eigen::Index>(contacts.size())) {
-    throw InvalidInput("Fdt must give one impulse per contact (" + std::to_string(contacts.size()) +
-                       "), got " + std::to_string(Fdt.size()));
-  }
-  std::vector<Body> after(bodies.begin(), bodies.end());
-  const auto push = [](Body& body, const Eigen::Vector2d& point, const Eigen::Vector2d& n,
-                       double magnitude) {
-    std::visit(
-        Overloaded{[&](PointMass& b) { b = material_2d::apply_impulse(b, n, magnitude); },
-                   [&](RigidBody& b) { b = rigid_2d::apply_impulse(b, point, n, magnitude); },
-                   [](StaticBody&) {}},
-        body);
-  };
-  for (std::size_t v = 0; v < contacts.size(); ++v) {
-    const Contact& c = contacts[v];
-    const double magnitude = Fdt(static_cast<Eigen::Index>(v));
-    push(after[c.bumper], c.point, c.normal, magnitude);  // -n Fdt on the bumper
-    push(after[c.wedge], c.point, -c.normal, magnitude);  // +n Fdt on the wedge
-  }
-  return after;
+  require_one_per_contact(contacts, Fdt);
+  return after_checked(bodies, contacts, Fdt);
+}
+
+ScalarContribution share(const Body& body, const Touch& touch, Elasticity elasticity) {
+  return std::visit(Overloaded{[&](const PointMass& b) {
+                                 return material_2d::detail::share(b, touch.normal, elasticity);
+                               },
+                               [&](const RigidBody& b) {
+                                 return rigid_2d::detail::share(b, touch.point, touch.normal,
+                                                                elasticity);
+                               },
+                               [](const StaticBody&) { return ScalarContribution{}; }},
+                    body);
+}
+
+void apply_impulse(Body& body, const Touch& touch, double Fdt) {
+  std::visit(Overloaded{[&](PointMass& b) { b = material_2d::apply_impulse(b, touch.normal, Fdt); },
+                        [&](RigidBody& b) {
+                          b = rigid_2d::apply_impulse(b, touch.point, touch.normal, Fdt);
+                        },
+                        [](StaticBody&) {}},
+             body);
 }
 
 double kinetic_energy(const Body& body) {
@@ -256,10 +308,15 @@ Eigen::Vector2d momentum(std::span<const Body> bodies) {
 
 Resolution resolve(std::span<const Body> bodies, std::span<const Elasticity> elasticities,
                    std::span<const Contact> contacts, const SolverOptions& options) {
+  validate(bodies, contacts);
+  require_elasticities(bodies, elasticities);
   Resolution resolution;
-  resolution.solution = solve(assemble(bodies, elasticities, contacts), options);
+  resolution.solution =
+      solve(assemble_checked(bodies, elasticities, touches_by_body(bodies.size(), contacts),
+                             contacts.size(), Storage::automatic),
+            options);
   resolution.after = resolution.solution.status == SolveStatus::success
-                         ? apply_impulses(bodies, contacts, resolution.solution.Fdt)
+                         ? after_checked(bodies, contacts, resolution.solution.Fdt)
                          : std::vector<Body>(bodies.begin(), bodies.end());
   return resolution;
 }
@@ -268,6 +325,44 @@ Resolution resolve(std::span<const Body> bodies, Elasticity elasticity,
                    std::span<const Contact> contacts, const SolverOptions& options) {
   const std::vector<Elasticity> elasticities(bodies.size(), elasticity);
   return resolve(bodies, elasticities, contacts, options);
+}
+
+Configuration::Configuration(std::vector<Body> bodies, std::vector<Elasticity> elasticities,
+                             std::vector<Contact> contacts)
+    : Configuration(Trusted{}, std::move(bodies), std::move(elasticities), std::move(contacts)) {
+  validate(bodies_, contacts_);
+  require_elasticities(bodies_, elasticities_);
+}
+
+Configuration::Configuration(Trusted /*trusted*/, std::vector<Body> bodies,
+                             std::vector<Elasticity> elasticities, std::vector<Contact> contacts)
+    : bodies_(std::move(bodies)),
+      elasticities_(std::move(elasticities)),
+      contacts_(std::move(contacts)),
+      touches_(touches_by_body(bodies_.size(), contacts_)) {}
+
+ContactSystem Configuration::assemble(Storage storage) const {
+  return assemble_checked(bodies_, elasticities_, touches_, contacts_.size(), storage);
+}
+
+Eigen::VectorXd Configuration::approach(std::span<const Body> state) const {
+  assert(state.size() == bodies_.size());
+  return approach_checked(state, contacts_);
+}
+
+double Configuration::approach(std::span<const Body> state, Eigen::Index v) const {
+  assert(state.size() == bodies_.size());
+  return approach_at(state, contacts_[static_cast<std::size_t>(v)]);
+}
+
+std::vector<Body> Configuration::after(const Eigen::Ref<const Eigen::VectorXd>& Fdt) const {
+  require_one_per_contact(contacts_, Fdt);
+  return after_checked(bodies_, contacts_, Fdt);
+}
+
+void Configuration::apply(std::vector<Body>& state, Eigen::Index v, double Fdt) const {
+  assert(state.size() == bodies_.size());
+  apply_at(state, contacts_[static_cast<std::size_t>(v)], v, Fdt);
 }
 
 }  // namespace impulse::multipoint

@@ -8,22 +8,12 @@
 #include <variant>
 
 #include "impulse/core/error.hpp"
+#include "impulse/core/normal.hpp"
+#include "impulse/core/text.hpp"
 #include "impulse/material_2d/material_2d.hpp"
 #include "impulse/rigid_2d/rigid_2d.hpp"
 
 namespace impulse::scene {
-
-std::string_view to_string(BodyKind kind) {
-  switch (kind) {
-    case BodyKind::material:
-      return "material";
-    case BodyKind::rigid:
-      return "rigid";
-    case BodyKind::static_body:
-      return "static";
-  }
-  return "?";
-}
 
 namespace {
 
@@ -136,18 +126,9 @@ void require_motion(const std::string& place, const Body& body, int dimension) {
   }
 }
 
-void validate_body(const Scene& scene, std::size_t i,
-                   std::unordered_map<std::string_view, std::size_t>& names) {
+void validate_body(const Scene& scene, std::size_t i) {
   const Body& body = scene.bodies[i];
   const std::string place = at("bodies", i);
-  if (body.name.empty()) {
-    refuse(member(place, "name"), "must not be empty");
-  }
-  const auto [seen, fresh] = names.emplace(body.name, i);
-  if (!fresh) {
-    refuse(member(place, "name"),
-           in_quotes(body.name) + " is already the name of " + at("bodies", seen->second));
-  }
   if (body.kind == BodyKind::static_body) {
     return;  // immovable: nothing else of it is used
   }
@@ -189,20 +170,16 @@ void validate_contact(const Scene& scene, std::size_t v) {
     refuse(place, "joins two static bodies, " + in_quotes(bumper.name) + " and " +
                       in_quotes(wedge.name) + ": at least one of them must be able to move");
   }
-  const std::string normal = member(place, "normal");
-  const std::string tolerance = format_number(unit_normal_tolerance);
   if (scene.dimension == 1) {
-    if (!(c.normal.y() == 0.0 && std::abs(std::abs(c.normal.x()) - 1.0) <= unit_normal_tolerance)) {
-      refuse(normal, "must be +1 or -1 (within " + tolerance + "), got " + show(c.normal, 1));
+    if (!(c.normal.y() == 0.0 && std::isfinite(c.normal.x()) && c.normal.x() != 0.0)) {
+      refuse(member(place, "normal"),
+             "must be a non-zero number (+1 or -1: its sign is the direction), got " +
+                 show(c.normal, 1));
     }
   } else {
-    if (!all_finite_in(c.normal)) {
-      refuse(normal, "must be a finite unit vector, got " + show(c.normal, 2));
-    }
-    const double length = c.normal.norm();
-    if (!(std::abs(length - 1.0) <= unit_normal_tolerance)) {
-      refuse(normal, "must be a unit vector (length 1 within " + tolerance + "), got " +
-                         show(c.normal, 2) + " of length " + format_number(length));
+    const bool zero = c.normal.x() == 0.0 && c.normal.y() == 0.0;
+    if (!all_finite_in(c.normal) || zero) {
+      refuse(member(place, "normal"), "must be a finite non-zero vector, got " + show(c.normal, 2));
     }
   }
   if (c.point) {
@@ -217,6 +194,106 @@ void validate_contact(const Scene& scene, std::size_t v) {
       }
     }
   }
+}
+
+// Every rule of the scene format, each with its place.
+void validate_scene(const Scene& scene) {
+  if (scene.dimension != 1 && scene.dimension != 2) {
+    refuse("dimension", "must be 1 or 2, got " + std::to_string(scene.dimension));
+  }
+  if (scene.elasticity) {
+    require_elasticity("elasticity", *scene.elasticity);
+  }
+  if (scene.bodies.empty()) {
+    refuse("bodies", "must hold at least one body, got none");
+  }
+  if (scene.contacts.empty()) {
+    refuse("contacts", "must hold at least one contact, got none");
+  }
+  if (scene.serial.max_collisions < 0) {
+    refuse("solver.max_collisions",
+           "must be at least 1, got " + std::to_string(scene.serial.max_collisions));
+  }
+  if (scene.serial.max_collisions > methods::most_collisions) {
+    refuse("solver.max_collisions", "must be at most " + std::to_string(methods::most_collisions) +
+                                        ", got " + std::to_string(scene.serial.max_collisions));
+  }
+  validate_names(scene.bodies);
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    validate_body(scene, i);
+  }
+  for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
+    validate_contact(scene, v);
+  }
+  try {
+    require_dense_fits(static_cast<Eigen::Index>(scene.contacts.size()), scene.solver);
+  } catch (const InvalidInput& e) {
+    refuse("contacts", e.what());
+  }
+}
+
+// The elasticity each body collides with: its own, else the scene's default (static bodies,
+// which contribute nothing, get 1).
+std::vector<Elasticity> elasticities_of(const Scene& scene) {
+  std::vector<Elasticity> result;
+  result.reserve(scene.bodies.size());
+  for (const Body& body : scene.bodies) {
+    if (body.kind == BodyKind::static_body) {
+      result.emplace_back();  // unused: a static body contributes nothing
+    } else {
+      result.emplace_back(body.elasticity ? *body.elasticity : scene.elasticity.value_or(1.0));
+    }
+  }
+  return result;
+}
+
+// The scene's bodies as the multipoint module takes them (1D embedded on the x axis).
+std::vector<multipoint::Body> bodies_of(const Scene& scene) {
+  std::vector<multipoint::Body> result;
+  result.reserve(scene.bodies.size());
+  for (const Body& body : scene.bodies) {
+    const Vector2d p =
+        body.linear_given == Given::velocity ? Vector2d(body.mass * body.linear) : body.linear;
+    switch (body.kind) {
+      case BodyKind::material:
+        result.emplace_back(material_2d::PointMass{body.mass, p});
+        break;
+      case BodyKind::rigid: {
+        const double L =
+            body.angular_given == Given::velocity ? body.inertia * body.angular : body.angular;
+        result.emplace_back(rigid_2d::RigidBody{body.mass, body.inertia, body.position, p, L});
+        break;
+      }
+      case BodyKind::static_body:
+        result.emplace_back(multipoint::StaticBody{});
+        break;
+    }
+  }
+  return result;
+}
+
+// The scene's contacts as the multipoint module takes them: unit normals (a normal not of unit
+// length within the tolerance is divided by its length, and noted), a missing point at the
+// origin (only rigid bodies use it, and they always have one).
+std::vector<multipoint::Contact> contacts_of(const Scene& scene, std::vector<std::string>& notes) {
+  std::vector<multipoint::Contact> result;
+  result.reserve(scene.contacts.size());
+  for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
+    const Contact& c = scene.contacts[v];
+    const UnitNormal n(c.normal);
+    if (n.rescaled()) {
+      // As given (every digit), then the length and the normal used as the report prints numbers.
+      const Vector2d& used = n.vector();
+      notes.push_back(member(at("contacts", v), "normal") + " " + show(c.normal, scene.dimension) +
+                      " is not of unit length (length " + number_text(n.given_length()) +
+                      "): used as " +
+                      (scene.dimension == 1
+                           ? number_text(used.x())
+                           : "[" + number_text(used.x()) + ", " + number_text(used.y()) + "]"));
+    }
+    result.push_back({c.bumper, c.wedge, n.vector(), c.point.value_or(Vector2d::Zero())});
+  }
+  return result;
 }
 
 Motion motion_of(const multipoint::Body& body) {
@@ -241,8 +318,8 @@ bool finite(const Motion& m) {
 bool all_finite(const Result& r) {
   bool ok = std::isfinite(r.energy_before) && std::isfinite(r.energy_after) &&
             std::isfinite(r.energy_change) && all_finite_in(r.momentum_before) &&
-            all_finite_in(r.momentum_after) && all_finite_in(r.system.Fdt) &&
-            std::isfinite(r.system.residual);
+            all_finite_in(r.momentum_after) && all_finite_in(r.outcome.Fdt) &&
+            std::isfinite(r.outcome.residual);
   for (const BodyReport& b : r.bodies) {
     ok = ok && finite(b.before) && finite(b.after) && std::isfinite(b.energy_before) &&
          std::isfinite(b.energy_after);
@@ -256,146 +333,26 @@ bool all_finite(const Result& r) {
   return ok;
 }
 
-// The other methods (issue 9): the paper's system is assembled and solved as always, for its
-// diagnostics (rank, condition), and the method's impulses replace its Fdt.
-void solve_by_method(const Scene& scene, const std::vector<multipoint::Body>& before,
-                     const std::vector<Elasticity>& es,
-                     const std::vector<multipoint::Contact>& contacts, Result& result,
-                     std::vector<multipoint::Body>& after) {
-  const ContactSystem system = multipoint::assemble(before, es, contacts);
-  result.system = impulse::solve(system, scene.solver);
-  result.status = result.system.status;
-  after = before;
-  if (result.status != SolveStatus::success) {
-    return;
-  }
-  if (scene.method == methods::Method::complementarity) {
-    methods::ComplementarityOptions options = scene.complementarity;
-    options.dependent = scene.solver.dependent;
-    result.complementarity = methods::solve_complementarity(system, options);
-    if (result.complementarity.status == methods::LcpStatus::non_finite) {
-      result.status = SolveStatus::non_finite;
-      return;
-    }
-    result.system.Fdt = result.complementarity.Fdt;
-  } else {
-    methods::SerialResolution serial = methods::resolve_serial(before, es, contacts, scene.serial);
-    if (serial.diagnostics.status == methods::SerialStatus::non_finite) {
-      result.serial = std::move(serial.diagnostics);
-      result.status = SolveStatus::non_finite;
-      return;
-    }
-    result.serial = std::move(serial.diagnostics);
-    result.system.Fdt = std::move(serial.Fdt);
-  }
-  const Eigen::VectorXd residual =
-      system.is_sparse() ? Eigen::VectorXd(system.sparse_A() * result.system.Fdt - system.B())
-                         : Eigen::VectorXd(system.A() * result.system.Fdt - system.B());
-  result.system.residual = residual.norm();
-  after = multipoint::apply_impulses(before, contacts, result.system.Fdt);
-}
-
-}  // namespace
-
-void validate(const Scene& scene) {
-  if (scene.dimension != 1 && scene.dimension != 2) {
-    refuse("dimension", "must be 1 or 2, got " + std::to_string(scene.dimension));
-  }
-  if (scene.elasticity) {
-    require_elasticity("elasticity", *scene.elasticity);
-  }
-  if (scene.bodies.empty()) {
-    refuse("bodies", "must hold at least one body, got none");
-  }
-  if (scene.contacts.empty()) {
-    refuse("contacts", "must hold at least one contact, got none");
-  }
-  if (scene.serial.max_collisions < 0) {
-    refuse("solver.max_collisions",
-           "must be at least 1, got " + std::to_string(scene.serial.max_collisions));
-  }
-  std::unordered_map<std::string_view, std::size_t> names;
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-    validate_body(scene, i, names);
-  }
-  for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
-    validate_contact(scene, v);
-  }
-}
-
-std::vector<Elasticity> elasticities(const Scene& scene) {
-  std::vector<Elasticity> result;
-  result.reserve(scene.bodies.size());
-  for (const Body& body : scene.bodies) {
-    if (body.kind == BodyKind::static_body) {
-      result.emplace_back();  // unused: a static body contributes nothing
-    } else {
-      result.emplace_back(body.elasticity ? *body.elasticity : scene.elasticity.value_or(1.0));
-    }
-  }
-  return result;
-}
-
-std::vector<multipoint::Body> model_bodies(const Scene& scene) {
-  std::vector<multipoint::Body> result;
-  result.reserve(scene.bodies.size());
-  for (const Body& body : scene.bodies) {
-    const Vector2d p =
-        body.linear_given == Given::velocity ? Vector2d(body.mass * body.linear) : body.linear;
-    switch (body.kind) {
-      case BodyKind::material:
-        result.emplace_back(material_2d::PointMass{body.mass, p});
-        break;
-      case BodyKind::rigid: {
-        const double L =
-            body.angular_given == Given::velocity ? body.inertia * body.angular : body.angular;
-        result.emplace_back(rigid_2d::RigidBody{body.mass, body.inertia, body.position, p, L});
-        break;
-      }
-      case BodyKind::static_body:
-        result.emplace_back(multipoint::StaticBody{});
-        break;
-    }
-  }
-  return result;
-}
-
-std::vector<multipoint::Contact> model_contacts(const Scene& scene) {
-  std::vector<multipoint::Contact> result;
-  result.reserve(scene.contacts.size());
-  for (const Contact& c : scene.contacts) {
-    result.push_back({c.bumper, c.wedge, c.normal, c.point.value_or(Vector2d::Zero())});
-  }
-  return result;
-}
-
-Scene with_elasticity(Scene scene, double value) {
-  scene.elasticity = value;
-  for (Body& body : scene.bodies) {
-    body.elasticity.reset();
-  }
-  return scene;
-}
-
-Result solve(const Scene& scene) {
-  validate(scene);
-  const std::vector<multipoint::Body> before = model_bodies(scene);
-  const std::vector<multipoint::Contact> contacts = model_contacts(scene);
-  const std::vector<Elasticity> es = elasticities(scene);
-
+// The report of one method's outcome: each body before and after, energies, momenta, the
+// impulses with the bodies' names and each contact's approach speed before and after.
+Result report(const World& world, const Solution& paper, methods::Outcome outcome) {
+  const Scene& scene = world.scene();
+  const multipoint::Configuration& configuration = world.configuration();
+  const std::span<const multipoint::Body> before = configuration.bodies();
+  const std::span<const multipoint::Contact> contacts = configuration.contacts();
   Result result;
   result.dimension = scene.dimension;
-  result.method = scene.method;
-  std::vector<multipoint::Body> after;
-  if (scene.method == methods::Method::simultaneous) {
-    multipoint::Resolution resolution = multipoint::resolve(before, es, contacts, scene.solver);
-    result.status = resolution.solution.status;
-    result.system = std::move(resolution.solution);
-    after = std::move(resolution.after);
-  } else {
-    solve_by_method(scene, before, es, contacts, result, after);
+  result.method = outcome.method;
+  result.system = paper;
+  result.notes.assign(world.notes().begin(), world.notes().end());
+  if (outcome.after.empty()) {
+    outcome.after.assign(before.begin(), before.end());  // no state after: the numbers overflowed
   }
-
+  if (outcome.Fdt.size() != static_cast<Eigen::Index>(contacts.size())) {
+    outcome.Fdt = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(contacts.size()),
+                                            std::numeric_limits<double>::quiet_NaN());
+  }
+  const std::vector<multipoint::Body>& after = outcome.after;
   for (std::size_t k = 0; k < before.size(); ++k) {
     result.bodies.push_back({scene.bodies[k].name, scene.bodies[k].kind, motion_of(before[k]),
                              motion_of(after[k]), multipoint::kinetic_energy(before[k]),
@@ -407,32 +364,132 @@ Result solve(const Scene& scene) {
   result.momentum_before = multipoint::momentum(before);
   result.momentum_after = multipoint::momentum(after);
 
-  const Eigen::VectorXd approach_before = multipoint::approach(before, contacts);
-  const Eigen::VectorXd approach_after = multipoint::approach(after, contacts);
+  const Eigen::VectorXd approach_before = configuration.approach(before);
+  const Eigen::VectorXd approach_after = configuration.approach(after);
   for (std::size_t v = 0; v < contacts.size(); ++v) {
     const auto row = static_cast<Eigen::Index>(v);
-    const double Fdt = result.system.Fdt(row);
+    const double Fdt = outcome.Fdt(row);
+    const Vector2d on_bumper = v < outcome.on_bumper.size()
+                                   ? outcome.on_bumper[v]
+                                   : material_2d::impulse_vector(contacts[v].normal, Fdt);
     result.impulses.push_back({v, scene.bodies[contacts[v].bumper].name,
-                               scene.bodies[contacts[v].wedge].name, Fdt,
-                               material_2d::impulse_vector(contacts[v].normal, Fdt)});
+                               scene.bodies[contacts[v].wedge].name, Fdt, on_bumper});
     result.contacts.push_back({v, approach_before(row), approach_after(row)});
   }
+  result.status = outcome.finite && paper.status == SolveStatus::success ? SolveStatus::success
+                                                                         : SolveStatus::non_finite;
+  result.outcome = std::move(outcome);
   if (!all_finite(result)) {
     result.status = SolveStatus::non_finite;
   }
   return result;
 }
 
-bool finished(const Result& result) {
-  switch (result.method) {
-    case methods::Method::complementarity:
-      return result.complementarity.status != methods::LcpStatus::infeasible;
-    case methods::Method::serial:
-      return result.serial.status == methods::SerialStatus::finished;
-    case methods::Method::simultaneous:
-      break;
+}  // namespace
+
+void validate_names(std::span<const Body> bodies) {
+  std::unordered_map<std::string_view, std::size_t> names;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const std::string place = member(at("bodies", i), "name");
+    if (bodies[i].name.empty()) {
+      refuse(place, "must not be empty");
+    }
+    const auto [seen, fresh] = names.emplace(bodies[i].name, i);
+    if (!fresh) {
+      refuse(place,
+             in_quotes(bodies[i].name) + " is already the name of " + at("bodies", seen->second));
+    }
   }
-  return true;
+}
+
+namespace {
+// The scene checked, then its model: what the lower layers trust.
+multipoint::Configuration checked_model(const Scene& scene, std::vector<std::string>& notes) {
+  validate_scene(scene);
+  return {multipoint::Configuration::Trusted{}, bodies_of(scene), elasticities_of(scene),
+          contacts_of(scene, notes)};
+}
+}  // namespace
+
+World::World(Scene scene)
+    : scene_(std::move(scene)), configuration_(checked_model(scene_, notes_)) {}
+
+World::World(Scene scene, std::vector<std::string> notes, multipoint::Configuration configuration)
+    : scene_(std::move(scene)),
+      notes_(std::move(notes)),
+      configuration_(std::move(configuration)) {}
+
+std::string World::contact_name(Eigen::Index v) const {
+  const Contact& c = scene_.contacts[static_cast<std::size_t>(v)];
+  std::string text("contact ");
+  text.append(std::to_string(v)).append(" (").append(scene_.bodies[c.bumper].name);
+  text.append("\u2013").append(scene_.bodies[c.wedge].name).append(")");
+  return text;
+}
+
+methods::Options World::options() const {
+  methods::Options options;
+  options.solver = scene_.solver;
+  options.complementarity = scene_.complementarity;
+  options.serial = scene_.serial;
+  options.contact_name = [this](Eigen::Index v) { return contact_name(v); };
+  return options;
+}
+
+World World::with_elasticity(double value) const {
+  require_elasticity("elasticity", value);
+  Scene scene = scene::with_elasticity(scene_, value);
+  multipoint::Configuration configuration(
+      multipoint::Configuration::Trusted{},
+      {configuration_.bodies().begin(), configuration_.bodies().end()}, elasticities_of(scene),
+      {configuration_.contacts().begin(), configuration_.contacts().end()});
+  return {std::move(scene), notes_, std::move(configuration)};
+}
+
+void validate(const Scene& scene) {
+  validate_scene(scene);
+}
+
+Scene with_elasticity(Scene scene, double value) {
+  scene.elasticity = value;
+  for (Body& body : scene.bodies) {
+    body.elasticity.reset();
+  }
+  return scene;
+}
+
+std::vector<Result> resolve(const World& world, std::span<const methods::Method> methods) {
+  // The paper's system, assembled and solved once for every method.
+  const methods::Paper paper = methods::paper(world.configuration(), world.scene().solver);
+  const methods::Options options = world.options();
+  std::vector<Result> results;
+  for (const methods::Method method : methods) {
+    methods::Outcome outcome;
+    outcome.method = method;
+    if (paper.solution.status == SolveStatus::success) {
+      outcome = methods::resolve(method, world.configuration(), paper, options);
+    } else {
+      outcome.finite = false;  // numbers beyond doubles: no method can start
+    }
+    results.push_back(report(world, paper.solution, std::move(outcome)));
+  }
+  return results;
+}
+
+Result resolve(const World& world, methods::Method method) {
+  return std::move(resolve(world, std::span<const methods::Method>(&method, 1)).front());
+}
+
+Result resolve(const World& world) {
+  return resolve(world, world.scene().method);
+}
+
+Result solve(const Scene& scene) {
+  return resolve(World(scene));
+}
+
+bool finished(const Result& result) {
+  return result.outcome.finished;
 }
 
 }  // namespace impulse::scene

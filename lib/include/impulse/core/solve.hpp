@@ -5,11 +5,14 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string_view>
 #include <vector>
 
+#include "impulse/core/names.hpp"
 #include "impulse/core/system.hpp"
 
 namespace impulse {
@@ -33,20 +36,31 @@ enum class InconsistentPolicy {
   drop_equation,
 };
 
-/// @brief The scene format's name of a policy ("minimum-norm", "basic").
-/// @param policy the policy
-/// @return its name
-[[nodiscard]] std::string_view to_string(DependentPolicy policy);
-/// @brief The scene format's name of a policy ("least-squares", "drop-equation").
-/// @param policy the policy
-/// @return its name
-[[nodiscard]] std::string_view to_string(InconsistentPolicy policy);
+/// @brief The scene format's names of the policies for dependent systems (impulse::name_of).
+template <>
+struct EnumNames<DependentPolicy> {
+  /// "minimum-norm", "basic"
+  static constexpr std::array<Named<DependentPolicy>, 2> table{
+      {{DependentPolicy::minimum_norm, "minimum-norm"}, {DependentPolicy::basic, "basic"}}};
+};
+
+/// @brief The scene format's names of the policies for inconsistent systems (impulse::name_of).
+template <>
+struct EnumNames<InconsistentPolicy> {
+  /// "least-squares", "drop-equation"
+  static constexpr std::array<Named<InconsistentPolicy>, 2> table{
+      {{InconsistentPolicy::least_squares, "least-squares"},
+       {InconsistentPolicy::drop_equation, "drop-equation"}}};
+};
 
 /// @brief Which method solves a many-contact system.
 enum class SolveMethod {
   /// The sparse method for systems kept sparse (ContactSystem::is_sparse(), i.e. above
   /// sparse_threshold contacts) that carry their factor and use the default policies; the
-  /// dense one otherwise.
+  /// dense one otherwise. A sparse answer in doubt (the Lanczos steps find eigenvalues of A, on
+  /// its range, below the level its shifted pivots resolve, which they take for null space) is
+  /// solved again by the dense method up to dense_limit contacts; its condition estimate then
+  /// keeps the larger of the two methods' estimates.
   automatic,
   /// The complete orthogonal decomposition of G (or of A without a factor): exact rank,
   /// twice the digits, cubic cost and N² storage. The only method for DependentPolicy::basic
@@ -56,10 +70,29 @@ enum class SolveMethod {
   /// conjugate gradients on A preconditioned by a sparse LDLᵀ of @f$ A + \lambda I @f$
   /// (@f$ \lambda = 10^{-10} \max_v A_{vv} @f$), which gives any solution @f$ \hat{x} @f$;
   /// then the minimum-norm one as @f$ G^T y @f$ with @f$ G G^T y = G\,\hat{x} @f$, by
-  /// conjugate gradients preconditioned from the same LDLᵀ. Rank and condition number are
-  /// estimates from the pivots of the LDLᵀ.
+  /// conjugate gradients preconditioned from the same LDLᵀ. The rank is an estimate from the
+  /// pivots of the LDLᵀ; the condition number an estimate from them, A's diagonal and a few
+  /// Lanczos steps on A.
   sparse,
 };
+
+/// @brief Above this condition estimate of A, a solution is reported as ill-conditioned
+/// (`impulselab solve` and `sweep` warn; the fuzzer and the hostile tests hold the laws of the
+/// paper's system only up to it).
+///
+/// Rounding changes the impulses by up to about κ·ε of their size (κ the condition estimate,
+/// ε = 2.2e-16, times a small factor measured on the hostile scenes, see
+/// docs/pages/accuracy.md). At κ = 1e8 that is about 2e-8: half of the 16 digits of a double
+/// are rounding, and with the measured factor the error reaches the sixth significant digit,
+/// the last one the text report prints.
+inline constexpr double ill_conditioned = 1e8;
+
+/// @brief The most contacts a system may have when only the dense method can serve it
+/// (DependentPolicy::basic or InconsistentPolicy::drop_equation): its N×N matrices take 8·N²
+/// bytes each (32 MiB at 2,048; 80 GB at 100,000) and its cost grows as N³ (seconds at 2,048).
+/// The same bound limits the dense method's second opinion on a sparse system whose estimate is
+/// in doubt (SolveMethod::automatic).
+inline constexpr Eigen::Index dense_limit = 2048;
 
 /// @brief How to solve: the two policies and the tolerances behind the diagnostics.
 struct SolverOptions {
@@ -112,11 +145,13 @@ struct Solution {
   /// ratio for the factor G, when the system carries one): an estimate of the condition number
   /// of A on its range (1 for the empty system, infinity when A is zero but N > 0). Relative
   /// errors of Fdt are bounded by roughly this times the input's (docs/pages/accuracy.md has the
-  /// figures measured on hostile scenes). The sparse method gives the larger of the ratio of the
-  /// largest to the smallest retained LDLᵀ pivot and the ratio of A's largest to its smallest
-  /// positive diagonal entry: a rougher estimate, which can be far below the truth when A has
-  /// eigenvalues below about 1e-7 of its largest diagonal entry that are not a dependency
-  /// (the pivots count them as null space).
+  /// figures measured on hostile scenes). The sparse method gives the largest of three lower
+  /// bounds: the ratio of the largest to the smallest retained LDLᵀ pivot, the ratio of A's
+  /// largest to its smallest positive diagonal entry, and the ratio of the extreme Ritz values of
+  /// twelve Lanczos steps on A started in its range (which sees eigenvalues the shifted pivots
+  /// count as null space; rounding may put it above the truth by about ε times the estimate).
+  /// It can still be far below the truth when A's spectrum is spread over more values than
+  /// twelve steps resolve (docs/pages/accuracy.md).
   double condition_estimate = 1.0;
   std::vector<Eigen::Index> dropped;  ///< equations ignored under InconsistentPolicy::drop_equation
   SolverOptions options;              ///< the policies and tolerances used
@@ -126,6 +161,13 @@ struct Solution {
   bool rank_estimated = false;  ///< true when rank and condition_estimate are sparse estimates
   int iterations = 0;           ///< conjugate-gradient steps of the sparse method (0: dense)
 };
+
+/// @brief Throws InvalidInput when @p contacts exceed dense_limit and @p options ask for a policy
+/// that only the dense method serves: `"2049 contacts with the policies "basic" and
+/// "least-squares", which only the dense method serves: it takes at most 2048 …"`.
+/// @param contacts N, the number of contacts
+/// @param options the policies
+void require_dense_fits(Eigen::Index contacts, const SolverOptions& options);
 
 /// @brief Solves A·Fdt = B under the given policies.
 ///
@@ -137,7 +179,8 @@ struct Solution {
 /// Rank, residual and consistency always refer to A and B. Large systems kept sparse are solved
 /// by the sparse method (see SolveMethod), which returns the same minimum-norm impulses.
 /// @param system the assembled system
-/// @param options policies and tolerances
+/// @param options policies and tolerances (policies that only the dense method serves on more
+///        than dense_limit contacts throw InvalidInput, see require_dense_fits())
 /// @return the impulses with A, B, rank, residual and the other diagnostics
 [[nodiscard]] Solution solve(const ContactSystem& system, const SolverOptions& options = {});
 
@@ -153,6 +196,19 @@ struct ScalarSolution {
 };
 
 namespace detail {
+// The least-squares solution of M x ~ rhs of least norm, from a complete orthogonal
+// decomposition whose pivots below `threshold` times the largest count as zero (0: Eigen's
+// default); zero when M is zero or has no rows. The dense method and the complementarity
+// method's settling of its pivots both solve with it.
+Eigen::VectorXd least_norm(const Eigen::MatrixXd& M, const Eigen::VectorXd& rhs, double threshold);
+// The least-norm impulses on the contacts `on` (zero elsewhere) that satisfy those contacts'
+// equations of A·F = B: from the columns `on` of the factor G (A = GᵀG, B = Gᵀw) when the system
+// carries it, with the pivot threshold √rank_tolerance (the one on A, see
+// SolverOptions::rank_tolerance, is its square), else from A's block with rank_tolerance. The
+// choice that solve() makes for the whole system.
+Eigen::VectorXd least_norm_on(const Eigen::MatrixXd& A, const Eigen::VectorXd& B,
+                              const Eigen::MatrixXd* G, const Eigen::VectorXd* w,
+                              const std::vector<Eigen::Index>& on, double rank_tolerance);
 // The 2-norm of finite numbers, scaled by powers of two so that it neither overflows nor
 // underflows and raises no floating-point exception (Eigen's stableNorm() overflows computing
 // 1 over a subnormal entry). The residuals and tolerances of solve() use it.

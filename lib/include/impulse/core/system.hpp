@@ -126,6 +126,12 @@ class ContactSystem {
   /// @return B, N
   [[nodiscard]] const Eigen::VectorXd& B() const { return B_; }
 
+  /// @brief @f$ \|A\,F\,dt - B\| @f$ for any impulses, computed without overflow or underflow
+  /// of its squares (as impulse::solve computes its residual).
+  /// @param Fdt one impulse magnitude per contact (a size mismatch throws InvalidInput)
+  /// @return the 2-norm of the residual
+  [[nodiscard]] double residual(const Eigen::Ref<const Eigen::VectorXd>& Fdt) const;
+
   /// @brief Whether every contribution so far carried its factor, so that factor() is complete.
   /// @return true when @f$ A = G^T G @f$ and @f$ B = G^T w @f$ hold for the stacked factor
   [[nodiscard]] bool has_factor() const { return factored_; }

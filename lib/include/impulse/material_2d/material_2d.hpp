@@ -6,8 +6,10 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "impulse/core/checked.hpp"
 #include "impulse/core/elasticity.hpp"
 #include "impulse/core/error.hpp"
+#include "impulse/core/normal.hpp"
 #include "impulse/core/solve.hpp"
 #include "impulse/core/system.hpp"
 
@@ -90,7 +92,8 @@ struct Collision {
   PointMass wedge;          ///< the wedge after
 };
 
-/// @brief Collides two point masses at one contact.
+/// @brief Collides two point masses at one contact, checking them and the normal first
+/// (InvalidInput naming "bumper", "wedge" or "normal"; the normal must be of unit length).
 /// @param bumper the body whose outward normal is @p n
 /// @param bumper_elasticity its elasticity
 /// @param wedge the body whose outward normal is -@p n
@@ -100,6 +103,19 @@ struct Collision {
 [[nodiscard]] inline Collision collide(const PointMass& bumper, Elasticity bumper_elasticity,
                                        const PointMass& wedge, Elasticity wedge_elasticity,
                                        const Eigen::Vector2d& n);
+
+/// @brief Collides two point masses checked when they were made, along a normal checked when it
+/// was made: nothing is tested again.
+/// @param bumper the body whose outward normal is @p n
+/// @param bumper_elasticity its elasticity
+/// @param wedge the body whose outward normal is -@p n
+/// @param wedge_elasticity its elasticity
+/// @param n the normal, outward from the bumper
+/// @return the impulse and both bodies after
+[[nodiscard]] inline Collision collide(const Checked<PointMass>& bumper,
+                                       Elasticity bumper_elasticity,
+                                       const Checked<PointMass>& wedge, Elasticity wedge_elasticity,
+                                       const UnitNormal& n);
 
 // The single-contact path is defined here, inline, so that the caller's compiler sees the whole
 // formula: bench/single_contact.cpp measures it against the same impulse written by hand.
@@ -139,9 +155,14 @@ inline double normal_velocity(const PointMass& body, const Eigen::Vector2d& n) {
 namespace detail {
 // (1.3) on the cast p_n = p . n for a body and normal already validated; (4.5)/(4.8) with a
 // single contact.
+// `squared` is |n|², the same for the bumper's n and the wedge's -n: a collision computes it once.
+inline ScalarContribution share(const PointMass& body, const Eigen::Vector2d& n, double squared,
+                                Elasticity elasticity) {
+  return {squared / body.mass, elasticity.value() * normal_velocity(body, n)};
+}
 inline ScalarContribution share(const PointMass& body, const Eigen::Vector2d& n,
                                 Elasticity elasticity) {
-  return {n.squaredNorm() / body.mass, elasticity.value() * normal_velocity(body, n)};
+  return share(body, n, n.squaredNorm(), elasticity);
 }
 }  // namespace detail
 
@@ -160,6 +181,19 @@ inline PointMass apply_impulse(const PointMass& body, const Eigen::Vector2d& n, 
   return {body.mass, body.p + impulse_vector(n, Fdt)};
 }
 
+namespace detail {
+// The collision of two bodies and a normal already checked: the ⊕ of the two shares, then
+// Fdt = B / A, then each body's update.
+// `squared` is |n|², known beforehand for an impulse::UnitNormal.
+inline Collision collide_checked(const PointMass& bumper, Elasticity bumper_elasticity,
+                                 const PointMass& wedge, Elasticity wedge_elasticity,
+                                 const Eigen::Vector2d& n, double squared) {
+  const ScalarSolution solution = solve(share(bumper, n, squared, bumper_elasticity) +
+                                        share(wedge, -n, squared, wedge_elasticity));
+  return {solution, apply_impulse(bumper, n, solution.Fdt), apply_impulse(wedge, -n, solution.Fdt)};
+}
+}  // namespace detail
+
 inline Collision collide(const PointMass& bumper, Elasticity bumper_elasticity,
                          const PointMass& wedge, Elasticity wedge_elasticity,
                          const Eigen::Vector2d& n) {
@@ -169,10 +203,15 @@ inline Collision collide(const PointMass& bumper, Elasticity bumper_elasticity,
   if (!(bumper_ok & wedge_ok & normal_ok)) [[unlikely]] {
     detail::refuse_collision(bumper, wedge, n);  // the checks one by one, with messages
   }
-  // Validated once above; the ⊕ of the two shares, then Fdt = B / A.
-  const ScalarSolution solution = solve(detail::share(bumper, n, bumper_elasticity) +
-                                        detail::share(wedge, -n, wedge_elasticity));
-  return {solution, apply_impulse(bumper, n, solution.Fdt), apply_impulse(wedge, -n, solution.Fdt)};
+  return detail::collide_checked(bumper, bumper_elasticity, wedge, wedge_elasticity, n,
+                                 n.squaredNorm());
+}
+
+inline Collision collide(const Checked<PointMass>& bumper, Elasticity bumper_elasticity,
+                         const Checked<PointMass>& wedge, Elasticity wedge_elasticity,
+                         const UnitNormal& n) {
+  return detail::collide_checked(bumper.get(), bumper_elasticity, wedge.get(), wedge_elasticity,
+                                 n.vector(), n.squared_norm());
 }
 
 }  // namespace impulse::material_2d

@@ -5,11 +5,13 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <array>
 #include <span>
 #include <string_view>
 #include <vector>
 
 #include "impulse/core/elasticity.hpp"
+#include "impulse/core/names.hpp"
 #include "impulse/core/solve.hpp"
 #include "impulse/core/system.hpp"
 #include "impulse/multipoint/multipoint.hpp"
@@ -37,12 +39,6 @@ enum class LcpAlgorithm {
   projected_gauss_seidel,
 };
 
-/// @brief The name of an algorithm as reports print it ("automatic", "lemke", "active-set",
-/// "projected-gauss-seidel").
-/// @param algorithm the algorithm
-/// @return its name
-[[nodiscard]] std::string_view to_string(LcpAlgorithm algorithm);
-
 /// @brief How a complementarity problem ended. Bad input is an exception instead.
 enum class LcpStatus {
   solved,           ///< Fdt satisfies the conditions within the tolerance
@@ -53,16 +49,10 @@ enum class LcpStatus {
   non_finite,       ///< A or B held a NaN or an infinity; Fdt is all NaN
 };
 
-/// @brief The name of a status ("solved", "iteration-limit", "inaccurate", "infeasible",
-/// "non-finite").
-/// @param status the status
-/// @return its name
-[[nodiscard]] std::string_view to_string(LcpStatus status);
-
 /// @brief Up to this many contacts LcpAlgorithm::automatic pivots; above, it iterates
-/// (projected Gauss-Seidel). The same size as impulse::sparse_threshold: below it A is dense,
+/// (projected Gauss-Seidel). It is impulse::sparse_threshold, one policy: below it A is dense,
 /// and a whole pivoting solve takes a few milliseconds at 256 contacts.
-inline constexpr Eigen::Index pivoting_threshold = 256;
+inline constexpr Eigen::Index pivoting_threshold = sparse_threshold;
 
 /// @brief The most contacts the pivoting methods accept: they work on dense matrices (Lemke's
 /// tableau holds @f$ N\,(2N + 1) @f$ numbers, 256 MiB at this size).
@@ -75,6 +65,9 @@ struct ComplementarityOptions {
   /// satisfy the conditions (where they need no clipping, the paper's equal impulses); basic,
   /// the vertex the pivoting reaches (as few contacts as possible carry impulse).
   DependentPolicy dependent = DependentPolicy::minimum_norm;
+  /// The pivot threshold of the least-squares solves that settle a pivoting's impulses, as
+  /// SolverOptions::rank_tolerance (0: Eigen's default).
+  double rank_tolerance = 0.0;
   /// The conditions count as met when
   /// @f$ \max_v |\min(F_v, w_v)| \le \tau \max_v \left(\sum_k |A_{vk}|\,|F_k| + |B_v|\right) @f$
   /// with this @f$ \tau @f$: the residual against the size of the terms that make up w.
@@ -176,6 +169,18 @@ struct ComplementaritySolution {
     const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& B, double tolerance = 1e-10,
     int max_sweeps = 10000, const Eigen::VectorXd& start = Eigen::VectorXd());
 
+/// @brief Solves the complementarity problem of an assembled system, projected Gauss-Seidel
+/// starting from @p paper's impulses (the solution of A·Fdt = B that the caller already has)
+/// instead of solving the system again for its warm start.
+/// @param system the paper's system A·Fdt = B
+/// @param paper its solution by impulse::solve with the default policies (used when its status
+///        is success and it has one impulse per contact)
+/// @param options algorithm, policy, tolerance and limit
+/// @return the impulses, the slack and the diagnostics
+[[nodiscard]] ComplementaritySolution solve_complementarity(const ContactSystem& system,
+                                                            const Solution& paper,
+                                                            const ComplementarityOptions& options);
+
 /// @brief Solves the complementarity problem of an assembled system with the algorithm the
 /// options ask for (LcpAlgorithm::automatic: by its size and whether it carries its factor, and
 /// projected Gauss-Seidel as well when pivoting ends LcpStatus::inaccurate, keeping the closer
@@ -217,3 +222,28 @@ struct ComplementarityResolution {
     std::span<const multipoint::Contact> contacts, const ComplementarityOptions& options = {});
 
 }  // namespace impulse::methods
+
+namespace impulse {
+/// @brief The names of the algorithms as reports print them.
+template <>
+struct EnumNames<methods::LcpAlgorithm> {
+  /// "automatic", "lemke", "active-set", "projected-gauss-seidel"
+  static constexpr std::array<Named<methods::LcpAlgorithm>, 4> table{
+      {{methods::LcpAlgorithm::automatic, "automatic"},
+       {methods::LcpAlgorithm::lemke, "lemke"},
+       {methods::LcpAlgorithm::active_set, "active-set"},
+       {methods::LcpAlgorithm::projected_gauss_seidel, "projected-gauss-seidel"}}};
+};
+
+/// @brief The names of the complementarity statuses.
+template <>
+struct EnumNames<methods::LcpStatus> {
+  /// "solved", "iteration-limit", "inaccurate", "infeasible", "non-finite"
+  static constexpr std::array<Named<methods::LcpStatus>, 5> table{
+      {{methods::LcpStatus::solved, "solved"},
+       {methods::LcpStatus::iteration_limit, "iteration-limit"},
+       {methods::LcpStatus::inaccurate, "inaccurate"},
+       {methods::LcpStatus::infeasible, "infeasible"},
+       {methods::LcpStatus::non_finite, "non-finite"}}};
+};
+}  // namespace impulse

@@ -4,12 +4,14 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string_view>
 #include <vector>
 
 #include "impulse/core/elasticity.hpp"
+#include "impulse/core/names.hpp"
 #include "impulse/multipoint/multipoint.hpp"
 
 namespace impulse::methods {
@@ -21,18 +23,18 @@ enum class SerialStatus {
   non_finite,       ///< a collision gave a NaN or an infinity (numbers beyond doubles)
 };
 
-/// @brief The name of a status ("finished", "collision-limit", "non-finite").
-/// @param status the status
-/// @return its name
-[[nodiscard]] std::string_view to_string(SerialStatus status);
-
 /// @brief Collisions allowed per contact when SerialOptions::max_collisions is 0.
 inline constexpr std::int64_t collisions_per_contact = 1000;
+
+/// @brief The largest bound on serial collisions a scene may ask for (each costs a few
+/// microseconds: 10⁹ of them take tens of minutes).
+inline constexpr std::int64_t most_collisions = 1'000'000'000;
 
 /// @brief The bound and the tolerance of serial collisions.
 struct SerialOptions {
   /// The most collisions before giving up; 0 means collisions_per_contact times the number of
-  /// contacts. Negative values throw InvalidInput.
+  /// contacts. Negative values throw InvalidInput. (A scene's bound, `solver.max_collisions`,
+  /// is a whole number from 1 to most_collisions.)
   std::int64_t max_collisions = 0;
   /// A contact approaches when its approach speed exceeds this fraction of the largest speed of
   /// a body's point at any contact before the collisions (rounding leaves a resolved contact at
@@ -61,13 +63,15 @@ struct SerialResolution {
 };
 
 /// @brief Resolves the contacts one at a time: the contact with the largest approach speed
-/// (above SerialOptions::approach_tolerance of the speeds) collides alone, then the next, until
-/// no contact approaches or the bound on collisions is reached.
+/// (above SerialOptions::approach_tolerance of the speeds; the lowest index among equal speeds)
+/// collides alone, then the next, until no contact approaches or the bound on collisions is
+/// reached.
 ///
 /// Each collision is the paper's single-contact formula for its two bodies: the 1×1 system
-/// @f$ F\,dt\,(a_1 + a_2) = b_1 + b_2 @f$ of their blocks at that one contact
-/// (multipoint::contribution, which is (1.3), (3.6)/(3.10), (4.5)/(4.8) or (5.3)/(5.5) with one
-/// contact), each body with its own elasticity. At elasticity 2 each collision keeps the kinetic
+/// @f$ F\,dt\,(a_1 + a_2) = b_1 + b_2 @f$ of their shares of that one contact
+/// (multipoint::share: (1.3), the cast of section 2, or (3.6)/(3.10)), each body with its own
+/// elasticity. The bodies after are the state the last collision left (not the summed impulses
+/// applied again). At elasticity 2 each collision keeps the kinetic
 /// energy, so the whole sequence does; below 2 the same pair can collide again and again (a
 /// partly elastic collision leaves the first body following the second), in principle without
 /// end (inelastic collapse), which the bound cuts off with SerialStatus::collision_limit.
@@ -92,6 +96,13 @@ struct SerialResolution {
                                               std::span<const multipoint::Contact> contacts,
                                               const SerialOptions& options = {});
 
+/// @brief Serial collisions of a configuration checked when it was made.
+/// @param configuration the bodies, elasticities and contacts
+/// @param options the bound and the tolerance (checked: InvalidInput)
+/// @return the summed impulses, the bodies after and the order of the collisions
+[[nodiscard]] SerialResolution resolve_serial(const multipoint::Configuration& configuration,
+                                              const SerialOptions& options = {});
+
 /// @brief The passes of an order of collisions: the order cut wherever a contact comes up that
 /// the current pass has already resolved.
 /// @param order the contacts in the order they collided
@@ -99,3 +110,15 @@ struct SerialResolution {
 [[nodiscard]] std::int64_t count_passes(std::span<const Eigen::Index> order);
 
 }  // namespace impulse::methods
+
+namespace impulse {
+/// @brief The names of the statuses of serial collisions.
+template <>
+struct EnumNames<methods::SerialStatus> {
+  /// "finished", "collision-limit", "non-finite"
+  static constexpr std::array<Named<methods::SerialStatus>, 3> table{
+      {{methods::SerialStatus::finished, "finished"},
+       {methods::SerialStatus::collision_limit, "collision-limit"},
+       {methods::SerialStatus::non_finite, "non-finite"}}};
+};
+}  // namespace impulse

@@ -137,6 +137,24 @@ void validate(std::span<const Body> bodies, std::span<const Contact> contacts);
                                                std::span<const Contact> contacts,
                                                const Eigen::Ref<const Eigen::VectorXd>& Fdt);
 
+/// @brief One body's share of one contact alone, the (a, b) of the 1×1 system of that contact:
+/// the single-contact form of its block, i.e. section 1's (1.3), section 2's cast or section 3's
+/// (3.6)/(3.10) (material_2d::contribution, rigid_2d::contribution without their checks). A static
+/// body's share is zero. Allocates nothing.
+/// @param body the body (checked: a Configuration's)
+/// @param touch the contact, with the body's own outward normal
+/// @param elasticity the body's elasticity
+/// @return (a, b)
+[[nodiscard]] ScalarContribution share(const Body& body, const Touch& touch, Elasticity elasticity);
+
+/// @brief The impulse @f$ -\vec{n}\,F\,dt @f$ on @p body at the touch's point, its own normal
+/// @f$ \vec{n} @f$ (material_2d::apply_impulse or rigid_2d::apply_impulse; nothing for a static
+/// body).
+/// @param body the body, changed in place
+/// @param touch the contact, with the body's own outward normal
+/// @param Fdt the impulse magnitude
+void apply_impulse(Body& body, const Touch& touch, double Fdt);
+
 /// @brief Kinetic energy of one body (0 for a static body).
 /// @param body any body
 /// @return its kinetic energy
@@ -178,5 +196,89 @@ struct Resolution {
 [[nodiscard]] Resolution resolve(std::span<const Body> bodies, Elasticity elasticity,
                                  std::span<const Contact> contacts,
                                  const SolverOptions& options = {});
+
+/// @brief Bodies, their elasticities and the contacts between them, checked once when made: the
+/// collision of sections 4 and 5 before it is resolved.
+///
+/// Everything that takes a Configuration trusts it: assembling its system, its approach speeds,
+/// the bodies after a set of impulses and the methods of impulse::methods check nothing again.
+/// The free functions above (assemble(), approach(), apply_impulses(), resolve()) check their
+/// arguments and then do the same work as these members.
+class Configuration {
+ public:
+  /// @brief Checks and keeps: validate() on the bodies and contacts, one elasticity per body
+  /// (else InvalidInput).
+  /// @param bodies the bodies
+  /// @param elasticities one per body
+  /// @param contacts the contacts between them
+  Configuration(std::vector<Body> bodies, std::vector<Elasticity> elasticities,
+                std::vector<Contact> contacts);
+
+  /// @brief The tag of the constructor that trusts its caller.
+  struct Trusted {
+    /// @brief Only made on purpose.
+    explicit Trusted() = default;
+  };
+
+  /// @brief Keeps bodies and contacts that the caller has already checked for everything
+  /// validate() checks, and one elasticity per body (a scene's World checks more, with the
+  /// scene format's places). Nothing is checked again.
+  /// @param trusted the tag
+  /// @param bodies the bodies
+  /// @param elasticities one per body
+  /// @param contacts the contacts between them
+  Configuration(Trusted trusted, std::vector<Body> bodies, std::vector<Elasticity> elasticities,
+                std::vector<Contact> contacts);
+
+  /// @brief The bodies before the collision.
+  /// @return one per body
+  [[nodiscard]] std::span<const Body> bodies() const { return bodies_; }
+  /// @brief Each body's elasticity.
+  /// @return one per body
+  [[nodiscard]] std::span<const Elasticity> elasticities() const { return elasticities_; }
+  /// @brief The contacts.
+  /// @return one per contact
+  [[nodiscard]] std::span<const Contact> contacts() const { return contacts_; }
+  /// @brief The contacts that body @p body takes part in, each with its own outward normal, in
+  /// contact order (as touches() gives them, computed once).
+  /// @param body index of the body
+  /// @return its touches
+  [[nodiscard]] std::span<const Touch> touches(std::size_t body) const { return touches_[body]; }
+
+  /// @brief The ⊕ of every body's block (section 4.5), as the free assemble() without its checks.
+  /// @param storage dense, sparse, or automatic (sparse above sparse_threshold contacts)
+  /// @return the system A·Fdt = B
+  [[nodiscard]] ContactSystem assemble(Storage storage = Storage::automatic) const;
+
+  /// @brief Each contact's approach speed for a state of these bodies: the sum of both bodies'
+  /// normal velocities, each cast on its own outward normal (> 0: closing).
+  /// @param state these bodies, before or after impulses (same order, same kinds)
+  /// @return one speed per contact
+  [[nodiscard]] Eigen::VectorXd approach(std::span<const Body> state) const;
+
+  /// @brief Contact @p v's approach speed for a state of these bodies.
+  /// @param state these bodies, before or after impulses
+  /// @param v the contact
+  /// @return its approach speed
+  [[nodiscard]] double approach(std::span<const Body> state, Eigen::Index v) const;
+
+  /// @brief The bodies after the impulses @p Fdt, one per contact (the bumper receives
+  /// @f$ -\vec{n_v}\,F_v dt @f$, the wedge the opposite).
+  /// @param Fdt one magnitude per contact (a size mismatch throws InvalidInput)
+  /// @return the bodies after
+  [[nodiscard]] std::vector<Body> after(const Eigen::Ref<const Eigen::VectorXd>& Fdt) const;
+
+  /// @brief Contact @p v's impulse alone on a state of these bodies: both its bodies changed.
+  /// @param state these bodies, changed in place
+  /// @param v the contact
+  /// @param Fdt its impulse magnitude
+  void apply(std::vector<Body>& state, Eigen::Index v, double Fdt) const;
+
+ private:
+  std::vector<Body> bodies_;
+  std::vector<Elasticity> elasticities_;
+  std::vector<Contact> contacts_;
+  std::vector<std::vector<Touch>> touches_;
+};
 
 }  // namespace impulse::multipoint

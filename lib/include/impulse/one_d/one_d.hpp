@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "impulse/core/checked.hpp"
 #include "impulse/core/elasticity.hpp"
 #include "impulse/core/error.hpp"
 #include "impulse/core/solve.hpp"
@@ -77,7 +78,8 @@ struct Collision {
   Body second;              ///< the second body after
 };
 
-/// @brief Collides two bodies at one point with (1.3).
+/// @brief Collides two bodies at one point with (1.3), checking them first (InvalidInput naming
+/// "first", "second" or "normal").
 /// @param first the body whose outward direction is @p normal
 /// @param first_elasticity its elasticity
 /// @param second the body whose outward direction is -@p normal
@@ -86,6 +88,18 @@ struct Collision {
 /// @return the impulse and both bodies after
 [[nodiscard]] inline Collision collide(const Body& first, Elasticity first_elasticity,
                                        const Body& second, Elasticity second_elasticity,
+                                       double normal = 1.0);
+
+/// @brief Collides two bodies checked when they were made, with (1.3): only the direction is
+/// tested (+1 or -1), the bodies not again.
+/// @param first the body whose outward direction is @p normal
+/// @param first_elasticity its elasticity
+/// @param second the body whose outward direction is -@p normal
+/// @param second_elasticity its elasticity
+/// @param normal +1 when @p first is on the left of @p second, -1 otherwise
+/// @return the impulse and both bodies after
+[[nodiscard]] inline Collision collide(const Checked<Body>& first, Elasticity first_elasticity,
+                                       const Checked<Body>& second, Elasticity second_elasticity,
                                        double normal = 1.0);
 
 // The single-contact path is defined here, inline, so that the caller's compiler sees the whole
@@ -141,6 +155,18 @@ inline Body apply_impulse(const Body& body, double outward, double Fdt) {
   return {body.mass, body.momentum - outward * Fdt};
 }
 
+namespace detail {
+// The collision of two bodies and a direction already checked: the ⊕ of the two shares of (1.3),
+// then Fdt = B / A, then each body's update.
+inline Collision collide_checked(const Body& first, Elasticity first_elasticity, const Body& second,
+                                 Elasticity second_elasticity, double normal) {
+  const ScalarSolution solution =
+      solve(share(first, normal, first_elasticity) + share(second, -normal, second_elasticity));
+  return {solution, apply_impulse(first, normal, solution.Fdt),
+          apply_impulse(second, -normal, solution.Fdt)};
+}
+}  // namespace detail
+
 inline Collision collide(const Body& first, Elasticity first_elasticity, const Body& second,
                          Elasticity second_elasticity, double normal) {
   const bool first_ok = detail::acceptable(first);
@@ -148,11 +174,16 @@ inline Collision collide(const Body& first, Elasticity first_elasticity, const B
   if (!(first_ok & second_ok & ((normal == 1.0) | (normal == -1.0)))) [[unlikely]] {
     detail::refuse_collision(first, second, normal);  // the checks one by one, with messages
   }
-  // Validated once above; the ⊕ of the two shares of (1.3), then Fdt = B / A.
-  const ScalarSolution solution = solve(detail::share(first, normal, first_elasticity) +
-                                        detail::share(second, -normal, second_elasticity));
-  return {solution, apply_impulse(first, normal, solution.Fdt),
-          apply_impulse(second, -normal, solution.Fdt)};
+  return detail::collide_checked(first, first_elasticity, second, second_elasticity, normal);
+}
+
+inline Collision collide(const Checked<Body>& first, Elasticity first_elasticity,
+                         const Checked<Body>& second, Elasticity second_elasticity, double normal) {
+  if (!((normal == 1.0) | (normal == -1.0))) [[unlikely]] {
+    require_unit_direction("normal", normal);
+  }
+  return detail::collide_checked(first.get(), first_elasticity, second.get(), second_elasticity,
+                                 normal);
 }
 
 }  // namespace impulse::one_d

@@ -6,8 +6,10 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "impulse/core/checked.hpp"
 #include "impulse/core/elasticity.hpp"
 #include "impulse/core/error.hpp"
+#include "impulse/core/normal.hpp"
 #include "impulse/core/plane.hpp"
 #include "impulse/core/solve.hpp"
 #include "impulse/core/system.hpp"
@@ -100,7 +102,9 @@ struct Collision {
   RigidBody wedge;          ///< the wedge after
 };
 
-/// @brief Collides two rigid bodies at one point: @f$ F\,dt\,(A_1 + A_2) = B_1 + B_2 @f$.
+/// @brief Collides two rigid bodies at one point: @f$ F\,dt\,(A_1 + A_2) = B_1 + B_2 @f$,
+/// checking the bodies, the point and the normal first (InvalidInput naming "bumper", "wedge",
+/// "point" or "normal"; the normal must be of unit length).
 /// @param bumper the body whose outward normal is @p n
 /// @param bumper_elasticity its elasticity
 /// @param wedge the body whose outward normal is -@p n
@@ -111,6 +115,20 @@ struct Collision {
 [[nodiscard]] inline Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
                                        const RigidBody& wedge, Elasticity wedge_elasticity,
                                        const Eigen::Vector2d& point, const Eigen::Vector2d& n);
+
+/// @brief Collides two rigid bodies checked when they were made, along a normal checked when it
+/// was made: only the point is tested (finite, else InvalidInput naming "point").
+/// @param bumper the body whose outward normal is @p n
+/// @param bumper_elasticity its elasticity
+/// @param wedge the body whose outward normal is -@p n
+/// @param wedge_elasticity its elasticity
+/// @param point the contact point in world coordinates
+/// @param n the normal, outward from the bumper
+/// @return the impulse and both bodies after
+[[nodiscard]] inline Collision collide(const Checked<RigidBody>& bumper,
+                                       Elasticity bumper_elasticity,
+                                       const Checked<RigidBody>& wedge, Elasticity wedge_elasticity,
+                                       const Eigen::Vector2d& point, const UnitNormal& n);
 
 // The single-contact path is defined here, inline, so that the caller's compiler sees the whole
 // formula: bench/single_contact.cpp measures it against the same impulse written by hand.
@@ -168,11 +186,31 @@ inline double normal_velocity(const RigidBody& body, const Eigen::Vector2d& poin
 
 namespace detail {
 // (3.6) at elasticity 2, (3.10) at elasticity 1, for a body, point and normal already validated.
+// with the lever arm det(r, n), which the body's update needs again.
+struct ArmedShare {
+  ScalarContribution share;
+  double arm = 0.0;  // det(r, n)
+};
+// `squared` is |n|², the same for the bumper's n and the wedge's -n: a collision computes it once.
+inline ArmedShare armed_share(const RigidBody& body, const Eigen::Vector2d& point,
+                              const Eigen::Vector2d& n, double squared, Elasticity elasticity) {
+  const double arm = det(point - body.position, n);  // det(r, n)
+  return {{arm * arm / body.inertia + squared / body.mass,
+           elasticity.value() * (body.L * arm / body.inertia + body.p.dot(n) / body.mass)},
+          arm};
+}
 inline ScalarContribution share(const RigidBody& body, const Eigen::Vector2d& point,
                                 const Eigen::Vector2d& n, Elasticity elasticity) {
-  const double arm = det(point - body.position, n);  // det(r, n)
-  return {arm * arm / body.inertia + n.squaredNorm() / body.mass,
-          elasticity.value() * (body.L * arm / body.inertia + body.p.dot(n) / body.mass)};
+  return armed_share(body, point, n, n.squaredNorm(), elasticity).share;
+}
+// The body after the impulse -n Fdt whose lever arm det(r, n) is known: (3.2) with
+// det(r, -n Fdt) = -Fdt det(r, n).
+inline RigidBody apply_armed(const RigidBody& body, const Eigen::Vector2d& n, double arm,
+                             double Fdt) {
+  RigidBody after = body;
+  after.p -= n * Fdt;    // (3.2), translation
+  after.L -= arm * Fdt;  // (3.2), rotation
+  return after;
 }
 }  // namespace detail
 
@@ -193,6 +231,22 @@ inline RigidBody apply_impulse(const RigidBody& body, const Eigen::Vector2d& poi
   return after;
 }
 
+namespace detail {
+// Section 3.4 for bodies, point and normal already checked: Fdt (A1 + A2) = B1 + B2, the wedge
+// with its own normal -n, then each body's update.
+// `squared` is |n|², known beforehand for an impulse::UnitNormal.
+inline Collision collide_checked(const RigidBody& bumper, Elasticity bumper_elasticity,
+                                 const RigidBody& wedge, Elasticity wedge_elasticity,
+                                 const Eigen::Vector2d& point, const Eigen::Vector2d& n,
+                                 double squared) {
+  const ArmedShare first = armed_share(bumper, point, n, squared, bumper_elasticity);
+  const ArmedShare second = armed_share(wedge, point, -n, squared, wedge_elasticity);
+  const ScalarSolution solution = solve(first.share + second.share);
+  return {solution, apply_armed(bumper, n, first.arm, solution.Fdt),
+          apply_armed(wedge, -n, second.arm, solution.Fdt)};
+}
+}  // namespace detail
+
 inline Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
                          const RigidBody& wedge, Elasticity wedge_elasticity,
                          const Eigen::Vector2d& point, const Eigen::Vector2d& n) {
@@ -205,11 +259,18 @@ inline Collision collide(const RigidBody& bumper, Elasticity bumper_elasticity,
   if (!(bumper_ok & wedge_ok & point_ok & normal_ok)) [[unlikely]] {
     detail::refuse_collision(bumper, wedge, point, n);
   }
-  // Section 3.4: Fdt (A1 + A2) = B1 + B2, the wedge with its own normal -n.
-  const ScalarSolution solution = solve(detail::share(bumper, point, n, bumper_elasticity) +
-                                        detail::share(wedge, point, -n, wedge_elasticity));
-  return {solution, apply_impulse(bumper, point, n, solution.Fdt),
-          apply_impulse(wedge, point, -n, solution.Fdt)};
+  return detail::collide_checked(bumper, bumper_elasticity, wedge, wedge_elasticity, point, n,
+                                 n.squaredNorm());
+}
+
+inline Collision collide(const Checked<RigidBody>& bumper, Elasticity bumper_elasticity,
+                         const Checked<RigidBody>& wedge, Elasticity wedge_elasticity,
+                         const Eigen::Vector2d& point, const UnitNormal& n) {
+  if (!all_finite(point.x(), point.y())) [[unlikely]] {
+    require_finite("point", point);
+  }
+  return detail::collide_checked(bumper.get(), bumper_elasticity, wedge.get(), wedge_elasticity,
+                                 point, n.vector(), n.squared_norm());
 }
 
 }  // namespace impulse::rigid_2d

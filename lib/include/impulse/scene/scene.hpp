@@ -1,34 +1,41 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 /// @file
-/// @brief Scenes: named bodies and contacts, checked, solved and reported.
+/// @brief Scenes: named bodies and contacts, checked once into a World, resolved by a method into
+/// a Result.
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "impulse/core/elasticity.hpp"
+#include "impulse/core/names.hpp"
 #include "impulse/core/solve.hpp"
 #include "impulse/methods/complementarity.hpp"
 #include "impulse/methods/methods.hpp"
+#include "impulse/methods/outcome.hpp"
+#include "impulse/methods/resolve.hpp"
 #include "impulse/methods/serial.hpp"
 #include "impulse/multipoint/multipoint.hpp"
 
 /// @brief A scene as a student writes it (see the scene format), and everything a report of its
 /// collision shows.
 ///
-/// The flow is the library's: the scene's bodies and contacts become multipoint bodies and
-/// contacts, multipoint::resolve assembles and solves A·Fdt = B and applies the impulses, and the
-/// result gathers the section modules' energies, momenta and approach speeds before and after.
+/// The flow is the paper's, once: a Scene is checked once into a World (every rule of the scene
+/// format, with its place: `bodies[1].mass: must be positive and finite, got -1`), whose bodies
+/// and contacts the lower layers trust; resolve() assembles each body's contribution, ⊕ them into
+/// A·Fdt = B, solves it once, lets the method resolve the contacts (methods::resolve) and
+/// gathers the Result: impulses, each body before and after, energies, momenta and approach
+/// speeds, the system and the method's own words. The reports (scene/report.hpp, and the JSON
+/// of scene/json.hpp) are built from the Result alone.
+///
 /// A one-dimensional scene lies on the x axis: its numbers are the x coordinates of vectors
 /// whose y coordinate is 0, and its normals are ±x.
-///
-/// Checking a scene (validate) throws InvalidInput with the place in the scene format first,
-/// e.g. `bodies[1].mass: must be positive and finite, got -1`; a file reader puts the file name
-/// in front.
 namespace impulse::scene {
 
 /// @brief The kinds of body of the scene format.
@@ -38,10 +45,21 @@ enum class BodyKind {
   static_body,  ///< the format's "static": immovable, contributes nothing to A and B
 };
 
-/// @brief The scene format's name of a kind ("material", "rigid", "static").
-/// @param kind the kind
-/// @return its name
-[[nodiscard]] std::string_view to_string(BodyKind kind);
+}  // namespace impulse::scene
+
+namespace impulse {
+/// @brief The scene format's names of the kinds of body.
+template <>
+struct EnumNames<scene::BodyKind> {
+  /// "material", "rigid", "static"
+  static constexpr std::array<Named<scene::BodyKind>, 3> table{
+      {{scene::BodyKind::material, "material"},
+       {scene::BodyKind::rigid, "rigid"},
+       {scene::BodyKind::static_body, "static"}}};
+};
+}  // namespace impulse
+
+namespace impulse::scene {
 
 /// @brief Which of two alternative keys gave a body's motion (so that messages name that key).
 enum class Given {
@@ -67,7 +85,11 @@ struct Body {
 struct Contact {
   std::size_t bumper = 0;  ///< index of the body whose outward normal is `normal`
   std::size_t wedge = 0;   ///< index of the other body (outward normal -`normal`)
-  Eigen::Vector2d normal = Eigen::Vector2d::UnitX();  ///< unit, outward from the bumper
+  /// Outward from the bumper: any finite non-zero vector (a number in 1D), made unit when the
+  /// scene is checked (a vector not of unit length within 1e-9 is divided by its length, and
+  /// the report notes it). A file's `"normal_angle"` in degrees arrives here as
+  /// impulse::UnitNormal::from_degrees() of it.
+  Eigen::Vector2d normal = Eigen::Vector2d::UnitX();
   std::optional<Eigen::Vector2d> point;  ///< world position; needed when a body is rigid
 };
 
@@ -90,37 +112,69 @@ struct Scene {
   methods::ComplementarityOptions complementarity;
 };
 
-/// @brief Throws InvalidInput for anything the scene format refuses: a dimension other than 1
-/// or 2, no bodies or no contacts, empty or repeated names, a rigid body in 1D, a mass or
-/// inertia that is not positive and finite (or whose inverse overflows), a non-finite
-/// coordinate, a motion whose momentum or velocity overflows, a negative elasticity, a body
-/// without an elasticity when the scene has no default, a contact index out of range, a body in
-/// contact with itself, a contact between two static bodies, a normal that is not a unit vector
-/// (±1 in 1D), a rigid body's contact without a point, a negative bound on serial collisions.
+/// @brief A scene checked once: every rule of the scene format, then its bodies and contacts as
+/// the lower layers take them (a multipoint::Configuration that nothing checks again).
+///
+/// Refused, with InvalidInput naming the place: a dimension other than 1 or 2, no bodies or no
+/// contacts, empty or repeated names, a rigid body in 1D, a mass or inertia that is not positive
+/// and finite (or whose inverse overflows), a non-finite coordinate, a motion whose momentum or
+/// velocity overflows, a negative elasticity, a body without an elasticity when the scene has
+/// no default, a contact index out of range, a body in contact with itself, a contact between
+/// two static bodies, a zero or non-finite normal, a rigid body's contact
+/// without a point, a bound on serial collisions outside 0 (the default) to
+/// methods::most_collisions, and more contacts than impulse::dense_limit with policies that only
+/// the dense method serves.
+class World {
+ public:
+  /// @brief Checks @p scene and keeps it with its model.
+  /// @param scene the scene (InvalidInput as above)
+  explicit World(Scene scene);
+
+  /// @brief The scene as it was given.
+  /// @return the scene
+  [[nodiscard]] const Scene& scene() const { return scene_; }
+  /// @brief The scene's bodies (1D on the x axis), elasticities and contacts with unit normals.
+  /// @return the checked configuration
+  [[nodiscard]] const multipoint::Configuration& configuration() const { return configuration_; }
+  /// @brief What the check changed, in words: normals not of unit length made unit.
+  /// @return one sentence each, naming the place
+  [[nodiscard]] std::span<const std::string> notes() const { return notes_; }
+  /// @brief How the reports name contact @p v: "contact 2 (a–b)", bumper then wedge.
+  /// @param v the contact
+  /// @return its name
+  [[nodiscard]] std::string contact_name(Eigen::Index v) const;
+  /// @brief The options of the methods: the scene's solver, complementarity and serial options,
+  /// and contact_name() for their sentences (which refers to this world: the options are for use
+  /// while it lives).
+  /// @return the options
+  [[nodiscard]] methods::Options options() const;
+  /// @brief The same world with every body colliding at elasticity @p value (the bodies' own
+  /// elasticities dropped, as `sweep` does); only the elasticity is checked.
+  /// @param value the elasticity (InvalidInput "elasticity: must be finite and at least 0, …")
+  /// @return the changed world
+  [[nodiscard]] World with_elasticity(double value) const;
+
+ private:
+  World(Scene scene, std::vector<std::string> notes, multipoint::Configuration configuration);
+  Scene scene_;
+  std::vector<std::string> notes_;
+  multipoint::Configuration configuration_;
+};
+
+/// @brief The first rule World checks, on its own for a reader that must look bodies up by name
+/// before the rest is read: a name that is empty or already taken is refused with its place,
+/// `bodies[1].name: "a" is already the name of bodies[0]`.
+/// @param bodies the scene's bodies
+void validate_names(std::span<const Body> bodies);
+
+/// @brief Checks a scene (constructs its World): InvalidInput as World does.
 /// @param scene the scene
 void validate(const Scene& scene);
-
-/// @brief The elasticity each body collides with: its own, else the scene's default (static
-/// bodies, which contribute nothing, get 1).
-/// @param scene a valid scene
-/// @return one elasticity per body
-[[nodiscard]] std::vector<Elasticity> elasticities(const Scene& scene);
-
-/// @brief The scene's bodies as the multipoint module takes them (1D embedded on the x axis).
-/// @param scene a valid scene
-/// @return one body per scene body, same order
-[[nodiscard]] std::vector<multipoint::Body> model_bodies(const Scene& scene);
-
-/// @brief The scene's contacts as the multipoint module takes them (a missing point is the
-/// origin, which only rigid bodies would use and they always have one).
-/// @param scene a valid scene
-/// @return one contact per scene contact, same order
-[[nodiscard]] std::vector<multipoint::Contact> model_contacts(const Scene& scene);
 
 /// @brief The scene with every body colliding at elasticity @p value: the default becomes
 /// @p value and the bodies' own elasticities are dropped (what `sweep` does).
 /// @param scene the scene
-/// @param value the elasticity (checked by validate when the scene is solved)
+/// @param value the elasticity (checked when the scene is)
 /// @return the changed copy
 [[nodiscard]] Scene with_elasticity(Scene scene, double value);
 
@@ -158,14 +212,14 @@ struct ContactReport {
   double approach_after = 0.0;   ///< after them
 };
 
-/// @brief Everything a report of a solved scene shows.
+/// @brief Everything a report of a resolved scene shows.
 ///
 /// `status` is SolveStatus::non_finite when the system or any reported quantity is not finite
 /// (numbers beyond the range of doubles); the other fields are then not meaningful.
 struct Result {
   int dimension = 2;                          ///< the scene's dimension
   SolveStatus status = SolveStatus::success;  ///< whether the numbers below are meaningful
-  std::vector<ImpulseReport> impulses;        ///< one per contact
+  std::vector<ImpulseReport> impulses;        ///< one per contact: the method's impulses
   std::vector<BodyReport> bodies;             ///< one per body
   double energy_before = 0.0;                 ///< total kinetic energy before
   double energy_after = 0.0;                  ///< after
@@ -173,32 +227,46 @@ struct Result {
   Eigen::Vector2d momentum_before = Eigen::Vector2d::Zero();  ///< of the movable bodies
   Eigen::Vector2d momentum_after = Eigen::Vector2d::Zero();   ///< of the movable bodies
   std::vector<ContactReport> contacts;                        ///< one per contact
-  /// A, B, Fdt, rank, residual, policies. Whatever the method, A and B are the paper's system of
-  /// the scene and rank, dependent, consistent and condition_estimate describe it; Fdt is the
-  /// method's impulses and residual is @f$ \|A\,F\,dt - B\| @f$ for them.
+  /// The paper's system of the scene, solved once: A, B, rank, dependent, consistent, condition
+  /// estimate, and the paper's own impulses and residual (whatever the method).
   Solution system;
-  // Added for the other methods (issue 9), after the fields above so that their order stays.
-  methods::Method method = methods::Method::simultaneous;  ///< the method that found Fdt
-  /// Method complementarity: the solution with its slack and diagnostics (its Fdt is
-  /// system.Fdt). Empty otherwise.
-  methods::ComplementaritySolution complementarity;
-  /// Method serial: the order of the collisions, the passes and whether they finished. A
-  /// result whose serial status is not SerialStatus::finished reports the state at the bound.
-  methods::SerialDiagnostics serial;
+  methods::Method method = methods::Method::simultaneous;  ///< the method that found the impulses
+  // Added for issue 16, after the fields above so that their order stays.
+  /// The method's answer: its impulses (outcome.Fdt), the bodies after as it produced them, the
+  /// residual @f$ \|A\,F\,dt - B\| @f$ of its impulses, whether it finished, and its words.
+  methods::Outcome outcome;
+  std::vector<std::string> notes;  ///< what checking the scene changed (World::notes)
 };
 
-/// @brief Validates, solves and reports: with multipoint::resolve for the paper's method, else
-/// with methods::solve_complementarity or methods::resolve_serial (the system A·Fdt = B is then
-/// solved as well, for its diagnostics).
-/// @param scene the scene (validated: InvalidInput as in validate)
+/// @brief The pipeline, once: assembles the world's system, solves it, lets @p method resolve
+/// the contacts (methods::resolve) and reports.
+/// @param world the checked scene
+/// @param method the method (the scene's own: resolve(const World&))
+/// @return the report
+[[nodiscard]] Result resolve(const World& world, methods::Method method);
+
+/// @brief resolve() with the scene's own method (its `solver.method`).
+/// @param world the checked scene
+/// @return the report
+[[nodiscard]] Result resolve(const World& world);
+
+/// @brief Several methods on one world, the system assembled and solved once for all of them
+/// (what `solve --compare` shows).
+/// @param world the checked scene
+/// @param methods the methods, in the order of the results
+/// @return one report per method
+[[nodiscard]] std::vector<Result> resolve(const World& world,
+                                          std::span<const methods::Method> methods);
+
+/// @brief Checks and resolves: resolve(World(scene)).
+/// @param scene the scene (InvalidInput as World)
 /// @return the report
 [[nodiscard]] Result solve(const Scene& scene);
 
 /// @brief Whether the method finished: false when serial collisions stopped at their bound or
 /// a complementarity problem has no solution (which no valid scene gives).
-/// @param result a solved scene
-/// @return true when the result is the method's answer (possibly approximate: see
-///         methods::LcpStatus::iteration_limit)
+/// @param result a resolved scene
+/// @return result.outcome.finished
 [[nodiscard]] bool finished(const Result& result);
 
 }  // namespace impulse::scene

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "impulse/methods/resolve.hpp"
+
+#include <string>
+
+#include "impulse/core/text.hpp"
+
+namespace impulse::methods {
+
+Paper paper(const multipoint::Configuration& configuration, const SolverOptions& options) {
+  Paper p{configuration.assemble(), Solution{}};
+  p.solution = solve(p.system, options);
+  return p;
+}
+
+Outcome simultaneous(const multipoint::Configuration& configuration, const Paper& paper) {
+  const Solution& s = paper.solution;
+  Outcome o;
+  o.method = Method::simultaneous;
+  o.finite = s.status == SolveStatus::success;
+  o.Fdt = s.Fdt;
+  o.residual = s.residual;
+  o.after = o.finite ? configuration.after(s.Fdt)
+                     : std::vector<multipoint::Body>(configuration.bodies().begin(),
+                                                     configuration.bodies().end());
+  o.summary = "rank " + std::to_string(s.rank) + " of " + std::to_string(s.B.size()) +
+              ", residual |A·Fdt - B| " + number_text(s.residual);
+  return o;
+}
+
+Outcome resolve(Method method, const multipoint::Configuration& configuration, const Paper& paper,
+                const Options& options) {
+  switch (method) {
+    case Method::complementarity:
+      return complementarity(configuration, paper, options);
+    case Method::serial:
+      return serial(configuration, paper, options);
+    case Method::simultaneous:
+      break;
+  }
+  return simultaneous(configuration, paper);
+}
+
+std::string detail::contact_name(const Options& options, Eigen::Index v) {
+  return options.contact_name ? options.contact_name(v) : "contact " + std::to_string(v);
+}
+
+}  // namespace impulse::methods

@@ -1,0 +1,435 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "impulse/scene/report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <variant>
+
+#include "impulse/core/text.hpp"
+
+namespace impulse::scene {
+
+namespace {
+
+// The largest magnitude among the values `get` picks, over `items`.
+template <typename Items, typename Get>
+double largest(const Items& items, Get get) {
+  double scale = 0.0;
+  for (const auto& item : items) {
+    scale = std::max(scale, get(item));
+  }
+  return scale;
+}
+
+std::string heading(std::string_view title, bool colour) {
+  std::string text("\n");
+  text.append(colour ? "\033[1m" : "").append(title).append(colour ? "\033[0m" : "");
+  return text.append("\n");
+}
+
+// "Scene s.json: dimension 2, 2 bodies, 1 contact".
+std::string scene_line(const Result& r, std::string_view source, bool colour) {
+  std::string out(colour ? "\033[1m" : "");
+  out.append("Scene ").append(source).append(colour ? "\033[0m" : "");
+  out.append(": dimension ").append(std::to_string(r.dimension)).append(", ");
+  out.append(counted(r.bodies.size(), "body", "bodies")).append(", ");
+  out.append(counted(r.contacts.size(), "contact", "contacts"));
+  return out;
+}
+
+// The largest speeds, momenta, … of a result, for chopped().
+double impulse_scale(const Result& r) {
+  return largest(r.impulses, [](const ImpulseReport& i) { return std::abs(i.magnitude); });
+}
+double velocity_scale(const Result& r) {
+  return largest(r.bodies, [](const BodyReport& b) {
+    return std::max(b.before.velocity.cwiseAbs().maxCoeff(),
+                    b.after.velocity.cwiseAbs().maxCoeff());
+  });
+}
+double spin_scale(const Result& r) {
+  return largest(r.bodies, [](const BodyReport& b) {
+    return std::max(std::abs(b.before.angular_velocity), std::abs(b.after.angular_velocity));
+  });
+}
+double approach_scale(const Result& r) {
+  return largest(r.contacts, [](const ContactReport& c) {
+    return std::max(std::abs(c.approach_before), std::abs(c.approach_after));
+  });
+}
+double momentum_total_scale(const Result& r) {
+  return std::max(r.momentum_before.cwiseAbs().maxCoeff(), r.momentum_after.cwiseAbs().maxCoeff());
+}
+
+// A method's per-contact value v of a column, as text.
+std::string column_cell(const methods::ContactColumn& column, std::size_t v) {
+  if (const auto* numbers = std::get_if<std::vector<double>>(&column.values)) {
+    const double scale = largest(*numbers, [](double x) { return std::abs(x); });
+    return v < numbers->size() ? chopped((*numbers)[v], scale) : "";
+  }
+  const auto& words = std::get<std::vector<std::string>>(column.values);
+  return v < words.size() ? words[v] : "";
+}
+
+bool any_rigid(const Result& r) {
+  return std::any_of(r.bodies.begin(), r.bodies.end(),
+                     [](const BodyReport& b) { return b.kind == BodyKind::rigid; });
+}
+
+}  // namespace
+
+std::string text_report(const Result& r, std::string_view source, bool colour) {
+  const int d = r.dimension;
+  const methods::Outcome& o = r.outcome;
+  std::string out = scene_line(r, source, colour);
+  out.append("\n");
+  out.append("Method: ").append(name_of(r.method)).append(" (");
+  out.append(methods::text_of(r.method).description).append(")\n");
+  for (const std::string& line : o.details) {
+    out.append("  ").append(line).append("\n");
+  }
+  for (const std::string& note : r.notes) {
+    out.append("Note: ").append(note).append("\n");
+  }
+
+  const double impulses_scale = impulse_scale(r);
+  const double velocities_scale = velocity_scale(r);
+  const double momentum_scale =
+      std::max(largest(r.bodies,
+                       [](const BodyReport& b) {
+                         return std::max(b.before.momentum.cwiseAbs().maxCoeff(),
+                                         b.after.momentum.cwiseAbs().maxCoeff());
+                       }),
+               momentum_total_scale(r));
+  const double spins_scale = spin_scale(r);
+  const double angular_momentum_scale = largest(r.bodies, [](const BodyReport& b) {
+    return std::max(std::abs(b.before.angular_momentum), std::abs(b.after.angular_momentum));
+  });
+  const double energy_scale = std::max(r.energy_before, r.energy_after);
+  const double approaches_scale = approach_scale(r);
+
+  out.append(heading("Impulses (Fdt at each contact; the bumper receives -normal * Fdt)", colour));
+  std::vector<std::string> impulse_header{"contact", "bumper", "wedge", "Fdt", "on bumper"};
+  std::vector<bool> impulse_left{false, true, true, false, false};
+  for (const methods::ContactColumn& column : o.per_contact) {
+    impulse_header.push_back(column.heading);
+    impulse_left.push_back(std::holds_alternative<std::vector<std::string>>(column.values));
+  }
+  TextTable impulses(impulse_header, impulse_left);
+  for (std::size_t v = 0; v < r.impulses.size(); ++v) {
+    const ImpulseReport& i = r.impulses[v];
+    std::vector<std::string> row{std::to_string(i.contact), i.bumper, i.wedge,
+                                 chopped(i.magnitude, impulses_scale),
+                                 vector_text(i.on_bumper, d, impulses_scale)};
+    for (const methods::ContactColumn& column : o.per_contact) {
+      row.push_back(column_cell(column, v));
+    }
+    impulses.add(std::move(row));
+  }
+  out.append(impulses.render());
+
+  out.append(heading("Bodies", colour));
+  TextTable bodies(
+      {"body", "kind", "velocity before", "velocity after", "momentum before", "momentum after"},
+      {true, true});
+  for (const BodyReport& b : r.bodies) {
+    bodies.add({b.name, std::string(name_of(b.kind)),
+                vector_text(b.before.velocity, d, velocities_scale),
+                vector_text(b.after.velocity, d, velocities_scale),
+                vector_text(b.before.momentum, d, momentum_scale),
+                vector_text(b.after.momentum, d, momentum_scale)});
+  }
+  out.append(bodies.render());
+  if (any_rigid(r)) {
+    out.append(heading("Rotation of the rigid bodies", colour));
+    TextTable rotation(
+        {"body", "angular velocity before", "after", "angular momentum before", "after"}, {true});
+    for (const BodyReport& b : r.bodies) {
+      if (b.kind == BodyKind::rigid) {
+        rotation.add({b.name, chopped(b.before.angular_velocity, spins_scale),
+                      chopped(b.after.angular_velocity, spins_scale),
+                      chopped(b.before.angular_momentum, angular_momentum_scale),
+                      chopped(b.after.angular_momentum, angular_momentum_scale)});
+      }
+    }
+    out.append(rotation.render());
+  }
+
+  out.append(heading("Totals (momentum leaves out static bodies)", colour));
+  TextTable totals({"", "before", "after", "change"}, {true});
+  totals.add({"kinetic energy", chopped(r.energy_before, energy_scale),
+              chopped(r.energy_after, energy_scale), chopped(r.energy_change, energy_scale)});
+  const Eigen::Vector2d momentum_change = r.momentum_after - r.momentum_before;
+  totals.add({"momentum", vector_text(r.momentum_before, d, momentum_scale),
+              vector_text(r.momentum_after, d, momentum_scale),
+              vector_text(momentum_change, d, momentum_scale)});
+  out.append(totals.render());
+
+  out.append(heading("Contacts (approach: sum of both normal velocities, > 0 closing)", colour));
+  TextTable contacts({"contact", "bumper", "wedge", "approach before", "approach after"},
+                     {false, true, true});
+  for (std::size_t v = 0; v < r.contacts.size(); ++v) {
+    contacts.add({std::to_string(v), r.impulses[v].bumper, r.impulses[v].wedge,
+                  chopped(r.contacts[v].approach_before, approaches_scale),
+                  chopped(r.contacts[v].approach_after, approaches_scale)});
+  }
+  out.append(contacts.render());
+
+  const Solution& s = r.system;
+  const auto n = static_cast<std::size_t>(s.B.size());
+  out.append(heading("System A·Fdt = B", colour));
+  out.append("  ").append(counted(n, "equation", "equations"));
+  out.append(", rank ").append(std::to_string(s.rank));
+  out.append(", residual |A·Fdt - B| = ").append(number_text(o.residual)).append("\n");
+  out.append("  ").append(s.dependent ? "dependent (many solutions; the policy picks one)"
+                                      : "independent (one solution)");
+  out.append(", ").append(s.consistent ? "consistent" : "inconsistent");
+  out.append(", policy ").append(name_of(s.options.dependent));
+  out.append(", condition estimate ").append(number_text(s.condition_estimate)).append("\n");
+  if (!s.dropped.empty()) {
+    out.append("  equations dropped:");
+    for (const auto v : s.dropped) {
+      out.append(" ").append(std::to_string(v));
+    }
+    out.append("\n");
+  }
+  const bool has_A = s.A.size() > 0 && static_cast<std::size_t>(s.A.rows()) == n;
+  if (!has_A) {
+    out.append("  A was not formed by the solver; B and Fdt:\n");
+  } else if (n > 10) {
+    out.append("  A is ").append(std::to_string(n)).append(" x ").append(std::to_string(n));
+    out.append(": too large to show here (--format json has it); B and Fdt:\n");
+  }
+  std::vector<std::string> header;
+  std::vector<bool> left;
+  if (has_A && n <= 10) {
+    for (std::size_t c = 0; c < n; ++c) {
+      header.push_back(c == 0 ? "A" : "");
+      left.push_back(false);
+    }
+    header.emplace_back("|");
+    left.push_back(true);
+  }
+  header.insert(header.end(), {"Fdt", "|", "B"});
+  left.insert(left.end(), {false, true, false});
+  TextTable system(header, left);
+  const double A_scale = has_A ? s.A.cwiseAbs().maxCoeff() : 0.0;
+  const double B_scale = n > 0 ? s.B.cwiseAbs().maxCoeff() : 0.0;
+  for (std::size_t row = 0; row < n; ++row) {
+    const auto i = static_cast<Eigen::Index>(row);
+    std::vector<std::string> cells;
+    if (has_A && n <= 10) {
+      for (std::size_t c = 0; c < n; ++c) {
+        cells.push_back(chopped(s.A(i, static_cast<Eigen::Index>(c)), A_scale));
+      }
+      cells.emplace_back("|");
+    }
+    cells.insert(cells.end(), {chopped(o.Fdt(i), impulses_scale), "|", chopped(s.B(i), B_scale)});
+    system.add(cells);
+  }
+  out.append(system.render());
+  return out;
+}
+
+std::string comparison_text(std::span<const Result> results, std::string_view source, bool colour) {
+  const Result& first = results.front();
+  const int d = first.dimension;
+  std::string out = scene_line(first, source, colour);
+  out.append("; ").append(results.size() == 3 ? "three" : std::to_string(results.size()));
+  out.append(" methods side by side\n");
+  for (const Result& r : results) {
+    out.append("  ").append(name_of(r.method)).append(": ");
+    out.append(methods::text_of(r.method).brief).append("\n");
+  }
+  for (const std::string& note : first.notes) {
+    out.append("Note: ").append(note).append("\n");
+  }
+
+  std::vector<std::string> names;
+  for (const Result& r : results) {
+    names.emplace_back(name_of(r.method));
+  }
+  // A method that did not finish shows "-" in every cell.
+  const auto cell = [](const Result& r, const std::string& text) {
+    return r.outcome.finished ? text : std::string("-");
+  };
+  const auto scale_of = [&](auto get) {
+    double scale = 0.0;
+    for (const Result& r : results) {
+      if (r.outcome.finished) {
+        scale = std::max(scale, get(r));
+      }
+    }
+    return scale;
+  };
+  const auto header = [&](std::vector<std::string> first_columns) {
+    first_columns.insert(first_columns.end(), names.begin(), names.end());
+    return first_columns;
+  };
+
+  out.append(heading("Impulses Fdt (negative: the contact pulls)", colour));
+  const double impulses_scale = scale_of(impulse_scale);
+  TextTable impulses(header({"contact", "bumper", "wedge"}), {false, true, true});
+  for (std::size_t v = 0; v < first.impulses.size(); ++v) {
+    std::vector<std::string> row{std::to_string(v), first.impulses[v].bumper,
+                                 first.impulses[v].wedge};
+    for (const Result& r : results) {
+      row.push_back(cell(r, chopped(r.impulses[v].magnitude, impulses_scale)));
+    }
+    impulses.add(std::move(row));
+  }
+  out.append(impulses.render());
+
+  out.append(heading("Velocities after", colour));
+  const double velocities_scale = scale_of(velocity_scale);
+  TextTable velocities(header({"body", "before"}), {true});
+  for (std::size_t k = 0; k < first.bodies.size(); ++k) {
+    std::vector<std::string> row{first.bodies[k].name,
+                                 vector_text(first.bodies[k].before.velocity, d, velocities_scale)};
+    for (const Result& r : results) {
+      row.push_back(cell(r, vector_text(r.bodies[k].after.velocity, d, velocities_scale)));
+    }
+    velocities.add(std::move(row));
+  }
+  out.append(velocities.render());
+  if (any_rigid(first)) {
+    out.append(heading("Angular velocities after (rigid bodies)", colour));
+    const double spins_scale = scale_of(spin_scale);
+    TextTable spins(header({"body", "before"}), {true});
+    for (std::size_t k = 0; k < first.bodies.size(); ++k) {
+      if (first.bodies[k].kind != BodyKind::rigid) {
+        continue;
+      }
+      std::vector<std::string> row{first.bodies[k].name,
+                                   chopped(first.bodies[k].before.angular_velocity, spins_scale)};
+      for (const Result& r : results) {
+        row.push_back(cell(r, chopped(r.bodies[k].after.angular_velocity, spins_scale)));
+      }
+      spins.add(std::move(row));
+    }
+    out.append(spins.render());
+  }
+
+  out.append(heading("Approach speeds after (> 0: the contact still closes)", colour));
+  const double approaches_scale = scale_of(approach_scale);
+  TextTable approaches(header({"contact", "before"}), {});
+  for (std::size_t v = 0; v < first.contacts.size(); ++v) {
+    std::vector<std::string> row{std::to_string(v),
+                                 chopped(first.contacts[v].approach_before, approaches_scale)};
+    for (const Result& r : results) {
+      row.push_back(cell(r, chopped(r.contacts[v].approach_after, approaches_scale)));
+    }
+    approaches.add(std::move(row));
+  }
+  out.append(approaches.render());
+
+  out.append(heading("Totals (momentum leaves out static bodies)", colour));
+  const double energy_scale =
+      scale_of([](const Result& r) { return std::max(r.energy_before, r.energy_after); });
+  const double momentum_scale = scale_of(momentum_total_scale);
+  TextTable totals(header({"", "before"}), {true});
+  std::vector<std::string> energy{"kinetic energy", chopped(first.energy_before, energy_scale)};
+  std::vector<std::string> change{"energy change", ""};
+  std::vector<std::string> momentum{"momentum",
+                                    vector_text(first.momentum_before, d, momentum_scale)};
+  for (const Result& r : results) {
+    energy.push_back(cell(r, chopped(r.energy_after, energy_scale)));
+    change.push_back(cell(r, chopped(r.energy_change, energy_scale)));
+    momentum.push_back(cell(r, vector_text(r.momentum_after, d, momentum_scale)));
+  }
+  totals.add(std::move(energy));
+  totals.add(std::move(change));
+  totals.add(std::move(momentum));
+  out.append(totals.render());
+
+  out.append(heading("How each method got there", colour));
+  TextTable how({}, {true, true});
+  for (const Result& r : results) {
+    how.add({std::string(name_of(r.method)) + ":",
+             r.outcome.finished ? r.outcome.summary : "did not finish (see the message below)"});
+  }
+  out.append(how.render());
+  return out;
+}
+
+std::vector<std::string> impulse_warnings(const Result& result, std::string_view prefix) {
+  std::vector<std::string> lines;
+  const double scale = impulse_scale(result);
+  for (const ImpulseReport& i : result.impulses) {
+    if (i.magnitude < -rounding_noise * scale) {
+      std::string line(prefix);
+      line.append("contact ").append(std::to_string(i.contact)).append(" (").append(i.bumper);
+      line.append("\u2013").append(i.wedge).append("): negative impulse ");
+      line.append(number_text(i.magnitude)).append(" (the contact pulls)");
+      lines.push_back(std::move(line));
+    }
+  }
+  for (const std::string& warning : result.outcome.warnings) {
+    lines.push_back(std::string(prefix).append(warning));
+  }
+  return lines;
+}
+
+std::vector<std::string> system_warnings(const Result& result, std::string_view source) {
+  std::vector<std::string> warnings;
+  const Solution& s = result.system;
+  // Infinity means A = 0 (no body can move along any normal): nothing is solved, nothing to warn.
+  if (s.condition_estimate > ill_conditioned &&
+      s.condition_estimate < std::numeric_limits<double>::infinity()) {
+    const double relative = s.condition_estimate * std::numeric_limits<double>::epsilon();
+    std::string line(source);
+    line.append(": the system A·Fdt = B is ill-conditioned: condition estimate ")
+        .append(rounded_text(s.condition_estimate))
+        .append(s.rank_estimated ? " (estimated)" : "")
+        .append(", above ")
+        .append(rounded_text(ill_conditioned))
+        .append("; rounding may change the impulses by about ")
+        .append(relative < 1.0 ? rounded_text(relative) + " of their size"
+                               : "as much as their size")
+        .append(" (the velocities after are less affected)");
+    if (s.rank_estimated) {
+      // The sparse method's estimate comes from shifted pivots and can be far below the truth;
+      // on hostile scenes its impulses were measured off by up to their whole size at estimates
+      // of 1e9 (docs/pages/accuracy.md).
+      line.append(
+          "; the sparse method's estimate can be far below the true condition, and its "
+          "impulses were seen off by up to their whole size on such scenes");
+    }
+    warnings.push_back(std::move(line));
+  }
+  // A system assembled from bodies always has a solution (B lies in the range of A); a residual
+  // beyond the consistency tolerance means rounding lost part of it.
+  if (!s.consistent) {
+    std::string line(source);
+    line.append(": the impulses found do not satisfy A·Fdt = B (residual ")
+        .append(rounded_text(s.residual))
+        .append(" against |B| = ")
+        .append(rounded_text(impulse::detail::quiet_norm(s.B)))
+        .append(
+            "): the scene's numbers are beyond what double precision resolves (masses or "
+            "moments of inertia too far apart); do not trust this report");
+    warnings.push_back(std::move(line));
+  }
+  return warnings;
+}
+
+std::string unfinished_message(const Result& result, std::string_view source) {
+  if (result.outcome.finished) {
+    return "";
+  }
+  return std::string(source).append(": ").append(result.outcome.unfinished);
+}
+
+std::string overflow_message(const Result& result, std::string_view source, bool name_method) {
+  std::string message(source);
+  message.append(": the numbers overflow");
+  if (name_method) {
+    message.append(" (method ").append(name_of(result.method)).append(")");
+  }
+  return message.append(
+      ": A·Fdt = B or the state after the collision is not finite (masses, inertias, velocities "
+      "or elasticities too extreme for double precision)");
+}
+
+}  // namespace impulse::scene

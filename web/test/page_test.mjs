@@ -1,0 +1,519 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The interactive page in headless Chromium (label web), against the command line built beside it:
+//
+//   presets     every preset, chosen from the menu: its result-json is what `impulselab solve
+//               --format json` prints for its scene file, the address holds that scene, and a
+//               screenshot of it at 1280×800 and at 360 px wide goes into the screenshots folder
+//   scenes      every example scene and every scene of the tests, given in the address: the same
+//               result as the command line (or its refusal), and the same warnings
+//   malformed   every malformed scene of the command line's tests, given in the address: the
+//               command line's message (without its file name) in scene-error, result-json empty
+//   interaction a control changed from the keyboard, a velocity handle dragged with the mouse, the
+//               method changed: result and address change, and the result is the command line's
+//               for the scene the address then holds; that address opened afresh shows the same;
+//               a scene file opened, the scene downloaded; every control labelled and reached by
+//               Tab; nothing wider than the window at 360 px; the animation plays; the system
+//               typeset
+//   links       every "try it" link of the site opens its scene without an error
+//
+// On every page: no console error, no exception, no request outside the site (file:, data:,
+// blob: only).
+//
+// usage: node page_test.mjs GROUP --site DIR --cli PROGRAM --source DIR --screenshots DIR
+import {spawnSync} from 'node:child_process';
+import {mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync, existsSync} from 'node:fs';
+import {writeFile} from 'node:fs/promises';
+import {tmpdir} from 'node:os';
+import {basename, join, resolve} from 'node:path';
+import {Browser} from './chromium.mjs';
+
+const args = process.argv.slice(2);
+const group = args[0];
+const option = (name) => {
+  const at = args.indexOf(`--${name}`);
+  if (at < 0 || at + 1 >= args.length) {
+    throw new Error(`missing --${name}`);
+  }
+  return resolve(args[at + 1]);
+};
+const site = option('site');
+const cli = option('cli');
+const source = option('source');
+const screenshots = option('screenshots');
+const page = join(site, 'collide.html');
+const pageUrl = `file://${page}`;
+const scratch = mkdtempSync(join(tmpdir(), 'impulselab-web-test-'));
+
+// --- The command line ------------------------------------------------------------------------
+
+// What `impulselab solve FILE --format json` gives: its output, its message without
+// "impulselab: error: FILE: ", its warnings without "impulselab: warning: " and "FILE: ".
+function commandLine(file) {
+  const run = spawnSync(cli, ['solve', file, '--format', 'json'], {encoding: 'utf8'});
+  const lines = run.stderr.split('\n').filter((l) => l !== '');
+  const strip = (line, prefix) => {
+    let text = line.slice(prefix.length);
+    if (text.startsWith(`${file}: `)) {
+      text = text.slice(file.length + 2);
+    }
+    return text;
+  };
+  return {
+    scene: readFileSync(file, 'latin1'),
+    status: run.status,
+    stdout: run.stdout,
+    error: lines.filter((l) => l.startsWith('impulselab: error: ')).map((l) => strip(l, 'impulselab: error: ')).join('\n'),
+    warnings: lines.filter((l) => l.startsWith('impulselab: warning: ')).map((l) => strip(l, 'impulselab: warning: ')),
+  };
+}
+
+function commandLineOnText(text) {
+  const file = join(scratch, 'scene.json');
+  writeFileSync(file, text);
+  return commandLine(file);
+}
+
+// --- Comparing results -------------------------------------------------------------------------
+
+// The page's report against the command line's: the same keys in the same order, the same
+// strings and booleans, numbers equal within a relative 1e-12 of the size of their quantity in
+// the report. The WebAssembly build and the native one round differently (Eigen vectorises on
+// x86-64, not in WebAssembly), so a velocity that is 0 in exact arithmetic comes out as 6.7e-16 on
+// one and 5.6e-16 on the other next to velocities of 1: compared with its own size it would
+// differ wholly, compared with the velocities of the report it is equal to 1e-12. The size of a
+// quantity is the largest number of the report in its unit: velocities (of the bodies, the
+// approach speeds, B, the residual of A·Fdt = B, the complementarity slack), momenta (of the
+// bodies, the totals, the impulses), energies; an angular velocity is measured against the
+// velocities divided by the longest arm of the scene (the distance from a rigid body's origin to
+// its contact point), an angular momentum against the momenta times that arm; anything else
+// against the largest number of its own key (every entry of A, the condition estimate).
+function kindOf(path) {
+  return path.replace(/\[[0-9]+\]/g, '[]');
+}
+
+const units = {
+  'bodies[].velocity[]': 'velocity', 'bodies[].velocity': 'velocity',
+  'contacts[].approach_before': 'velocity', 'contacts[].approach_after': 'velocity',
+  'system.B[]': 'velocity', 'system.residual': 'velocity',
+  'complementarity.slack[]': 'velocity', 'complementarity.complementarity_residual': 'velocity',
+  'bodies[].momentum[]': 'momentum', 'bodies[].momentum': 'momentum',
+  'momentum.before[]': 'momentum', 'momentum.before': 'momentum',
+  'momentum.after[]': 'momentum', 'momentum.after': 'momentum',
+  'impulses[].magnitude': 'momentum', 'impulses[].on_bumper[]': 'momentum', 'impulses[].on_bumper': 'momentum',
+  'energy.before': 'energy', 'energy.after': 'energy', 'energy.change': 'energy',
+  'bodies[].angular_velocity': 'angular velocity', 'bodies[].angular_momentum': 'angular momentum',
+};
+
+function largestByUnit(value, path, sizes) {
+  if (typeof value === 'number') {
+    const unit = units[kindOf(path)] || kindOf(path);
+    sizes.set(unit, Math.max(sizes.get(unit) || 0, Math.abs(value)));
+  } else if (Array.isArray(value)) {
+    value.forEach((x, i) => largestByUnit(x, `${path}[${i}]`, sizes));
+  } else if (value !== null && typeof value === 'object') {
+    for (const key of Object.keys(value)) {
+      largestByUnit(value[key], path ? `${path}.${key}` : key, sizes);
+    }
+  }
+  return sizes;
+}
+
+// The longest arm of the scene: from a rigid body's origin to one of its contact points.
+function longestArm(sceneText) {
+  let arm = 0;
+  try {
+    const scene = JSON.parse(sceneText);
+    const rigid = new Map(scene.bodies.filter((b) => b.kind === 'rigid').map((b) => [b.name, b.position]));
+    for (const c of scene.contacts) {
+      for (const name of [c.bumper, c.wedge]) {
+        if (rigid.has(name) && c.point) {
+          arm = Math.max(arm, Math.hypot(c.point[0] - rigid.get(name)[0], c.point[1] - rigid.get(name)[1]));
+        }
+      }
+    }
+  } catch (e) {
+    // not a scene: no arm
+  }
+  return arm;
+}
+
+function sizesOf(page, line, sceneText) {
+  const sizes = largestByUnit(line, '', largestByUnit(page, '', new Map()));
+  const arm = longestArm(sceneText);
+  if (arm > 0) {
+    sizes.set('angular velocity', Math.max(sizes.get('angular velocity') || 0, (sizes.get('velocity') || 0) / arm));
+    sizes.set('angular momentum', Math.max(sizes.get('angular momentum') || 0, (sizes.get('momentum') || 0) * arm));
+  }
+  return sizes;
+}
+
+function differences(page, line, sizes, path = '') {
+  const found = [];
+  const kind = (v) => (v === null ? 'null' : Array.isArray(v) ? 'array' : typeof v);
+  if (kind(page) !== kind(line)) {
+    return [`${path}: ${JSON.stringify(page)} against ${JSON.stringify(line)}`];
+  }
+  if (kind(page) === 'number') {
+    const size = sizes.get(units[kindOf(path)] || kindOf(path));
+    if (!(Math.abs(page - line) <= 1e-12 * size)) {
+      found.push(`${path}: ${page} against ${line} (the size of its quantity: ${size})`);
+    }
+  } else if (kind(page) === 'array') {
+    if (page.length !== line.length) {
+      return [`${path}: ${page.length} elements against ${line.length}`];
+    }
+    page.forEach((x, i) => found.push(...differences(x, line[i], sizes, `${path}[${i}]`)));
+  } else if (kind(page) === 'object') {
+    const keys = Object.keys(page).join(',');
+    const lineKeys = Object.keys(line).join(',');
+    if (keys !== lineKeys) {
+      return [`${path}: keys ${keys} against ${lineKeys}`];
+    }
+    for (const key of Object.keys(page)) {
+      found.push(...differences(page[key], line[key], sizes, path ? `${path}.${key}` : key));
+    }
+  } else if (page !== line) {
+    found.push(`${path}: ${JSON.stringify(page)} against ${JSON.stringify(line)}`);
+  }
+  return found;
+}
+
+// --- The page --------------------------------------------------------------------------------
+
+const unreserved = /[A-Za-z0-9\-_.!~*'()]/;
+function encodeBytes(bytes) {
+  let text = '';
+  for (const byte of bytes) {
+    const c = String.fromCharCode(byte);
+    text += byte < 0x80 && unreserved.test(c) ? c : '%' + byte.toString(16).toUpperCase().padStart(2, '0');
+  }
+  return text;
+}
+
+async function shown(p) {
+  return Number(await p.evaluate('document.body.dataset.shown || 0'));
+}
+
+// Opens the page afresh on @p hash.
+async function open(browser, hash, viewport) {
+  const p = await browser.newPage(viewport);
+  await p.goto(pageUrl + hash);
+  await p.waitFor('document.body.dataset.ready === "true"');
+  return p;
+}
+
+// Changes the address's fragment of an open page (a link followed within the page) and waits
+// for the page to show it.
+async function navigate(p, hash) {
+  const before = await shown(p);
+  await p.send('Page.navigate', {url: pageUrl + hash});
+  await p.waitFor(`Number(document.body.dataset.shown) > ${before}`);
+}
+
+async function pageState(p) {
+  return p.evaluate(`({
+    result: document.getElementById('result-json').textContent,
+    error: document.getElementById('scene-error').textContent,
+    warnings: [...document.querySelectorAll('#warnings li')].map((li) => li.textContent),
+    hash: location.hash,
+  })`);
+}
+
+function sceneOfHash(hash) {
+  if (!hash.startsWith('#scene=')) {
+    throw new Error(`the address holds no scene: ${hash.slice(0, 80)}`);
+  }
+  return decodeURIComponent(hash.slice('#scene='.length));
+}
+
+// --- Checks ----------------------------------------------------------------------------------
+
+let failures = 0;
+let checks = 0;
+function check(condition, what, detail = '') {
+  checks += 1;
+  if (!condition) {
+    failures += 1;
+    console.log(`FAIL ${what}${detail ? `\n     ${String(detail).split('\n').join('\n     ')}` : ''}`);
+  }
+}
+
+function checkClean(p, where) {
+  check(p.problems().length === 0, `${where}: no console error, no exception`, p.problems().join('\n'));
+  const outside = p.requests.filter((u) => !/^(file|data|blob):/.test(u));
+  check(outside.length === 0, `${where}: no request outside the site`, outside.join('\n'));
+}
+
+// The page shows what the command line gives for the same scene.
+function checkAgainstCommandLine(state, line, where) {
+  if (line.status === 0) {
+    check(state.error === '', `${where}: no error`, state.error);
+    let page = null;
+    try {
+      page = JSON.parse(state.result);
+    } catch (e) {
+      check(false, `${where}: result-json is JSON`, state.result.slice(0, 200));
+      return;
+    }
+    const expected = JSON.parse(line.stdout);
+    const found = differences(page, expected, sizesOf(page, expected, line.scene));
+    check(found.length === 0, `${where}: result-json is the command line's`, found.slice(0, 10).join('\n'));
+    check(JSON.stringify(state.warnings) === JSON.stringify(line.warnings), `${where}: the command line's warnings`,
+          `page: ${JSON.stringify(state.warnings)}\nline: ${JSON.stringify(line.warnings)}`);
+  } else {
+    check(line.error !== '', `${where}: the command line explains its refusal`, line.error);
+    check(state.error === line.error, `${where}: scene-error is the command line's message`,
+          `page: ${state.error}\nline: ${line.error}`);
+    check(state.result === '', `${where}: result-json is empty`, state.result.slice(0, 100));
+  }
+}
+
+function jsonFiles(folder) {
+  const dir = join(source, folder);
+  return readdirSync(dir).filter((f) => f.endsWith('.json')).sort().map((f) => join(dir, f));
+}
+
+function presetsOfSite() {
+  const text = readFileSync(join(site, 'presets.js'), 'utf8');
+  const window = {};
+  new Function('window', text)(window);
+  return window.impulselabPresets;
+}
+
+// --- The groups ------------------------------------------------------------------------------
+
+const groups = {
+  async presets(browser) {
+    mkdirSync(screenshots, {recursive: true});
+    const presets = presetsOfSite();
+    check(presets.length >= 18, 'the page has the presets of the tutorials and labs', presets.length);
+    // One page, in front (a page in the background gets no frames): every preset at 1280×800, then
+    // every preset at the width of a phone.
+    const p = await open(browser, '', {width: 1280, height: 800});
+    const sizes = [[{width: 1280, height: 800}, ''],
+                   [{width: 360, height: 740, deviceScaleFactor: 2, mobile: true}, '-360']];
+    for (const [viewport, suffix] of sizes) {
+      await p.setViewport(viewport);
+      for (const preset of presets) {
+        const before = await shown(p);
+        await p.evaluate(`(() => { const s = document.getElementById('preset');
+                                    s.value = ${JSON.stringify(preset.id)};
+                                    s.dispatchEvent(new Event('change')); })()`);
+        await p.waitFor(`Number(document.body.dataset.shown) > ${before}`);
+        const state = await pageState(p);
+        if (suffix === '') {
+          checkAgainstCommandLine(state, commandLine(join(source, preset.file)), `preset ${preset.id}`);
+          check(JSON.stringify(JSON.parse(sceneOfHash(state.hash))) === JSON.stringify(preset.scene),
+                `preset ${preset.id}: the address holds its scene`);
+        }
+        // MathJax typesets in its own time: the shot waits for it (up to 8 contacts; a table beyond).
+        await p.waitFor(`document.querySelector('#system-equation svg') || document.querySelector('#system-equation table')`);
+        const width = await p.evaluate('document.documentElement.scrollWidth');
+        check(width <= viewport.width, `preset ${preset.id}${suffix}: nothing wider than the window`, width);
+        await p.screenshot(join(screenshots, `${preset.id}${suffix}.png`), writeFile);
+      }
+      await p.fullScreenshot(join(screenshots, `page-full${suffix || '-1280'}.png`), writeFile, viewport);
+    }
+    checkClean(p, 'presets');
+  },
+
+  async scenes(browser) {
+    const files = [
+      ...jsonFiles('tutorials/scenes'),
+      ...readdirSync(join(source, 'tutorials')).filter((d) => /^[0-9][0-9]-/.test(d))
+          .flatMap((d) => jsonFiles(join('tutorials', d))),
+      ...jsonFiles('tests/cli/scenes'),
+      ...jsonFiles('fuzz/regressions'),
+    ];
+    check(files.length >= 20, 'the example and test scenes are found', files.length);
+    const p = await open(browser, '#scene=' + encodeBytes(readFileSync(files[0])));
+    for (const [k, file] of files.entries()) {
+      if (k > 0) {
+        await navigate(p, '#scene=' + encodeBytes(readFileSync(file)));
+      }
+      checkAgainstCommandLine(await pageState(p), commandLine(file), file.slice(source.length + 1));
+    }
+    checkClean(p, 'scenes');
+  },
+
+  async malformed(browser) {
+    const files = jsonFiles('tests/cli/malformed');
+    check(files.length >= 40, 'the malformed scenes are found', files.length);
+    const p = await open(browser, '#scene=' + encodeBytes(readFileSync(files[0])));
+    for (const [k, file] of files.entries()) {
+      if (k > 0) {
+        await navigate(p, '#scene=' + encodeBytes(readFileSync(file)));
+      }
+      const line = commandLine(file);
+      check(line.status === 2, `${basename(file)}: the command line refuses it`, line.status);
+      checkAgainstCommandLine(await pageState(p), line, `malformed ${basename(file)}`);
+    }
+    checkClean(p, 'malformed');
+  },
+
+  async interaction(browser) {
+    const cradle = JSON.parse(readFileSync(join(source, 'tutorials/scenes/newton-cradle-3.json'), 'utf8'));
+    const p = await open(browser, '#scene=' + encodeURIComponent(JSON.stringify(cradle)));
+    const first = await pageState(p);
+    checkAgainstCommandLine(first, commandLineOnText(JSON.stringify(cradle)), 'cradle');
+    check(await p.evaluate('document.getElementById("preset").value') === 'newton-cradle-3',
+          'a scene given in the address that is a preset shows as that preset');
+
+    // The mass of ball 1 one step up from the keyboard: 10^0.01 = 1.023, written as 1.02.
+    await p.evaluate('document.getElementById("body-0-mass-slider").focus()');
+    let before = await shown(p);
+    await p.press('ArrowRight');
+    await p.waitFor(`Number(document.body.dataset.shown) > ${before}`);
+    await p.waitFor(`location.hash !== ${JSON.stringify(first.hash)}`);
+    let state = await pageState(p);
+    let scene = JSON.parse(sceneOfHash(state.hash));
+    check(scene.bodies[0].mass === 1.02, 'a key on the mass slider changes the mass in the address', scene.bodies[0].mass);
+    check(state.result !== first.result, 'and the result changes');
+    checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'cradle, heavier ball 1');
+    check(await p.evaluate('document.getElementById("body-0-mass").value') === '1.02', 'the number field follows the slider');
+
+    // The shared link, opened afresh, shows the same.
+    const shared = await open(browser, state.hash);
+    const again = await pageState(shared);
+    check(again.result === state.result && again.hash === state.hash, 'the shared link shows the same result');
+    check(await shared.evaluate('document.getElementById("body-0-mass").value') === '1.02' &&
+          await shared.evaluate('document.getElementById("preset").value') === '',
+          'the shared link shows the same controls');
+    checkClean(shared, 'shared link');
+    await shared.close();
+    await p.send('Page.bringToFront');
+
+    // The velocity of ball 1 dragged on the canvas: its handle, 40 px to the left.
+    await p.evaluate('document.getElementById("view").scrollIntoView()');
+    const handles = await p.evaluate('impulselabPage.handles()');
+    const handle = handles.find((h) => h.kind === 'velocity' && h.body === 0);
+    check(handle !== undefined, 'ball 1 has a velocity handle', JSON.stringify(handles));
+    const previous = state;
+    await p.drag([handle.x, handle.y], [handle.x - 40, handle.y + 30]);
+    await p.waitFor(`location.hash !== ${JSON.stringify(previous.hash)}`);
+    state = await pageState(p);
+    scene = JSON.parse(sceneOfHash(state.hash));
+    check(typeof scene.bodies[0].velocity === 'number' && scene.bodies[0].velocity < 1,
+          'dragging the handle to the left slows ball 1 (a 1D scene keeps a number)', scene.bodies[0].velocity);
+    checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'cradle, ball 1 dragged');
+
+    // The method, from the keyboard: End on the menu chooses its last entry, serial collisions.
+    const dragged = state;
+    await p.evaluate('document.getElementById("method").focus()');
+    before = await shown(p);
+    await p.press('End');
+    await p.waitFor(`Number(document.body.dataset.shown) > ${before}`);
+    check(await p.evaluate(`location.hash !== ${JSON.stringify(dragged.hash)}`), 'a choice from a menu is in the address at once');
+    state = await pageState(p);
+    scene = JSON.parse(sceneOfHash(state.hash));
+    check(scene.solver && scene.solver.method === 'serial', 'the method is in the address', JSON.stringify(scene.solver));
+    check(JSON.parse(state.result).method === 'serial', 'and the result is the serial method\'s');
+    checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'cradle, serial');
+
+    // A scene file opened.
+    const oblique = join(source, 'tutorials/scenes/oblique-2d.json');
+    const {root} = await p.send('DOM.getDocument');
+    const {nodeId} = await p.send('DOM.querySelector', {nodeId: root.nodeId, selector: '#open-file'});
+    before = await shown(p);
+    await p.send('DOM.setFileInputFiles', {nodeId, files: [oblique]});
+    await p.waitFor(`Number(document.body.dataset.shown) > ${before}`);
+    state = await pageState(p);
+    checkAgainstCommandLine(state, commandLine(oblique), 'opened oblique-2d.json');
+    check(sceneOfHash(state.hash) === readFileSync(oblique, 'utf8'), 'the opened file is in the address as it is');
+
+    // The scene downloaded: the file is the scene of the address.
+    const downloads = join(scratch, 'downloads');
+    mkdirSync(downloads);
+    await p.send('Browser.setDownloadBehavior', {behavior: 'allow', downloadPath: downloads});
+    await p.evaluate('document.getElementById("download").click()');
+    for (let k = 0; k < 100 && !existsSync(join(downloads, 'oblique-2d.json')); ++k) {
+      await new Promise((r) => setTimeout(r, 50));
+    }
+    const downloaded = existsSync(join(downloads, 'oblique-2d.json')) ? readFileSync(join(downloads, 'oblique-2d.json'), 'utf8') : '';
+    check(downloaded !== '' && JSON.stringify(JSON.parse(downloaded)) === JSON.stringify(JSON.parse(sceneOfHash(state.hash))),
+          'the downloaded scene is the scene of the address', downloaded.slice(0, 100));
+
+    // Every control labelled (its name in the accessibility tree) and reached by Tab.
+    await navigate(p, '#scene=' + encodeURIComponent(readFileSync(join(source, 'tutorials/scenes/spinning-rigid-pair.json'), 'utf8')));
+    const {nodes} = await p.send('Accessibility.getFullAXTree');
+    const roles = new Set(['button', 'checkbox', 'combobox', 'slider', 'spinbutton', 'textbox', 'link',
+                           'radio', 'ListBox', 'listbox', 'PopUpButton', 'DisclosureTriangle']);
+    const controls = nodes.filter((n) => !n.ignored && n.role && roles.has(n.role.value));
+    const unnamed = controls.filter((n) => !n.name || String(n.name.value).trim() === '');
+    check(controls.length >= 25, 'the accessibility tree lists the controls', controls.length);
+    check(unnamed.length === 0, 'every control has a name', unnamed.map((n) => n.role.value).join(', '));
+    const focusable = await p.evaluate(`[...document.querySelectorAll('a[href], button, input, select, textarea, summary')]
+        .filter((e) => !e.disabled && e.checkVisibility({contentVisibilityAuto: true}) || e.id === 'open-file').map((e) => e.id || e.textContent.trim())`);
+    await p.evaluate('document.activeElement && document.activeElement.blur(); window.scrollTo(0, 0)');
+    const reached = new Set();
+    for (let k = 0; k < focusable.length + 10; ++k) {
+      await p.press('Tab');
+      reached.add(await p.evaluate('document.activeElement.id || document.activeElement.textContent.trim()'));
+    }
+    const missed = focusable.filter((id) => !reached.has(id));
+    check(missed.length === 0, 'Tab reaches every control', missed.join(', '));
+
+    // The animation plays, and the system is typeset.
+    await p.evaluate('document.getElementById("play").click()');
+    await new Promise((r) => setTimeout(r, 400));
+    const time = await p.evaluate('document.getElementById("time").value');
+    await p.evaluate('document.getElementById("play").click()');
+    check(time !== '0', 'the animation moves the time', time);
+    await p.waitFor('document.querySelector("#system-equation svg")');
+    check(await p.evaluate('document.querySelector("#system-equation .merror, #system-equation [data-mjx-error]") === null'),
+          'the system is typeset without a MathJax error');
+    checkClean(p, 'interaction');
+  },
+
+  async links(browser) {
+    // The "try it" links of the site's pages.
+    const links = new Map();
+    for (const file of readdirSync(site).filter((f) => f.endsWith('.html'))) {
+      const html = readFileSync(join(site, file), 'utf8');
+      for (const m of html.matchAll(/href="collide\.html(#scene=[^"]*)"/g)) {
+        links.set(m[1], file);
+      }
+    }
+    check(links.size >= 8, 'the section and lab pages link to the page with their scenes', links.size);
+    const entries = [...links.entries()];
+    const p = await open(browser, entries[0][0]);
+    for (const [k, [hash, file]] of entries.entries()) {
+      if (k > 0) {
+        await navigate(p, hash);
+      }
+      const state = await pageState(p);
+      check(state.error === '' && state.result !== '', `${file}: its "try it" link opens its scene`, state.error);
+      checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(hash)), `try it from ${file}`);
+    }
+    // The page's own links to the paper's equations on the section pages land on their anchors.
+    const equations = await p.evaluate(`[...document.querySelectorAll('#system-source a')].map((a) => a.getAttribute('href'))`);
+    check(equations.length >= 7, 'the page links to the equations (1.3) to (5.5)', equations.join(' '));
+    for (const href of equations) {
+      const [file, anchor] = href.split('#');
+      const html = existsSync(join(site, file)) ? readFileSync(join(site, file), 'utf8') : '';
+      check(html.includes(`id="${anchor}"`), `the link ${href} lands on its equation`);
+    }
+    checkClean(p, 'links');
+  },
+};
+
+if (!groups[group]) {
+  console.log(`usage: node page_test.mjs (${Object.keys(groups).join('|')}) --site DIR --cli PROGRAM --source DIR --screenshots DIR`);
+  process.exit(2);
+}
+if (!existsSync(page)) {
+  console.log(`${page} not found: the page is built with the docs (cmake --build --preset docs)`);
+  process.exit(1);
+}
+const browser = await Browser.launch();
+try {
+  await groups[group](browser);
+} catch (e) {
+  failures += 1;
+  console.log(`FAIL ${group}: ${e.stack}`);
+} finally {
+  await browser.close();
+  rmSync(scratch, {recursive: true, force: true});
+}
+console.log(`${group}: ${checks} checks, ${failures} failed`);
+process.exit(failures === 0 ? 0 : 1);
