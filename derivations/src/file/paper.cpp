@@ -783,11 +783,19 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
           text += v.vector ? "[" + shown_number(v.x) + ", " + shown_number(v.y) + "]"
                            : shown_number(v.x);
         }
+        // What the equations before gave, by name (their own order follows GiNaC's hashes,
+        // which change from run to run).
+        std::vector<std::string> solved;
         for (const std::size_t s : p.solved) {
-          text += "; " + symbol_text(symbols_, symbols[s]) + " = " + shown_number(values[s]);
+          solved.push_back(symbol_text(symbols_, symbols[s]) + " = " + shown_number(values[s]));
         }
         for (const auto& [u, solution] : p.shown) {
-          text += "; " + symbol_text(symbols_, u) + " = " + shown_number(solution(values, nullptr));
+          solved.push_back(symbol_text(symbols_, u) + " = " +
+                           shown_number(solution(values, nullptr)));
+        }
+        std::sort(solved.begin(), solved.end());
+        for (const std::string& s : solved) {
+          text += "; " + s;
         }
         return text;
       };
@@ -811,7 +819,7 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
     f.fails = f.points > 0 && f.worst >= model->fails_above;
     f.detail = std::string(use.method == "numeric" ? "model" : use.method) + ": " + use.name +
                ", " + std::to_string(f.points) + " points, worst relative residual " +
-               num::brief(f.worst, 3) +
+               num::brief(f.worst, 2) +
                (f.holds   ? " (holds)"
                 : f.fails ? " (fails)"
                           : " (undecided)");
@@ -1035,8 +1043,11 @@ Result FileRun::check(const Group& g) {
     const Variant printed = run_variant(g, false);
     Outcome& o = r.outcome;
     o.methods.assign(printed.methods.begin(), printed.methods.end());
-    o.max_relative_error =
-        printed.samples > 0 ? std::optional<double>(printed.worst) : std::nullopt;
+    // Two significant digits, as the note and the text report show it: the digits after them
+    // are rounding, and they change from run to run with the order GiNaC gives a sum's terms.
+    o.max_relative_error = printed.samples > 0
+                               ? std::optional<double>(std::stod(num::brief(printed.worst, 2)))
+                               : std::nullopt;
     o.samples = printed.samples > 0 ? std::optional<std::size_t>(printed.samples) : std::nullopt;
     o.note = "As printed: " + printed.note + ".";
     const bool printed_holds = printed.evidence && !printed.fails && !printed.unknown;

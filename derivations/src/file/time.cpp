@@ -7,6 +7,11 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "symbolic.hpp"
 
 namespace impulse::derivations::file {
 
@@ -113,7 +118,12 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
     op.index = static_cast<std::size_t>(found - slots.begin());
   } else if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
     op.kind = GiNaC::is_a<GiNaC::add>(e) ? Op::add : Op::mul;
+    std::vector<std::pair<std::string, std::size_t>> order;
     for (std::size_t i = 0; i < e.nops(); ++i) {
+      order.emplace_back(sym::canonical(e.op(i)), i);  // the same order in every run
+    }
+    std::sort(order.begin(), order.end());
+    for (const auto& [key, i] : order) {
       op.kids.push_back(compile(e.op(i), slots));
     }
   } else if (GiNaC::is_a<GiNaC::power>(e)) {
