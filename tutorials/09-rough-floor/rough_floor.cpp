@@ -80,7 +80,7 @@ Setup read_arguments(int argc, char** argv) {
       throw BadArgument(place + ": expected NAME=VALUE");
     }
     const std::string_view name = argument.substr(0, equals);
-    const std::string_view text = argument.substr(equals + 1);
+    const std::string_view number = argument.substr(equals + 1);
     const auto found = setup.values.find(name);
     if (found == setup.values.end()) {
       throw BadArgument(place +
@@ -88,8 +88,8 @@ Setup read_arguments(int argc, char** argv) {
                         "elasticity, mu, mu_low, vx_fast, mu_max before '='");
     }
     double value = 0.0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
+    const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+    if (error != std::errc() || end != number.data() + number.size() || !std::isfinite(value)) {
       throw BadArgument(place + ": expected a finite number after '='");
     }
     found->second = value;
@@ -146,14 +146,14 @@ double energy(const friction::Collision& c) {
 
 // "slip until 0.2, stick until 0.925": the phases and the normal impulse at which each ended.
 std::string phases(const friction::ContactImpulse& impulse) {
-  std::string text;
+  std::string list;
   for (const friction::Phase& p : impulse.phases()) {
     char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%s%s until %.10g", text.empty() ? "" : ", ",
+    std::snprintf(buffer, sizeof buffer, "%s%s until %.10g", list.empty() ? "" : ", ",
                   std::string(friction::to_string(p.regime)).c_str(), p.end);
-    text += buffer;
+    list += buffer;
   }
-  return text;
+  return list;
 }
 
 // A name for a case of Routh's diagram, from the phases the library found (no commas: it is a
