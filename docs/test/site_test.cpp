@@ -31,9 +31,9 @@ const fs::path site_dir{IMPULSELAB_SITE_DIR};
 
 // The pages the site promises: the start page, one per paper section, and the rest of the theory.
 const std::vector<std::string> promised_pages = {
-    "index.html",    "section1.html", "section2.html", "section3.html",
-    "section4.html", "section5.html", "notation.html", "check_report.html",
-    "errata.html",   "labs.html",     "methods.html",  "accuracy.html"};
+    "index.html",    "section1.html", "section2.html",     "section3.html", "section4.html",
+    "section5.html", "notation.html", "check_report.html", "errata.html",   "labs.html",
+    "methods.html",  "accuracy.html", "friction.html"};
 const std::vector<std::string> section_pages = {"section1.html", "section2.html", "section3.html",
                                                 "section4.html", "section5.html"};
 
@@ -493,7 +493,7 @@ TEST_CASE("the site has its start page, a page per paper section and the theory 
   // Every name of the library that the theory pages mention leads to its documentation (Doxygen
   // leaves a name it cannot resolve as plain text, silently).
   std::vector<std::string> theory = section_pages;
-  theory.insert(theory.end(), {"index.html", "notation.html", "errata.html"});
+  theory.insert(theory.end(), {"index.html", "notation.html", "errata.html", "friction.html"});
   for (const std::string& name : theory) {
     CAPTURE(name);
     const std::string unlinked = scan(read(site_dir / name)).unlinked_text;

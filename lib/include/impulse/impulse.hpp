@@ -8,6 +8,8 @@
 #include "impulse/core/plane.hpp"
 #include "impulse/core/solve.hpp"
 #include "impulse/core/system.hpp"
+#include "impulse/friction/bodies.hpp"
+#include "impulse/friction/contact.hpp"
 #include "impulse/material_2d/material_2d.hpp"
 #include "impulse/methods/complementarity.hpp"
 #include "impulse/methods/methods.hpp"
@@ -26,5 +28,6 @@
 /// impulse::material_2d (section 2), impulse::rigid_2d (section 3), impulse::multipoint
 /// (sections 4 and 5); impulse::scene turns a scene file's bodies and contacts into a solved
 /// collision. impulse::methods goes beyond the paper: impulses that only push, and contacts
-/// resolved one at a time.
+/// resolved one at a time; so does impulse::friction: one contact with Coulomb friction,
+/// followed through the normal impulse, with three laws of restitution.
 namespace impulse {}
