@@ -283,13 +283,23 @@ std::vector<multipoint::Contact> contacts_of(const Scene& scene, std::vector<std
     const UnitNormal n(c.normal);
     if (n.rescaled()) {
       // As given (every digit), then the length and the normal used as the report prints numbers.
+      // (The text is appended piece by piece: GCC 12 warns falsely, -Wrestrict, on
+      // "[" + std::string&& once this function is inlined into a unity build; GCC bug 105329.)
       const Vector2d& used = n.vector();
-      notes.push_back(member(at("contacts", v), "normal") + " " + show(c.normal, scene.dimension) +
-                      " is not of unit length (length " + number_text(n.given_length()) +
-                      "): used as " +
-                      (scene.dimension == 1
-                           ? number_text(used.x())
-                           : "[" + number_text(used.x()) + ", " + number_text(used.y()) + "]"));
+      std::string note = member(at("contacts", v), "normal");
+      note += " " + show(c.normal, scene.dimension) + " is not of unit length (length ";
+      note += number_text(n.given_length());
+      note += "): used as ";
+      if (scene.dimension == 1) {
+        note += number_text(used.x());
+      } else {
+        note += '[';
+        note += number_text(used.x());
+        note += ", ";
+        note += number_text(used.y());
+        note += ']';
+      }
+      notes.push_back(std::move(note));
     }
     result.push_back({c.bumper, c.wedge, n.vector(), c.point.value_or(Vector2d::Zero())});
   }
