@@ -345,7 +345,9 @@ std::vector<multipoint::Contact> contacts_of(const Scene& scene, std::vector<std
       // "[" + std::string&& once this function is inlined into a unity build; GCC bug 105329.)
       const Vector2d& used = n.vector();
       std::string note = member(at("contacts", v), "normal");
-      note += " " + show(c.normal, scene.dimension) + " is not of unit length (length ";
+      note += ' ';
+      note += show(c.normal, scene.dimension);
+      note += " is not of unit length (length ";
       note += number_text(n.given_length());
       note += "): used as ";
       if (scene.dimension == 1) {
