@@ -18,7 +18,8 @@ struct SolveOptions {
   std::string format = "text";
   std::string output;
   std::string method;    // overrides the scene's solver.method when given
-  bool compare = false;  // every method, side by side
+  bool compare = false;  // --compare given: every method, or every restitution law, side by side
+  std::string compare_what;  // "" or "methods": the methods; "restitution": the three laws
 };
 
 // The library makes the report, the refusals and the warnings (impulse::scene::solve_output,
@@ -30,11 +31,13 @@ void solve(const SolveOptions& options) {
   const sc::Format format = options.format == "json" ? sc::Format::json : sc::Format::text;
   const bool colour = colour_wanted(options.output);
   const sc::SolveOutput output =
-      options.compare
-          ? sc::compare_output(world, source, format, colour)
-          : sc::solve_output(world, source,
+      !options.compare
+          ? sc::solve_output(world, source,
                              impulse::value_named<impulse::methods::Method>(options.method), format,
-                             colour);
+                             colour)
+      : options.compare_what == "restitution"
+          ? sc::compare_laws_output(world, source, format, colour)
+          : sc::compare_output(world, source, format, colour);
   if (!output.report.empty()) {
     write_output(options.output, [&](std::FILE* out) { std::fputs(output.report.c_str(), out); });
   }
@@ -75,11 +78,23 @@ void add_solve_command(CLI::App& app) {
                        "simultaneous (the paper's linear system), complementarity (impulses "
                        "only push) or serial (one contact at a time)")
           ->check(CLI::IsMember(method_names()));
-  verb->add_flag("--compare,-c", options->compare,
-                 "solve the scene by all three methods and show the answers side by side "
-                 "(with --format json: one result per method)")
-      ->excludes(method);
-  verb->callback([options]() { solve(*options); });
+  CLI::Option* compare =
+      verb->add_option("--compare,-c", options->compare_what,
+                       "solve the scene by all three methods and show the answers side by side "
+                       "(with --format json: one result per method); --compare restitution: "
+                       "the three restitution laws (newton, poisson, energetic) side by side, "
+                       "each by the scene's method")
+          ->expected(0, 1)
+          ->excludes(method);
+  verb->callback([options, compare]() {
+    options->compare = compare->count() > 0;
+    if (options->compare && !options->compare_what.empty() && options->compare_what != "methods" &&
+        options->compare_what != "restitution") {
+      throw CLI::ValidationError(
+          "--compare", "expected methods or restitution, got \"" + options->compare_what + "\"");
+    }
+    solve(*options);
+  });
 }
 
 }  // namespace impulselab

@@ -57,7 +57,15 @@ std::string csv_number(double value) {
 
 impulse::scene::Result solve_at(const impulse::scene::World& world, double e,
                                 const std::string& source) {
-  impulse::scene::Result result = impulse::scene::resolve(world.with_elasticity(e));
+  impulse::scene::Result result = [&] {
+    try {
+      return impulse::scene::resolve(world.with_elasticity(e));
+    } catch (const impulse::InvalidInput& error) {
+      // With friction: an elasticity the exact rule cannot take, or a method that cannot.
+      throw impulse::InvalidInput(source + ": " + error.what() + " (at elasticity " +
+                                  impulse::format_number(e) + ")");
+    }
+  }();
   if (result.status != impulse::SolveStatus::success) {
     throw impulse::InvalidInput(source + ": the numbers overflow at elasticity " +
                                 impulse::format_number(e) +

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "impulse/multipoint/multipoint.hpp"
+#include "support/random_bodies.hpp"
 #include "support/sampling.hpp"
 
 namespace impulse::test::friction {
@@ -95,16 +96,6 @@ inline material_2d::PointMass random_point_mass(Sampler& sample) {
   return {m, m * sample.vector(10)};
 }
 
-inline rigid_2d::RigidBody random_rigid(Sampler& sample) {
-  rigid_2d::RigidBody b;
-  b.mass = sample.mass();
-  b.inertia = sample.mass();
-  b.position = sample.vector(5);
-  b.p = b.mass * sample.vector(10);
-  b.L = b.inertia * sample.uniform(-10, 10);
-  return b;
-}
-
 // A random contact of the pairing; the static body, if any, is the bumper or the wedge at
 // random.
 struct Hit {
@@ -122,18 +113,18 @@ inline Hit random_hit(Sampler& sample, Pairing pairing) {
       h.wedge = random_point_mass(sample);
       break;
     case Pairing::rigid:
-      h.bumper = random_rigid(sample);
-      h.wedge = random_rigid(sample);
+      h.bumper = random_rigid_body(sample);
+      h.wedge = random_rigid_body(sample);
       break;
     case Pairing::material_static:
       h.bumper = random_point_mass(sample);
       break;
     case Pairing::rigid_static:
-      h.bumper = random_rigid(sample);
+      h.bumper = random_rigid_body(sample);
       break;
     case Pairing::mixed:
       h.bumper = random_point_mass(sample);
-      h.wedge = random_rigid(sample);
+      h.wedge = random_rigid_body(sample);
       break;
   }
   if (sample.coin()) {

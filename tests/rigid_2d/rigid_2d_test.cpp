@@ -7,6 +7,7 @@
 
 #include "impulse/core/error.hpp"
 #include "impulse/rigid_2d/rigid_2d.hpp"
+#include "support/random_bodies.hpp"
 #include "support/sampling.hpp"
 
 using Eigen::Vector2d;
@@ -33,23 +34,14 @@ double angular_momentum(const RigidBody& b) {
   return b.L + cross(b.position, b.p);
 }
 
-RigidBody random_body(impulse::test::Sampler& sample) {
-  RigidBody b;
-  b.mass = sample.mass();
-  b.inertia = sample.mass();
-  b.position = sample.vector(5);
-  b.p = b.mass * sample.vector(10);
-  b.L = b.inertia * sample.uniform(-10, 10);
-  return b;
-}
-
 struct Hit {
   RigidBody bumper, wedge;
   Vector2d point, n;
 };
 
 Hit random_hit(impulse::test::Sampler& sample) {
-  return {random_body(sample), random_body(sample), sample.vector(5), sample.unit_vector()};
+  return {impulse::test::random_rigid_body(sample), impulse::test::random_rigid_body(sample),
+          sample.vector(5), sample.unit_vector()};
 }
 
 double speed_scale(const Hit& h) {

@@ -287,8 +287,8 @@ json parse_document(std::string_view text, std::string_view source, const ReadLi
 // ---------------------------------------------------------------------------------------------
 // Reading the document into a Scene.
 
-const std::vector<std::string_view> top_keys{"dimension", "elasticity", "bodies", "contacts",
-                                             "solver"};
+const std::vector<std::string_view> top_keys{"dimension", "elasticity", "bodies",
+                                             "contacts",  "solver",     "friction"};
 const std::vector<std::string_view> body_keys{"name",
                                               "kind",
                                               "mass",
@@ -303,10 +303,10 @@ const std::vector<std::string_view> material_keys{"name",     "kind",     "mass"
                                                   "velocity", "momentum", "elasticity"};
 const std::vector<std::string_view> rigid_keys = body_keys;
 const std::vector<std::string_view> static_keys{"name", "kind"};
-const std::vector<std::string_view> contact_keys{"bumper", "wedge", "normal", "normal_angle",
-                                                 "point"};
+const std::vector<std::string_view> contact_keys{"bumper",       "wedge", "normal",
+                                                 "normal_angle", "point", "friction"};
 const std::vector<std::string_view> solver_keys{"dependent", "inconsistent", "method",
-                                                "max_collisions"};
+                                                "max_collisions", "restitution"};
 
 std::string join(const std::vector<std::string_view>& words) {
   std::string text;
@@ -328,6 +328,9 @@ class Reader {
     dimension_ = scene.dimension;
     if (const json* e = optional(document, "elasticity")) {
       scene.elasticity = number(*e, "elasticity");
+    }
+    if (const json* f = optional(document, "friction")) {
+      scene.friction = number(*f, "friction");  // its range is the library's rule
     }
     const json& bodies = required(document, "", "bodies", "the scene");
     require_array(bodies, "bodies", "an array of bodies");
@@ -573,13 +576,16 @@ class Reader {
     if (const json* point = optional(value, "point")) {
       c.point = vector(*point, child(path, "point"));
     }
+    if (const json* f = optional(value, "friction")) {
+      c.friction = number(*f, child(path, "friction"));  // its range is the library's rule
+    }
     return c;
   }
 
   void solver(const json& value, const std::string& path, Scene& scene) const {
     require_object(value, path,
-                   "an object with \"dependent\", \"inconsistent\", \"method\" and/or "
-                   "\"max_collisions\"");
+                   "an object with \"dependent\", \"inconsistent\", \"method\", "
+                   "\"max_collisions\" and/or \"restitution\"");
     refuse_unknown_keys(value, path, solver_keys, solver_keys, "");
     SolverOptions& options = scene.solver;
     if (const json* d = optional(value, "dependent")) {
@@ -590,6 +596,20 @@ class Reader {
     }
     if (const json* m = optional(value, "method")) {
       scene.method = member_of<methods::Method>(*m, child(path, "method"));
+    }
+    if (const json* r = optional(value, "restitution")) {
+      const std::string where = child(path, "restitution");
+      const std::string name = string(*r, where);
+      const std::optional<friction::RestitutionLaw> law = friction::restitution_law_named(name);
+      if (!law) {
+        std::string names;
+        for (const auto each : {friction::RestitutionLaw::newton, friction::RestitutionLaw::poisson,
+                                friction::RestitutionLaw::energetic}) {
+          names.append(names.empty() ? "" : ", ").append(in_quotes(friction::to_string(each)));
+        }
+        fail(where, "expected one of " + names + ", got " + in_quotes(name));
+      }
+      scene.restitution = *law;
     }
     if (const json* c = optional(value, "max_collisions")) {
       // The type is a whole number of collisions, at least 1 (0 is not written: a scene without
@@ -846,10 +866,24 @@ std::string report_json(const Result& result) {
   return to_json(result).dump(2) + "\n";
 }
 
+namespace {
+// resolve(), with a refusal of the scene (a method that cannot take its friction) naming it.
+template <typename Method>
+auto resolved(const World& world, std::string_view source, const Method& method) {
+  try {
+    return resolve(world, method);
+  } catch (const InvalidInput& e) {
+    std::string message(source);
+    message.append(": ").append(e.what());
+    throw InvalidInput(message);
+  }
+}
+}  // namespace
+
 SolveOutput solve_output(const World& world, std::string_view source,
                          std::optional<methods::Method> method, Format format, bool colour) {
-  return solve_output(resolve(world, method.value_or(world.scene().method)), source, format,
-                      colour);
+  return solve_output(resolved(world, source, method.value_or(world.scene().method)), source,
+                      format, colour);
 }
 
 SolveOutput solve_output(const Result& result, std::string_view source, Format format,
@@ -875,7 +909,8 @@ SolveOutput solve_output(const Result& result, std::string_view source, Format f
 
 SolveOutput compare_output(const World& world, std::string_view source, Format format,
                            bool colour) {
-  const std::vector<Result> results = resolve(world, methods::all_methods);
+  const std::vector<Result> results =
+      resolved(world, source, std::span<const methods::Method>(methods::all_methods));
   for (const Result& r : results) {
     if (r.status != SolveStatus::success) {
       throw InvalidInput(overflow_message(r, source, true));
@@ -894,6 +929,65 @@ SolveOutput compare_output(const World& world, std::string_view source, Format f
   for (const Result& r : results) {
     if (r.outcome.finished) {
       for (std::string& warning : impulse_warnings(r, std::string(name_of(r.method)) + ": ")) {
+        output.warnings.push_back(std::move(warning));
+      }
+    } else {
+      output.unfinished.append(output.unfinished.empty() ? "" : "\n");
+      output.unfinished.append(unfinished_message(r, source));
+    }
+  }
+  return output;
+}
+
+SolveOutput compare_laws_output(const World& world, std::string_view source, Format format,
+                                bool colour) {
+  constexpr std::array<friction::RestitutionLaw, 3> laws{friction::RestitutionLaw::newton,
+                                                         friction::RestitutionLaw::poisson,
+                                                         friction::RestitutionLaw::energetic};
+  std::vector<Result> results;
+  for (const friction::RestitutionLaw law : laws) {
+    Scene scene = world.scene();
+    scene.restitution = law;
+    try {
+      results.push_back(resolve(World(std::move(scene))));
+    } catch (const InvalidInput& e) {
+      std::string message(source);
+      message.append(": ").append(e.what()).append(" (--compare restitution, the law \"");
+      message.append(friction::to_string(law)).append("\")");
+      throw InvalidInput(message);
+    }
+    if (results.back().status != SolveStatus::success) {
+      throw InvalidInput(overflow_message(results.back(), source, false));
+    }
+  }
+  SolveOutput output;
+  if (format == Format::json) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    for (std::size_t k = 0; k < laws.size(); ++k) {
+      const std::string name(friction::to_string(laws[k]));
+      if (results[k].outcome.finished) {
+        nlohmann::ordered_json result = to_json(results[k]);
+        result["restitution"] = name;
+        out[name] = std::move(result);
+      } else {
+        out[name] = {{"restitution", name}, {"error", unfinished_message(results[k], source)}};
+      }
+    }
+    output.report = out.dump(2) + "\n";
+  } else {
+    output.report = laws_comparison_text(results, laws, source, colour);
+  }
+  for (const Result& r : results) {
+    if (r.outcome.finished) {
+      output.warnings = system_warnings(r, source);
+      break;
+    }
+  }
+  for (std::size_t k = 0; k < laws.size(); ++k) {
+    const Result& r = results[k];
+    if (r.outcome.finished) {
+      for (std::string& warning :
+           impulse_warnings(r, std::string(friction::to_string(laws[k])) + ": ")) {
         output.warnings.push_back(std::move(warning));
       }
     } else {

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "impulse/core/error.hpp"
 #include "impulse/core/text.hpp"
 
 namespace impulse::methods {
@@ -30,6 +31,15 @@ Outcome simultaneous(const multipoint::Configuration& configuration, const Paper
 
 Outcome resolve(Method method, const multipoint::Configuration& configuration, const Paper& paper,
                 const Options& options) {
+  if (has_contact_law(options)) {
+    // Beyond the paper: friction, or a restitution law other than Newton's.
+    if (const std::string why = unsupported(method, configuration, options); !why.empty()) {
+      throw InvalidInput(why);
+    }
+    return configuration.contacts().size() == 1
+               ? exact_single(method, configuration, paper, options)
+               : serial_exact(configuration, paper, options);
+  }
   switch (method) {
     case Method::complementarity:
       return complementarity(configuration, paper, options);

@@ -13,6 +13,7 @@
 #include "impulse/core/solve.hpp"
 #include "impulse/core/system.hpp"
 #include "impulse/core/text.hpp"
+#include "impulse/friction/bodies.hpp"
 #include "impulse/methods/resolve.hpp"
 
 namespace impulse::methods {
@@ -117,12 +118,17 @@ class Fastest {
 
 }  // namespace
 
-SerialResolution resolve_serial(const multipoint::Configuration& configuration,
-                                const SerialOptions& options) {
+namespace {
+
+// The serial loop, once: the fastest-approaching contact collides (collide(v, state) changes the
+// state and returns the normal impulse, or nothing when a number overflowed), then the contacts
+// of its two bodies are measured again, until none approaches or the bound is reached.
+template <typename Collide>
+SerialResolution run_serial(const multipoint::Configuration& configuration,
+                            const SerialOptions& options, Collide&& collide) {
   require_options(options);
   const std::span<const Body> bodies = configuration.bodies();
   const std::span<const Contact> contacts = configuration.contacts();
-  const std::span<const Elasticity> elasticities = configuration.elasticities();
   const auto n = static_cast<Index>(contacts.size());
   SerialResolution r;
   r.after.assign(bodies.begin(), bodies.end());
@@ -161,19 +167,13 @@ SerialResolution resolve_serial(const multipoint::Configuration& configuration,
       break;
     }
     const Contact& c = contacts[static_cast<std::size_t>(v)];
-    // The single-contact formula: F dt (a_1 + a_2) = b_1 + b_2, each body with its own normal
-    // (bumper n, wedge -n) and its own elasticity.
-    const ScalarSolution one = solve(
-        multipoint::share(r.after[c.bumper], Touch{v, c.normal, c.point}, elasticities[c.bumper]) +
-        multipoint::share(r.after[c.wedge], Touch{v, -c.normal, c.point}, elasticities[c.wedge]));
-    if (one.status != SolveStatus::success || !std::isfinite(one.Fdt)) {
+    const std::optional<double> Fdt = collide(v, r.after);
+    if (!Fdt) {
       d.status = SerialStatus::non_finite;
       break;
     }
-    configuration.apply(r.after, v, one.Fdt);  // -n Fdt on the bumper, +n Fdt on the wedge
-    r.Fdt(v) += one.Fdt;
+    r.Fdt(v) += *Fdt;
     d.order.push_back(v);
-    // After a collision only the contacts of its two bodies change speed.
     bool finite = true;
     for (const std::size_t body : {c.bumper, c.wedge}) {
       for (const Touch& t : configuration.touches(body)) {
@@ -189,6 +189,27 @@ SerialResolution resolve_serial(const multipoint::Configuration& configuration,
   }
   d.passes = count_passes(d.order);
   return r;
+}
+
+}  // namespace
+
+SerialResolution resolve_serial(const multipoint::Configuration& configuration,
+                                const SerialOptions& options) {
+  const std::span<const Contact> contacts = configuration.contacts();
+  const std::span<const Elasticity> elasticities = configuration.elasticities();
+  return run_serial(
+      configuration, options, [&](Index v, std::vector<Body>& state) -> std::optional<double> {
+        const Contact& c = contacts[static_cast<std::size_t>(v)];
+        const ScalarSolution one = solve(
+            multipoint::share(state[c.bumper], Touch{v, c.normal, c.point},
+                              elasticities[c.bumper]) +
+            multipoint::share(state[c.wedge], Touch{v, -c.normal, c.point}, elasticities[c.wedge]));
+        if (one.status != SolveStatus::success || !std::isfinite(one.Fdt)) {
+          return std::nullopt;
+        }
+        configuration.apply(state, v, one.Fdt);  // -n Fdt on the bumper, +n Fdt on the wedge
+        return one.Fdt;
+      });
 }
 
 SerialResolution resolve_serial(std::span<const Body> bodies,
@@ -207,9 +228,10 @@ SerialResolution resolve_serial(std::span<const Body> bodies, Elasticity elastic
   return resolve_serial(bodies, elasticities, contacts, options);
 }
 
-Outcome serial(const multipoint::Configuration& configuration, const Paper& paper,
-               const Options& options) {
-  SerialResolution s = resolve_serial(configuration, options.serial);
+namespace {
+
+// What serial collisions report of themselves, whichever rule each collision follows.
+Outcome serial_outcome(SerialResolution s, const Paper& paper, const Options& options) {
   const SerialDiagnostics& d = s.diagnostics;
   Outcome o;
   o.method = Method::serial;
@@ -262,6 +284,76 @@ Outcome serial(const multipoint::Configuration& configuration, const Paper& pape
                    {"max_collisions", d.max_collisions},
                    {"finished", d.status == SerialStatus::finished}};
   o.solution = std::move(s.diagnostics);
+  return o;
+}
+
+}  // namespace
+
+Outcome serial(const multipoint::Configuration& configuration, const Paper& paper,
+               const Options& options) {
+  return serial_outcome(resolve_serial(configuration, options.serial), paper, options);
+}
+
+Outcome serial_exact(const multipoint::Configuration& configuration, const Paper& paper,
+                     const Options& options) {
+  const std::span<const Contact> contacts = configuration.contacts();
+  const auto n = static_cast<Index>(contacts.size());
+  Eigen::VectorXd tangential = Eigen::VectorXd::Zero(n);
+  std::vector<std::optional<friction::Slip>> ended(contacts.size());
+  double most_gained = 0.0;  // the largest gain of kinetic energy by one collision
+  SerialResolution s = run_serial(
+      configuration, options.serial,
+      [&](Index v, std::vector<Body>& state) -> std::optional<double> {
+        const auto k = static_cast<std::size_t>(v);
+        const Contact& c = contacts[k];
+        const double before = multipoint::kinetic_energy(state[c.bumper]) +
+                              multipoint::kinetic_energy(state[c.wedge]);
+        const friction::ContactLaw law = detail::contact_law(configuration, options, k);
+        const friction::Collision one =
+            friction::collide(state[c.bumper], state[c.wedge], c.point, c.normal, law);
+        const friction::ContactImpulse& p = one.impulse;
+        if (p.status != friction::ContactStatus::resolved || !std::isfinite(p.normal) ||
+            !std::isfinite(p.tangential)) {
+          return std::nullopt;  // the fastest contact approaches: only overflow stops it here
+        }
+        state[c.bumper] = one.after.bumper;
+        state[c.wedge] = one.after.wedge;
+        const double after = multipoint::kinetic_energy(state[c.bumper]) +
+                             multipoint::kinetic_energy(state[c.wedge]);
+        if (law.elasticity.value() <= 2.0 && detail::energy_gained(before, after)) {
+          most_gained = std::max(most_gained, after - before);
+        }
+        tangential(v) += p.tangential;
+        ended[k] = p.outcome;
+        return p.normal;
+      });
+  const std::vector<Body> after = s.after;
+  Outcome o = serial_outcome(std::move(s), paper, options);
+  if (!o.finite) {
+    return o;
+  }
+  std::vector<std::string> slip;
+  for (std::size_t v = 0; v < contacts.size(); ++v) {
+    const Contact& c = contacts[v];
+    // A contact that never collided ends as it is: sliding or not.
+    const friction::Slip how =
+        ended[v].value_or(detail::slip_of(after[c.bumper], after[c.wedge], c.point, c.normal));
+    slip.emplace_back(friction::to_string(how));
+    o.on_bumper.push_back(c.normal * -o.Fdt(static_cast<Index>(v)) +
+                          friction::tangent(c.normal) * tangential(static_cast<Index>(v)));
+  }
+  o.per_contact = detail::friction_columns(tangential, std::move(slip));
+  std::vector<std::string> details{"each collision by the exact single-contact rule: " +
+                                   detail::law_words(configuration, options)};
+  for (std::string& line : o.details) {
+    details.push_back(std::move(line));
+  }
+  o.details = std::move(details);
+  o.diagnostics.push_back({"restitution", std::string(friction::to_string(options.restitution))});
+  o.diagnostics.push_back({"friction", options.friction});
+  if (most_gained > 0.0) {
+    o.warnings.push_back(detail::energy_gained_warning(options.restitution));
+  }
   return o;
 }
 

@@ -109,7 +109,12 @@ std::string text_report(const Result& r, std::string_view source, bool colour) {
   const double energy_scale = std::max(r.energy_before, r.energy_after);
   const double approaches_scale = approach_scale(r);
 
-  out.append(heading("Impulses (Fdt at each contact; the bumper receives -normal * Fdt)", colour));
+  out.append(heading(o.on_bumper.empty()
+                         ? "Impulses (Fdt at each contact; the bumper receives -normal * Fdt)"
+                         : "Impulses (Fdt: the normal impulse at each contact; the bumper "
+                           "receives -normal * Fdt + tangent * tangential Fdt, tangent = "
+                           "[-normal_y, normal_x])",
+                     colour));
   std::vector<std::string> impulse_header{"contact", "bumper", "wedge", "Fdt", "on bumper"};
   std::vector<bool> impulse_left{false, true, true, false, false};
   for (const methods::ContactColumn& column : o.per_contact) {
@@ -232,24 +237,42 @@ std::string text_report(const Result& r, std::string_view source, bool colour) {
   return out;
 }
 
-std::string comparison_text(std::span<const Result> results, std::string_view source, bool colour) {
+namespace {
+
+// The columns of a comparison: each result's name and what it is, in a legend.
+struct Compared {
+  std::string_view what;                 // "methods", "restitution laws"
+  std::vector<std::string> names;        // one per result, the column headings
+  std::vector<std::string_view> legend;  // one per result, after its name
+  std::string_view how = "How each method got there";
+};
+
+// The per-contact column of a result named `key`, if its method added one.
+const methods::ContactColumn* column_of(const Result& r, std::string_view key) {
+  for (const methods::ContactColumn& column : r.outcome.per_contact) {
+    if (column.key == key) {
+      return &column;
+    }
+  }
+  return nullptr;
+}
+
+std::string compared_text(std::span<const Result> results, std::string_view source, bool colour,
+                          const Compared& compared) {
   const Result& first = results.front();
   const int d = first.dimension;
   std::string out = scene_line(first, source, colour);
   out.append("; ").append(results.size() == 3 ? "three" : std::to_string(results.size()));
-  out.append(" methods side by side\n");
-  for (const Result& r : results) {
-    out.append("  ").append(name_of(r.method)).append(": ");
-    out.append(methods::text_of(r.method).brief).append("\n");
+  out.append(" ").append(compared.what).append(" side by side\n");
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    out.append("  ").append(compared.names[k]).append(": ");
+    out.append(compared.legend[k]).append("\n");
   }
   for (const std::string& note : first.notes) {
     out.append("Note: ").append(note).append("\n");
   }
 
-  std::vector<std::string> names;
-  for (const Result& r : results) {
-    names.emplace_back(name_of(r.method));
-  }
+  const std::vector<std::string>& names = compared.names;
   // A method that did not finish shows "-" in every cell.
   const auto cell = [](const Result& r, const std::string& text) {
     return r.outcome.finished ? text : std::string("-");
@@ -280,6 +303,27 @@ std::string comparison_text(std::span<const Result> results, std::string_view so
     impulses.add(std::move(row));
   }
   out.append(impulses.render());
+  // With friction: the tangential impulses, and how each contact ended.
+  if (std::any_of(results.begin(), results.end(),
+                  [](const Result& r) { return column_of(r, "tangential") != nullptr; })) {
+    out.append(
+        heading("Tangential impulses (on the bumper, along [-normal_y, normal_x]) and how "
+                "each contact ended",
+                colour));
+    TextTable tangential(header({"contact"}), {false});
+    for (std::size_t v = 0; v < first.impulses.size(); ++v) {
+      std::vector<std::string> row{std::to_string(v)};
+      for (const Result& r : results) {
+        const methods::ContactColumn* t = column_of(r, "tangential");
+        const methods::ContactColumn* slip = column_of(r, "slip");
+        row.push_back(cell(r, t == nullptr ? std::string("0")
+                                           : column_cell(*t, v) + " (" +
+                                                 (slip ? column_cell(*slip, v) : "") + ")"));
+      }
+      tangential.add(std::move(row));
+    }
+    out.append(tangential.render());
+  }
 
   out.append(heading("Velocities after", colour));
   const double velocities_scale = scale_of(velocity_scale);
@@ -343,13 +387,49 @@ std::string comparison_text(std::span<const Result> results, std::string_view so
   totals.add(std::move(momentum));
   out.append(totals.render());
 
-  out.append(heading("How each method got there", colour));
+  out.append(heading(compared.how, colour));
   TextTable how({}, {true, true});
-  for (const Result& r : results) {
-    how.add({std::string(name_of(r.method)) + ":",
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const Result& r = results[k];
+    how.add({names[k] + ":",
              r.outcome.finished ? r.outcome.summary : "did not finish (see the message below)"});
   }
   out.append(how.render());
+  return out;
+}
+
+}  // namespace
+
+std::string comparison_text(std::span<const Result> results, std::string_view source, bool colour) {
+  Compared compared{"methods", {}, {}};
+  for (const Result& r : results) {
+    compared.names.emplace_back(name_of(r.method));
+    compared.legend.push_back(methods::text_of(r.method).brief);
+  }
+  return compared_text(results, source, colour, compared);
+}
+
+std::string_view law_legend(friction::RestitutionLaw law) {
+  switch (law) {
+    case friction::RestitutionLaw::newton:
+      return "Newton's (the paper's): approach speed after = -(elasticity - 1) x before";
+    case friction::RestitutionLaw::poisson:
+      return "Poisson's: restitution impulse = (elasticity - 1) x compression impulse";
+    case friction::RestitutionLaw::energetic:
+      return "energetic (Stronge's): restitution work = (elasticity - 1)^2 x |compression work|";
+  }
+  return "?";
+}
+
+std::string laws_comparison_text(std::span<const Result> results,
+                                 std::span<const friction::RestitutionLaw> laws,
+                                 std::string_view source, bool colour) {
+  Compared compared{"restitution laws", {}, {}, "How each law got there"};
+  for (const friction::RestitutionLaw law : laws) {
+    compared.names.emplace_back(friction::to_string(law));
+    compared.legend.push_back(law_legend(law));
+  }
+  std::string out = compared_text(results, source, colour, compared);
   return out;
 }
 

@@ -39,6 +39,23 @@ namespace impulse::scene {
 [[nodiscard]] std::string comparison_text(std::span<const Result> results, std::string_view source,
                                           bool colour);
 
+/// @brief The words of each restitution law in the legend of `--compare restitution`.
+/// @param law the law
+/// @return one line, its definition
+[[nodiscard]] std::string_view law_legend(friction::RestitutionLaw law);
+
+/// @brief The three restitution laws' results for one scene side by side (`solve --compare
+/// restitution`): the tables of comparison_text(), one column per law, with the tangential
+/// impulses and how each contact ended.
+/// @param results the results, one per law, of the same scene but for `solver.restitution`
+/// @param laws the law of each result
+/// @param source how to name the scene
+/// @param colour whether headings may use ANSI bold
+/// @return the report, ending with a newline
+[[nodiscard]] std::string laws_comparison_text(std::span<const Result> results,
+                                               std::span<const friction::RestitutionLaw> laws,
+                                               std::string_view source, bool colour);
+
 /// @brief The warnings about the impulses, one sentence each: every negative impulse
 /// ("contact 1 (b–c): negative impulse -0.666667 (the contact pulls)"; an impulse within
 /// impulse::rounding_noise of the largest one's size from 0 is rounding, not a pull), then the

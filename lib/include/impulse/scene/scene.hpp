@@ -16,6 +16,7 @@
 #include "impulse/core/elasticity.hpp"
 #include "impulse/core/names.hpp"
 #include "impulse/core/solve.hpp"
+#include "impulse/friction/contact.hpp"
 #include "impulse/methods/complementarity.hpp"
 #include "impulse/methods/methods.hpp"
 #include "impulse/methods/outcome.hpp"
@@ -91,6 +92,9 @@ struct Contact {
   /// impulse::UnitNormal::from_degrees() of it.
   Eigen::Vector2d normal = Eigen::Vector2d::UnitX();
   std::optional<Eigen::Vector2d> point;  ///< world position; needed when a body is rigid
+  /// Beyond the paper (issue 17): Coulomb's coefficient μ at this contact (finite, ≥ 0); without
+  /// it, the scene's `friction`, else 0.
+  std::optional<double> friction = std::nullopt;
 };
 
 /// @brief A whole scene: the scene format's top level.
@@ -110,7 +114,27 @@ struct Scene {
   /// Method complementarity: the algorithm and its tolerance. Its `dependent` policy is ignored:
   /// the scene's `solver.dependent` applies.
   methods::ComplementarityOptions complementarity;
+  // Added for friction (issue 17), after the fields above so that their order stays.
+  /// Coulomb's coefficient μ of every contact without its own (the format's top-level
+  /// `friction`, finite, ≥ 0); without it, 0.
+  std::optional<double> friction = std::nullopt;
+  /// How the elasticity is applied once the bodies stop approaching (`solver.restitution`):
+  /// Newton's (the paper's) by default, Poisson's or the energetic law.
+  friction::RestitutionLaw restitution = friction::RestitutionLaw::newton;
 };
+
+/// @brief Coulomb's coefficient at contact @p v: its own `friction`, else the scene's, else 0.
+/// @param scene the scene
+/// @param v a contact of the scene
+/// @return μ
+[[nodiscard]] double friction_at(const Scene& scene, std::size_t v);
+
+/// @brief Whether the scene goes beyond the paper: some contact has friction (μ > 0) or the
+/// restitution law is not Newton's. Only then do the methods take the exact single-contact rule
+/// (friction::resolve_contact); otherwise every result is the paper's, unchanged.
+/// @param scene the scene
+/// @return whether a contact law beyond the paper's applies
+[[nodiscard]] bool has_contact_law(const Scene& scene);
 
 /// @brief A scene checked once: every rule of the scene format, then its bodies and contacts as
 /// the lower layers take them (a multipoint::Configuration that nothing checks again).
@@ -123,7 +147,10 @@ struct Scene {
 /// two static bodies, a zero or non-finite normal, a rigid body's contact
 /// without a point, a bound on serial collisions outside 0 (the default) to
 /// methods::most_collisions, and more contacts than impulse::dense_limit with policies that only
-/// the dense method serves.
+/// the dense method serves. With friction or a restitution law other than Newton's
+/// (has_contact_law()): a friction that is negative or not finite, and, at each contact, bodies
+/// that collide at different elasticities, an elasticity below 1, or above 2 for the energetic
+/// law (the exact rule takes one elasticity per contact, from compression on).
 class World {
  public:
   /// @brief Checks @p scene and keeps it with its model.

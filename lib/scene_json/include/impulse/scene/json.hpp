@@ -192,6 +192,22 @@ struct SolveOutput {
 [[nodiscard]] SolveOutput compare_output(const World& world, std::string_view source, Format format,
                                          bool colour = false);
 
+/// @brief `impulselab solve --compare restitution` on a checked scene: the scene resolved by its
+/// own method three times, once for each restitution law (friction::RestitutionLaw: Newton's,
+/// Poisson's, the energetic law), side by side in @p format (text: scene::laws_comparison_text;
+/// JSON: `{"newton": RESULT, "poisson": RESULT, "energetic": RESULT}`, each result to_json()
+/// with `"restitution"` added, or `{"restitution": NAME, "error": MESSAGE}` for one that did not
+/// finish); each law's impulse warnings with its name in front ("newton: energy gained: …").
+/// A law the scene cannot take (the energetic law above elasticity 2, several contacts with a
+/// method other than serial) throws InvalidInput naming the scene, the place and the law.
+/// @param world the checked scene
+/// @param source how messages name the scene
+/// @param format text or JSON
+/// @param colour whether the text report may use ANSI bold
+/// @return the comparison, the unfinished laws and the warnings
+[[nodiscard]] SolveOutput compare_laws_output(const World& world, std::string_view source,
+                                              Format format, bool colour = false);
+
 /// @brief The one entry point from a scene file's text to `solve --format json`'s output:
 /// parse_world() then solve_output() in JSON. `impulselab solve` goes the same way; so may a
 /// page that runs the library in a browser.
