@@ -1,9 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include <chrono>
-#include <exception>
-
 #include "derivations/check.hpp"
-#include "numeric.hpp"
 
 namespace impulse::derivations {
 
@@ -49,17 +45,6 @@ std::string_view to_string(Status status) {
   return "?";
 }
 
-std::vector<Check> all_checks() {
-  std::vector<Check> checks;
-  for (auto section :
-       {section1_checks, section2_checks, section3_checks, section4_checks, section5_checks}) {
-    auto part = section();
-    checks.insert(checks.end(), std::make_move_iterator(part.begin()),
-                  std::make_move_iterator(part.end()));
-  }
-  return checks;
-}
-
 bool in_section(std::string_view section, std::string_view filter) {
   if (filter.empty()) {
     return true;
@@ -78,52 +63,6 @@ std::uint64_t check_seed(std::uint64_t run_seed, std::string_view id) {
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
   return z ^ (z >> 31);
-}
-
-Outcome evaluate(const Check& check, const Context& context) {
-  try {
-    return check.evaluate(context);
-  } catch (const std::exception& e) {
-    Outcome outcome;
-    outcome.status = Status::failed;
-    outcome.explanation = std::string("The check could not be evaluated: ") + e.what();
-    return outcome;
-  }
-}
-
-Report run(const Options& options) {
-  num::quiet_gsl();
-  Report report;
-  report.options = options;
-  const auto start = std::chrono::steady_clock::now();
-  for (Check& check : all_checks()) {
-    if (!in_section(check.section, options.section)) {
-      continue;
-    }
-    const Context context{options.samples, check_seed(options.seed, check.id)};
-    const auto begin = std::chrono::steady_clock::now();
-    Outcome outcome = evaluate(check, context);
-    const std::chrono::duration<double> took = std::chrono::steady_clock::now() - begin;
-    check.evaluate = nullptr;
-    switch (outcome.status) {
-      case Status::verified:
-        ++report.summary.verified;
-        break;
-      case Status::erratum:
-        ++report.summary.erratum;
-        break;
-      case Status::refuted:
-        ++report.summary.refuted;
-        break;
-      case Status::failed:
-        ++report.summary.failed;
-        break;
-    }
-    report.results.push_back({std::move(check), std::move(outcome), took.count()});
-  }
-  const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-  report.seconds = took.count();
-  return report;
 }
 
 std::string anchor(std::string_view id) {

@@ -4,6 +4,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -85,6 +86,75 @@ double integrate(const std::function<double(double)>& f, double a, double b, dou
                              " (estimated error " + brief(error) + " of " + brief(result) + ")");
   }
   return result;
+}
+
+std::vector<std::vector<double>> integrate_to(const OdeRhs& rhs, std::vector<double> y0,
+                                              const std::vector<double>& times,
+                                              double initial_step) {
+  quiet_gsl();
+  gsl_odeiv2_system system;
+  system.function = [](double t, const double y[], double dydt[], void* params) -> int {
+    (*static_cast<const OdeRhs*>(params))(t, y, dydt);
+    return GSL_SUCCESS;
+  };
+  system.jacobian = nullptr;
+  system.dimension = y0.size();
+  system.params = const_cast<OdeRhs*>(&rhs);
+  std::unique_ptr<gsl_odeiv2_driver, void (*)(gsl_odeiv2_driver*)> driver(
+      gsl_odeiv2_driver_alloc_y_new(&system, gsl_odeiv2_step_rk8pd, initial_step, 1e-13, 1e-13),
+      gsl_odeiv2_driver_free);
+  if (!driver) {
+    throw std::runtime_error("gsl_odeiv2_driver_alloc_y_new failed");
+  }
+  std::vector<std::vector<double>> states;
+  double t = 0.0;
+  for (const double next : times) {
+    if (next > t) {
+      const int status = gsl_odeiv2_driver_apply(driver.get(), &t, next, y0.data());
+      if (status != GSL_SUCCESS) {
+        throw std::runtime_error(std::string("ODE integration failed: ") + gsl_strerror(status));
+      }
+    }
+    states.push_back(y0);
+  }
+  return states;
+}
+
+double gauss_legendre(const std::function<std::vector<double>(const std::vector<double>&)>& values,
+                      double a, double b, int pieces) {
+  static const std::unique_ptr<gsl_integration_glfixed_table,
+                               void (*)(gsl_integration_glfixed_table*)>
+      table(gsl_integration_glfixed_table_alloc(24), gsl_integration_glfixed_table_free);
+  std::vector<double> points;
+  std::vector<double> weights;
+  for (int piece = 0; piece < pieces; ++piece) {
+    const double lo = a + (b - a) * piece / pieces;
+    const double hi = a + (b - a) * (piece + 1) / pieces;
+    for (std::size_t k = 0; k < table->n; ++k) {
+      double x = 0.0;
+      double w = 0.0;
+      gsl_integration_glfixed_point(lo, hi, k, &x, &w, table.get());
+      points.push_back(x);
+      weights.push_back(w);
+    }
+  }
+  // The points of a piece are not in increasing order: sort them, keeping their weights.
+  std::vector<std::size_t> order(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    order[i] = i;
+  }
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t i, std::size_t j) { return points[i] < points[j]; });
+  std::vector<double> sorted;
+  for (const std::size_t i : order) {
+    sorted.push_back(points[i]);
+  }
+  const std::vector<double> f = values(sorted);
+  double sum = 0.0;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    sum += weights[order[k]] * f[k];
+  }
+  return sum;
 }
 
 OdeResult integrate_until(const OdeRhs& rhs, std::vector<double> y0, const OdeEvent& event,

@@ -79,6 +79,18 @@ using OdeEvent = std::function<double(double t, const double* y)>;
 OdeResult integrate_until(const OdeRhs& rhs, std::vector<double> y0, const OdeEvent& event,
                           double initial_step, double t_max, double event_tolerance);
 
+/// The states of an ODE y' = f(t, y), from y0 at t = 0, at each of the increasing @p times
+/// (GSL's rk8pd, relative and absolute tolerance 1e-13).
+std::vector<std::vector<double>> integrate_to(const OdeRhs& rhs, std::vector<double> y0,
+                                              const std::vector<double>& times,
+                                              double initial_step);
+
+/// ∫_a^b of a function known at chosen points (an ODE's solution, sampled in one pass): the
+/// 24-point Gauss–Legendre rule on each of @p pieces equal pieces. @p values returns the
+/// function at the given increasing points.
+double gauss_legendre(const std::function<std::vector<double>(const std::vector<double>&)>& values,
+                      double a, double b, int pieces);
+
 /// The minimiser of f in [lower, upper] by GSL's Brent method, started at `guess` (which must
 /// lie below both ends), to a relative interval of 1e-10.
 double minimise(const std::function<double(double)>& f, double lower, double upper, double guess);

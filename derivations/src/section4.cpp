@@ -5,7 +5,7 @@
 // with the body's own outward normal n_v; the impulse at contact v is -n_v F_v on it (+n_v F_v on
 // the other body). Work is the integral of force along the path, dS = v dt; elastic: total
 // kinetic energy kept; inelastic: at each contact the two bodies' velocities along n_v are equal.
-// The many-body model of many.hpp judges systems assembled from the printed coefficients.
+// The many-body model of models/scene.hpp judges systems assembled from the printed coefficients.
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <array>
@@ -13,7 +13,6 @@
 #include <numbers>
 
 #include "impulse/multipoint/multipoint.hpp"
-#include "many.hpp"
 #include "numeric.hpp"
 #include "pulses.hpp"
 #include "sections.hpp"
@@ -262,8 +261,8 @@ Outcome equation_4_3(const Context& c) {
   for (std::size_t i = 0; i < c.share(4); ++i) {
     const PairSolution x = solve_pair(r, true, 4);
     for (std::size_t v = 0; v < x.scene.contacts.size(); ++v) {
-      const double mine = many::contact_energy(x.scene, x.F, 0, v).translational;
-      const double other = many::contact_energy(x.scene, x.F, 1, v).translational;
+      const double mine = contact_energy(x.scene, x.F, 0, v).translational;
+      const double other = contact_energy(x.scene, x.F, 1, v).translational;
       errors.add(mine + other, 0.0, std::abs(mine) + std::abs(other));
     }
   }
@@ -323,7 +322,7 @@ void pair_contacts(const Context& c, int max_contacts, Visit visit) {
       for (std::size_t k = 0; k < x.scene.contacts.size(); ++k) {
         S += x.F(static_cast<Eigen::Index>(k)) * x.scene.contacts[k].n.dot(nv);
       }
-      const double dEo = many::contact_energy(x.scene, x.F, 1, v).translational;
+      const double dEo = contact_energy(x.scene, x.F, 1, v).translational;
       const double terms =
           x.system.A.row(static_cast<Eigen::Index>(v)).cwiseAbs().dot(x.F.cwiseAbs());
       visit(S, b.p.dot(nv), b.m, dEo, terms);
@@ -501,25 +500,23 @@ Outcome claim_only_b(const Context&) {
 }
 
 Outcome two_body_sum(const Context& c) {
-  // (A_1 + A_2) Fdt = B_1 + B_2: the two bodies' printed blocks summed equal the system built
-  // from the contact Jacobian, and solving it equalises (e = 1) or keeps energy (e = 2).
-  num::Random r(c.seed);
-  num::Errors errors;
+  // (A_1 + A_2) Fdt = B_1 + B_2: the two bodies' printed blocks summed, A and B, against the
+  // system built from the contact Jacobian (A = J M^-1 J^T, B = J (e v)) and the library's
+  // assembly; solved, the impulses keep the kinetic energy (e = 2) or stop every contact's
+  // approach (e = 1), judged on the bodies moved by them.
+  std::vector<Finding> findings;
   for (const bool elastic : {true, false}) {
     const auto k = printed_material(elastic);
-    for (std::size_t i = 0; i < c.share(8); ++i) {
-      const many::Scene s = many::random_pair(r, 4);
-      const System sys = assemble_printed(s, k);
-      const many::Model md = many::model(s);
-      errors.add_relative(many::matrix_error(sys.A, md.A()));
+    for (Finding& f : printed_system_findings(
+             c, elastic, [&k](const many::Scene& s) { return assemble_printed(s, k); },
+             [](num::Random& r) { return many::random_pair(r, 4); },
+             std::string("two point masses at 1 to 4 contacts, ") +
+                 (elastic ? "elastic" : "inelastic"),
+             c.share(8))) {
+      findings.push_back(std::move(f));
     }
   }
-  return judge(EquationVerdict{
-      {numeric(Method::numeric, errors, num::holds_below, "two point masses at 1 to 4 contacts")},
-      {},
-      {},
-      {},
-      {}});
+  return judge(EquationVerdict{std::move(findings), {}, {}, {}, {}});
 }
 
 Outcome impulse_direction(const Context& c) {
@@ -794,7 +791,7 @@ Outcome many_4_4(const Context& c) {
       }
       if (std::abs(pair) < 1e-9 * (std::abs(all) + b.p.norm()))
         continue;
-      const double dEo = many::contact_energy(s, F, other, v).translational;
+      const double dEo = contact_energy(s, F, other, v).translational;
       const double lhs = all / b.m;
       // Row v of the system is what the balance rests on; its rounding scales with its terms.
       const double scale = std::abs(lhs) + std::abs(2 * b.p.dot(nv) / b.m) +
@@ -813,29 +810,28 @@ Outcome many_4_4(const Context& c) {
 }
 
 Outcome oplus(const Context& c) {
-  // The ⊕ of the bodies' blocks (zero-padded to the global contact indices) against the system
-  // built from the contact Jacobian; the library's assembly against both.
-  const auto k = printed_material(true);
-  num::Random r(c.seed);
-  num::Errors errors;
-  for (std::size_t i = 0; i < c.share(4); ++i) {
-    const many::Scene s = many::random_scene(r, false, true, 6, 8);
-    const System sys = assemble_printed(s, k);
-    const many::Model md = many::model(s);
-    errors.add_relative(many::matrix_error(sys.A, md.A()));
+  // The ⊕ of the bodies' blocks (zero-padded to the global contact indices), A and B, against
+  // the system built from the contact Jacobian and the library's assembly; solved, the impulses
+  // keep the kinetic energy (elastic blocks) or stop every approach (inelastic), judged on the
+  // bodies moved by them.
+  std::vector<Finding> findings;
+  for (const bool elastic : {true, false}) {
+    const auto k = printed_material(elastic);
+    for (Finding& f : printed_system_findings(
+             c, elastic, [&k](const many::Scene& s) { return assemble_printed(s, k); },
+             [](num::Random& r) { return many::random_scene(r, false, true, 6, 8); },
+             std::string("2 to 6 bodies, 1 to 8 contacts, ") + (elastic ? "elastic" : "inelastic"),
+             c.share(8))) {
+      findings.push_back(std::move(f));
+    }
   }
-  return judge(EquationVerdict{
-      {numeric(Method::numeric, errors, num::holds_below, "2 to 6 bodies, 1 to 8 contacts")},
-      {},
-      {},
-      {},
-      {}});
+  return judge(EquationVerdict{std::move(findings), {}, {}, {}, {}});
 }
 
 }  // namespace
 
-std::vector<Check> section4_checks() {
-  std::vector<Check> c;
+std::vector<CodedCheck> section4_checks() {
+  std::vector<CodedCheck> c;
   c.push_back(make_check("eq-4.1", "4.1", "(4.1)", Kind::equation,
                          R"(\Delta E_{vt} = \int_{\mathcal{A}} F_v \, \mathrm{d}S_v)",
                          equation_4_1));

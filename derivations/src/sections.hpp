@@ -1,37 +1,48 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// What the section files share, and what the tests reach into: the transcriptions of a few
-// printed statements and the functions that judge a candidate statement, so that a test can hand
-// them a deliberately wrong one.
+// Sections 4 and 5, still written in C++ (sections 1 to 3 are derivation files in
+// derivations/paper/): each check is data plus a function that evaluates it. run() and
+// all_checks() (file/paper.cpp) put them after the files' checks, in the paper's order.
 #pragma once
 
 #include <ginac/ginac.h>
 
+#include <functional>
 #include <vector>
 
 #include "derivations/check.hpp"
-#include "many.hpp"
+#include "models/scene.hpp"
 #include "symbolic.hpp"
 #include "verdict.hpp"
 
 namespace impulse::derivations {
 
-/// Section 1's symbols: body 1 moves towards body 2 with momentum p1; p2 is body 2's momentum
-/// towards body 1 (the paper's sign convention); Fdt is the impulse magnitude.
-struct LineSymbols {
-  GiNaC::possymbol m1{"m1", "m_1"};
-  GiNaC::possymbol m2{"m2", "m_2"};
-  GiNaC::realsymbol p1{"p1", "p_1"};
-  GiNaC::realsymbol p2{"p2", "p_2"};
-  GiNaC::realsymbol F{"Fdt", "F\\,dt"};
-  GiNaC::realsymbol e1{"e1", "elasticity_1"};
-  GiNaC::realsymbol e2{"e2", "elasticity_2"};
+/// The run's settings as a C++ check sees them.
+struct Context {
+  std::size_t samples = 10000;  ///< random samples per numeric method
+  std::uint64_t seed = 1;       ///< this check's seed (check_seed of the run's seed and the id)
+  /// A share of the samples for a costlier method: samples / divisor, at least 1.
+  [[nodiscard]] std::size_t share(std::size_t divisor) const {
+    return samples / divisor > 0 ? samples / divisor : 1;
+  }
 };
-const LineSymbols& line_symbols();
 
-/// (1.1) as printed, and the findings on any candidate for it: substituted into energy
-/// conservation (symbolic), evaluated on random bodies (numeric).
-sym::Equation printed_1_1();
-std::vector<Finding> elastic_line_findings(const sym::Equation& candidate, const Context& context);
+/// A check of a section not yet written as a file: the check and the function that evaluates it.
+struct CodedCheck {
+  Check check;
+  std::function<Outcome(const Context&)> evaluate;
+};
+
+/// Shorthand to build checks.
+CodedCheck make_check(std::string id, std::string section, std::optional<std::string> equation,
+                      Kind kind, std::string statement,
+                      std::function<Outcome(const Context&)> evaluate);
+
+/// Runs a check's function; an exception is a failed verdict with its message, never a crash.
+Outcome evaluate(const CodedCheck& check, const Context& context);
+
+/// The checks of sections 4 and 5, in the paper's order.
+std::vector<CodedCheck> section4_checks();
+std::vector<CodedCheck> section5_checks();
 
 /// The numeric findings on a system assembled from printed coefficients (sections 4 and 5), over
 /// random scenes (with rigid bodies when `rigid`, and static bodies): solved, it keeps the energy
@@ -41,9 +52,22 @@ std::vector<Finding> printed_system_findings(
     const Context& context, bool rigid, bool elastic,
     const std::function<many::System(const many::Scene&)>& assemble_printed,
     const std::string& scenes);
+/// The same on scenes that @p draw produces, @p count of them.
+std::vector<Finding> printed_system_findings(
+    const Context& context, bool elastic,
+    const std::function<many::System(const many::Scene&)>& assemble_printed,
+    const std::function<many::Scene(num::Random&)>& draw, const std::string& scenes,
+    std::size_t count);
 
-/// Shorthand to build checks.
-Check make_check(std::string id, std::string section, std::optional<std::string> equation,
-                 Kind kind, std::string statement, std::function<Outcome(const Context&)> evaluate);
+/// The paper's per-contact energies of body k at contact v (sections 4.1 and 5.1): with J_i the
+/// impulses exchanged with the other body of contact v, K all of body k's impulses, both cast on
+/// k's own normal at v: translational J_i (K/2 + p_v)/m, rotational d_v J_i (dL/2 + L)/I.
+struct ContactEnergy {
+  double translational = 0;
+  double rotational = 0;
+  double pair_impulse = 0;  ///< J_i, the impulses exchanged with the other body, cast on n_v
+};
+ContactEnergy contact_energy(const many::Scene& scene, const Eigen::VectorXd& F, std::size_t body,
+                             std::size_t contact);
 
 }  // namespace impulse::derivations

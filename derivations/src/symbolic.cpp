@@ -202,30 +202,6 @@ std::size_t depth(const ex& e) {
   return deepest + 1;
 }
 
-// A key that orders an expression's operands the same way in every run. GiNaC orders the
-// terms of a sum by hash values that may differ between processes; floating-point sums in
-// different orders differ in their last bits, and a report must not change with the run.
-std::string canonical(const ex& e) {
-  if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
-    std::vector<std::string> parts;
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-      parts.push_back(canonical(e.op(i)));
-    }
-    std::sort(parts.begin(), parts.end());
-    std::string key = is_a<GiNaC::add>(e) ? "+(" : "*(";
-    for (const auto& part : parts) {
-      key += part + ",";
-    }
-    return key + ")";
-  }
-  if (is_a<GiNaC::power>(e)) {
-    return "^(" + canonical(e.op(0)) + "," + canonical(e.op(1)) + ")";
-  }
-  std::ostringstream out;
-  out << e;
-  return out.str();
-}
-
 void emit(const ex& e, const std::vector<ex>& symbols,
           std::vector<Compiled::Instruction>& program) {
   using Op = Compiled::Op;
@@ -287,6 +263,30 @@ void emit(const ex& e, const std::vector<ex>& symbols,
 }
 
 }  // namespace
+
+// A key that orders an expression's operands the same way in every run. GiNaC orders the
+// terms of a sum by hash values that may differ between processes; floating-point sums in
+// different orders differ in their last bits, and a report must not change with the run.
+std::string canonical(const ex& e) {
+  if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
+    std::vector<std::string> parts;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      parts.push_back(canonical(e.op(i)));
+    }
+    std::sort(parts.begin(), parts.end());
+    std::string key = is_a<GiNaC::add>(e) ? "+(" : "*(";
+    for (const auto& part : parts) {
+      key += part + ",";
+    }
+    return key + ")";
+  }
+  if (is_a<GiNaC::power>(e)) {
+    return "^(" + canonical(e.op(0)) + "," + canonical(e.op(1)) + ")";
+  }
+  std::ostringstream out;
+  out << e;
+  return out.str();
+}
 
 Compiled compile(const ex& e, const std::vector<ex>& symbols) {
   if (depth(e) > 2000) {

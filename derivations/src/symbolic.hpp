@@ -81,6 +81,10 @@ class Compiled {
   mutable std::vector<double> stack_;  // sized by compile() to the deepest the program goes
 };
 
+/// A key that orders an expression's operands the same way in every run (GiNaC's own order of a
+/// sum's terms follows hash values that differ between processes): compile in this order.
+[[nodiscard]] std::string canonical(const ex& e);
+
 /// Compiles @p e; throws std::invalid_argument on anything but numbers, π, the given symbols,
 /// sums, products, powers and the functions sin, cos, tan, exp, log and abs.
 [[nodiscard]] Compiled compile(const ex& e, const std::vector<ex>& symbols);

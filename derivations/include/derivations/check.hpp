@@ -14,8 +14,9 @@
 /// @brief The checker of the paper *Collision handling* (`impulselab check`).
 ///
 /// Each numbered equation, each step of a derivation and each factual claim of the prose is a
-/// Check: data (id, section, label, kind, the statement as the paper prints it) and a function
-/// that evaluates the statement against the definitions it came from, by as many methods as fit.
+/// check of a paper file (derivations/paper/sectionN.md, a derivation file with checks): its
+/// statement as printed, the evidence in our own words and the models it is tested on. The same
+/// engine that checks a student's derivation (derivation.hpp) decides it.
 namespace impulse::derivations {
 
 /// @brief What a check is about.
@@ -67,31 +68,20 @@ struct Outcome {
   std::string note;                          ///< assumptions, reading of garbled print, figures
 };
 
-/// @brief The run's settings as a check sees them.
-struct Context {
-  std::size_t samples = 10000;  ///< random samples per numeric method
-  std::uint64_t seed = 1;       ///< this check's seed (derived from the run's seed and the id)
-  /// @brief A share of the samples for a costlier method: samples / divisor, at least 1.
-  /// @param divisor how many times costlier one sample is
-  /// @return the number of samples to draw
-  [[nodiscard]] std::size_t share(std::size_t divisor) const {
-    return samples / divisor > 0 ? samples / divisor : 1;
-  }
-};
-
-/// @brief One check: data plus the function that evaluates it.
+/// @brief One check of the paper, as its file states it.
 struct Check {
-  std::string id;                                   ///< stable and unique, e.g. "eq-1.1"
-  std::string section;                              ///< the paper's (sub)section, e.g. "1.1"
-  std::optional<std::string> equation;              ///< "(1.1)", or nothing for steps and claims
-  Kind kind = Kind::equation;                       ///< equation, step or claim
-  std::string statement;                            ///< the statement as printed, LaTeX
-  std::function<Outcome(const Context&)> evaluate;  ///< runs the methods
+  std::string id;                       ///< stable and unique, e.g. "eq-1.1"
+  std::string section;                  ///< the paper's (sub)section, e.g. "1.1"
+  std::optional<std::string> equation;  ///< "(1.1)", or nothing for steps and claims
+  Kind kind = Kind::equation;           ///< equation, step or claim
+  std::string statement;  ///< the statement as the file writes it (the text the engine reads)
+  std::string file;       ///< the paper file it is in ("section1.md")
+  std::size_t line = 0;   ///< the line of its statement in that file
 };
 
 /// @brief A check with its outcome and how long it took.
 struct Result {
-  Check check;           ///< what was checked (its evaluate function is not needed any more)
+  Check check;           ///< what was checked
   Outcome outcome;       ///< what was found
   double seconds = 0.0;  ///< wall time of the evaluation
 };
@@ -119,21 +109,20 @@ struct Report {
   double seconds = 0.0;         ///< wall time of the run
 };
 
-/// @brief Every check of every section, in the paper's order.
-/// @return the checks
-[[nodiscard]] std::vector<Check> all_checks();
+/// @brief A file of the paper: its name and its text (derivations/paper/sectionN.md).
+struct PaperFile {
+  std::string name;  ///< "section1.md"
+  std::string text;  ///< its contents
+};
 
-/// @brief The checks of sections 1 to 5, one list each (what all_checks() concatenates).
-/// @return the section's checks
-[[nodiscard]] std::vector<Check> section1_checks();
-/// @copydoc section1_checks
-[[nodiscard]] std::vector<Check> section2_checks();
-/// @copydoc section1_checks
-[[nodiscard]] std::vector<Check> section3_checks();
-/// @copydoc section1_checks
-[[nodiscard]] std::vector<Check> section4_checks();
-/// @copydoc section1_checks
-[[nodiscard]] std::vector<Check> section5_checks();
+/// @brief The paper's files as this program was built with them (derivations/paper/).
+/// @return the files, in the paper's order
+[[nodiscard]] const std::vector<PaperFile>& paper_files();
+
+/// @brief Every check of the paper's files, in the paper's order, without evaluating them.
+/// @return the checks
+/// @throws DerivationError (derivation.hpp) when a file cannot be read
+[[nodiscard]] std::vector<Check> all_checks();
 
 /// @brief Whether @p section is @p filter or a subsection of it ("4.4" is in "4", not in "4.1").
 /// @param section a check's section
@@ -148,16 +137,21 @@ struct Report {
 /// @return the check's seed
 [[nodiscard]] std::uint64_t check_seed(std::uint64_t run_seed, std::string_view id);
 
-/// @brief Evaluates one check; an exception escaping its function becomes a `failed` outcome.
-/// @param check the check
-/// @param context samples and the check's seed
-/// @return the outcome
-[[nodiscard]] Outcome evaluate(const Check& check, const Context& context);
-
-/// @brief Runs the selected checks.
+/// @brief Runs the selected checks of the paper's files (`impulselab check`).
 /// @param options section filter, samples, seed
 /// @return the report
+/// @throws DerivationError when a file cannot be read (a malformed file is a defect of the build)
 [[nodiscard]] Report run(const Options& options);
+
+/// @brief Runs the selected checks of the given files: the same engine as run(), on other files
+/// (the tests feed it the paper's files with a change).
+/// @param files derivation files with checks
+/// @param options section filter, samples, seed
+/// @param only when not empty, the one check to run (by id)
+/// @return the report
+/// @throws DerivationError with the file's place when a file cannot be read
+[[nodiscard]] Report run(const std::vector<PaperFile>& files, const Options& options,
+                         std::string_view only = {});
 
 /// @brief The report formats.
 enum class Format {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <functional>
 #include <set>
 
 namespace impulse::derivations::file {
@@ -22,8 +23,8 @@ bool is_digit(char c) {
 }  // namespace
 
 std::string SymbolName::latex() const {
-  std::string out = delta ? "\\Delta " : "";
-  out += base;
+  std::string out = delta ? "\\Delta " : differential ? "\\mathrm{d}" : "";
+  out += arrow ? "\\vec{" + base + "}" : base;
   if (!subscript.empty()) {
     out += subscript.size() == 1 ? "_" + subscript : "_{" + subscript + "}";
   }
@@ -32,7 +33,10 @@ std::string SymbolName::latex() const {
 }
 
 std::string SymbolName::plain() const {
-  std::string out = delta ? "Delta " : "";
+  std::string out = delta ? "Delta " : differential ? "d" : "";
+  if (arrow) {
+    out += "vec ";
+  }
   const auto strip = [](const std::string& s) {
     std::string r;
     for (const char c : s) {
@@ -409,18 +413,112 @@ class Parser {
     if (is_char(peek(), '+') || is_char(peek(), '-')) {
       sign = take().text[0];
     }
-    sum.children.push_back(term(depth + 1));
+    sum.children.push_back(sum_term(depth + 1));
     sum.ops += sign;
-    while (is_char(peek(), '+') || is_char(peek(), '-')) {
-      sign = take().text[0];
-      sum.children.push_back(term(depth + 1));
+    while (is_char(peek(), '+') || is_char(peek(), '-') || is_command(peek(), "\\oplus")) {
+      const Token op = take();
+      sign = op.kind == Tok::character ? op.text[0] : '+';  // the paper's ⊕ adds padded blocks
+      sum.children.push_back(sum_term(depth + 1));
       sum.ops += sign;
+    }
+    for (std::size_t i = 0; i < sum.children.size(); ++i) {
+      if (sum.children[i].kind == NodeKind::dots &&
+          (i == 0 || i + 1 == sum.children.size() || sum.ops[i] != '+')) {
+        throw error_at(sum.children[i].offset,
+                       "expected \\cdots between two terms added to each other (A_1 + \\cdots + "
+                       "A_M)");
+      }
     }
     if (sum.children.size() == 1 && sum.ops[0] == '+') {
       return std::move(sum.children[0]);
     }
     sum.end = last_end_;
     return sum;
+  }
+
+  // A term of a sum, or \cdots standing for the terms between its neighbours.
+  Node sum_term(std::size_t depth) {
+    const Token& t = peek();
+    if (is_command(t, "\\cdots") || is_command(t, "\\dots") || is_command(t, "\\ldots") ||
+        is_command(t, "\\dotsb")) {
+      const Token dots = take();
+      return make(NodeKind::dots, dots.offset);
+    }
+    return term(depth);
+  }
+
+  static bool big_operator(const Token& t) {
+    return is_command(t, "\\sum") || is_command(t, "\\int");
+  }
+
+  // \sum_i and \int_a^b take the rest of the term as their argument (accepted beyond the
+  // contract, for the paper's files).
+  Node big(std::size_t depth) {
+    const Token op = take();
+    if (is_command(op, "\\sum")) {
+      if (!is_char(peek_raw(), '_')) {
+        throw error(peek(),
+                    "expected \\sum_i: a subscript naming the index (its range is "
+                    "declared with index:)");
+      }
+      take();
+      const Token& at = peek_raw();
+      std::string index;
+      if (at.kind == Tok::letter) {
+        index = take().text;
+      } else if (is_char(at, '{')) {
+        const Token open = take();
+        if (peek().kind != Tok::letter) {
+          throw error(peek(), "expected one letter as the index of \\sum");
+        }
+        index = take().text;
+        expect_char('}', open, "index of \\sum");
+      } else {
+        throw error(at, "expected one letter as the index of \\sum, found " + describe(at));
+      }
+      if (is_char(peek(), '^')) {
+        throw error(peek(), "expected \\sum_" + index + " without an upper limit: the range of " +
+                                index + " is declared with index:");
+      }
+      if (!starts_atom(peek()) && !big_operator(peek())) {
+        throw error(peek(), "expected what \\sum_" + index + " adds up after it");
+      }
+      Node n = make(NodeKind::sum_over, op.offset);
+      n.text = index;
+      n.children.push_back(term(depth + 1));
+      n.end = last_end_;
+      return n;
+    }
+    Node n = make(NodeKind::integral, op.offset);
+    std::optional<Node> lower;
+    std::optional<Node> upper;
+    for (int k = 0; k < 2; ++k) {
+      if (is_char(peek(), '_') && !lower) {
+        const Token mark = take();
+        lower = script(depth + 1, mark);
+      } else if (is_char(peek(), '^') && !upper) {
+        const Token mark = take();
+        upper = script(depth + 1, mark);
+      }
+    }
+    if (!starts_atom(peek()) && !big_operator(peek())) {
+      throw error(peek(), "expected the integrand after \\int (ending in its differential, dt)");
+    }
+    n.children.push_back(term(depth + 1));
+    if (lower) {
+      n.children.push_back(std::move(*lower));
+      n.ops += 'l';
+    }
+    if (upper) {
+      n.children.push_back(std::move(*upper));
+      n.ops += 'u';
+    }
+    n.end = last_end_;
+    return n;
+  }
+
+  ReadError error_at(std::size_t offset, const std::string& message) const {
+    return source_.error(offset, message);
   }
 
   bool explicit_product(const Token& t) const {
@@ -433,10 +531,18 @@ class Parser {
     enter(depth, peek());
     const std::size_t start = peek().offset;
     Node product = make(NodeKind::product, start);
+    if (big_operator(peek())) {
+      return big(depth + 1);
+    }
     product.children.push_back(factor(depth + 1));
     product.ops += ' ';
     while (true) {
       const Token& next = peek();
+      if (big_operator(next)) {
+        product.children.push_back(big(depth + 1));
+        product.ops += ' ';
+        break;  // a sum or an integral takes the rest of the term
+      }
       if (explicit_product(next)) {
         const Token op = take();
         const char code = is_command(op, "\\cdot")                        ? '.'
@@ -445,6 +551,11 @@ class Parser {
                                                                           : '*';
         if (peek().kind == Tok::end || is_char(peek(), '=')) {
           throw error(peek(), "expected a factor after " + describe(op));
+        }
+        if (big_operator(peek())) {
+          product.children.push_back(big(depth + 1));
+          product.ops += code;
+          break;
         }
         product.children.push_back(factor(depth + 1));
         product.ops += code;
@@ -495,9 +606,62 @@ class Parser {
       if (is_char(peek(), '\'')) {
         throw error(peek(), "expected primes on a symbol before its exponent (p'^2)");
       }
-      return power;
+      base = std::move(power);
+    }
+    while (bar_ahead()) {
+      base = bar(depth, std::move(base));
     }
     return base;
+  }
+
+  // An evaluation bar X\Big|_a^b (or X|_{x=a}) after a factor: accepted beyond the contract.
+  bool bar_ahead() {
+    skip_spacing();
+    std::size_t i = position_;
+    if (tokens_[i].kind == Tok::command && sizes.contains(tokens_[i].text)) {
+      ++i;
+    } else if (abs_depth_ != 0) {
+      return false;
+    }
+    return is_char(tokens_[i], '|') && is_char(tokens_[i + 1], '_');
+  }
+
+  Node bar(std::size_t depth, Node base) {
+    if (peek_raw().kind == Tok::command) {
+      take();  // \Big
+    }
+    take();  // |
+    const Token underscore = take();
+    Node n = make(NodeKind::bar, base.offset);
+    n.children.push_back(std::move(base));
+    std::optional<Node> variable;
+    if (is_char(peek(), '{')) {
+      const Token open = take();
+      Node first = expression(depth + 1);
+      if (is_char(peek(), '=')) {
+        take();
+        if (first.kind != NodeKind::symbol) {
+          throw error_at(first.offset, "expected a symbol before '=' in the bar's subscript");
+        }
+        variable = std::move(first);
+        first = expression(depth + 1);
+      }
+      expect_char('}', open, "bar's subscript");
+      n.children.push_back(std::move(first));
+    } else {
+      n.children.push_back(script(depth + 1, underscore));
+    }
+    if (is_char(peek(), '^')) {
+      const Token caret = take();
+      n.children.push_back(script(depth + 1, caret));
+      n.ops += 'u';
+    }
+    if (variable) {
+      n.children.push_back(std::move(*variable));
+      n.ops += 'v';
+    }
+    n.end = last_end_;
+    return n;
   }
 
   // The argument of ^: a braced group, or one character or command.
@@ -841,10 +1005,12 @@ class Parser {
     if (name == "\\pm" || name == "\\mp") {
       throw error(t, "expected + or - (" + name + " stands for two equations: write each)");
     }
-    if (name == "\\sum" || name == "\\int" || name == "\\prod" || name == "\\iint" ||
-        name == "\\oint") {
+    if (name == "\\sum" || name == "\\int") {
+      return big(depth);
+    }
+    if (name == "\\prod" || name == "\\iint" || name == "\\oint") {
       throw error(t, "expected an expression without " + name +
-                         " (sums and integrals are not read by this checker yet)");
+                         " (products and multiple integrals are not read by this checker)");
     }
     if (name == "\\infty") {
       throw error(t, "expected a number or a symbol, found \\infty");
@@ -980,9 +1146,15 @@ class Parser {
       Node inner = argument(depth + 1, first);  // \vec{p}, \vec p, \vec{F dt}
       if (inner.kind == NodeKind::symbol) {
         inner.offset = first.offset;
+        inner.symbol.accent = true;
         return decorate(depth, std::move(inner));
       }
-      return inner;  // an accent over an expression is a group
+      // An accent over an expression is a group; over a product (\vec{F dt}) its first symbol
+      // carries the accent, which an `arrow:` letter needs (the paper's \vec{Fdt}).
+      if (inner.kind == NodeKind::product && inner.children[0].kind == NodeKind::symbol) {
+        inner.children[0].symbol.accent = true;
+      }
+      return inner;
     } else if (modifiers.contains(first.text)) {
       take();
       Node inner = argument(depth + 1, first);
@@ -1169,6 +1341,7 @@ class Parser {
 struct RowTokens {
   std::vector<Token> tokens;
   std::optional<std::string> tag;
+  std::optional<std::string> label;
   std::size_t offset = 0;
 };
 
@@ -1339,6 +1512,19 @@ std::vector<RowTokens> split_rows(const Source& source, const std::vector<Token>
       while (tokens[close].kind != Tok::end && !is_char(tokens[close], '}')) {
         ++close;
       }
+      if (is_char(tokens[i + 1], '{') && tokens[close].kind != Tok::end) {
+        std::string label(source.text().substr(tokens[i + 1].offset + 1,
+                                               tokens[close].offset - tokens[i + 1].offset - 1));
+        while (!label.empty() && label.back() == ' ') {
+          label.pop_back();
+        }
+        while (!label.empty() && label.front() == ' ') {
+          label.erase(label.begin());
+        }
+        if (!label.empty()) {
+          rows.back().label = label;
+        }
+      }
       i = close;
       continue;
     }
@@ -1447,6 +1633,9 @@ std::vector<Row> read_block(const Source& source, std::size_t content_offset,
         }
         merged.back().tag = row.tag;
       }
+      if (row.label) {
+        merged.back().label = row.label;
+      }
       continue;
     }
     if (!has_equals) {
@@ -1460,6 +1649,7 @@ std::vector<Row> read_block(const Source& source, std::size_t content_offset,
   for (RowTokens& row_tokens : merged) {
     Row row;
     row.tag = row_tokens.tag;
+    row.label = row_tokens.label;
     row.offset = row_tokens.offset;
     std::vector<std::vector<Token>> sides(1);
     const std::vector<bool> top = top_level(row_tokens.tokens);
@@ -1497,6 +1687,245 @@ std::vector<Row> read_block(const Source& source, std::size_t content_offset,
       row.sides.push_back(parse_side(source, std::move(sides[k]), row.offset, limits));
     }
     rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+namespace {
+
+bool is_relation_token(const Token& t) {
+  return is_char(t, '=') || is_char(t, '<') || is_char(t, '>') ||
+         (t.kind == Tok::command &&
+          (t.text == "\\le" || t.text == "\\leq" || t.text == "\\leqslant" || t.text == "\\ge" ||
+           t.text == "\\geq" || t.text == "\\geqslant" || t.text == "\\neq" || t.text == "\\ne" ||
+           t.text == "\\lt" || t.text == "\\gt" || t.text == "\\in"));
+}
+
+Relation::Kind relation_kind(const Token& t) {
+  using K = Relation::Kind;
+  if (is_char(t, '=')) {
+    return K::equal;
+  }
+  if (is_char(t, '<') || is_command(t, "\\lt")) {
+    return K::less;
+  }
+  if (is_char(t, '>') || is_command(t, "\\gt")) {
+    return K::greater;
+  }
+  if (is_command(t, "\\neq") || is_command(t, "\\ne")) {
+    return K::not_equal;
+  }
+  if (is_command(t, "\\in")) {
+    return K::in_range;
+  }
+  if (t.text.starts_with("\\le")) {
+    return K::less_equal;
+  }
+  return K::greater_equal;
+}
+
+// Depth of every token, counting braces, parentheses, brackets, \{ \} and \left … \right.
+std::vector<int> depths(const std::vector<Token>& tokens) {
+  std::vector<int> d(tokens.size(), 0);
+  int depth = 0;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const Token& t = tokens[i];
+    const bool close = is_char(t, '}') || is_char(t, ')') || is_char(t, ']') ||
+                       is_command(t, "\\}") || is_command(t, "\\right");
+    if (close) {
+      --depth;
+    }
+    d[i] = depth;
+    if (is_char(t, '{') || is_char(t, '(') || is_char(t, '[') || is_command(t, "\\{") ||
+        is_command(t, "\\left")) {
+      ++depth;
+    }
+  }
+  return d;
+}
+
+std::vector<std::vector<Token>> split_top(const std::vector<Token>& tokens,
+                                          const std::function<bool(const Token&)>& separator,
+                                          std::vector<Token>* separators = nullptr) {
+  std::vector<std::vector<Token>> parts(1);
+  const std::vector<int> d = depths(tokens);
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    if (d[i] == 0 && separator(tokens[i])) {
+      if (separators != nullptr) {
+        separators->push_back(tokens[i]);
+      }
+      parts.emplace_back();
+      continue;
+    }
+    parts.back().push_back(tokens[i]);
+  }
+  return parts;
+}
+
+bool blank_tokens(const std::vector<Token>& tokens) {
+  return std::all_of(tokens.begin(), tokens.end(),
+                     [](const Token& t) { return t.kind == Tok::spacing; });
+}
+
+std::size_t first_offset(const std::vector<Token>& tokens, std::size_t fallback) {
+  for (const Token& t : tokens) {
+    if (t.kind != Tok::spacing) {
+      return t.offset;
+    }
+  }
+  return fallback;
+}
+
+std::vector<Token> trimmed_tokens(std::vector<Token> tokens) {
+  while (!tokens.empty() && tokens.back().kind == Tok::spacing) {
+    tokens.pop_back();
+  }
+  std::size_t i = 0;
+  while (i < tokens.size() && tokens[i].kind == Tok::spacing) {
+    ++i;
+  }
+  tokens.erase(tokens.begin(), tokens.begin() + static_cast<std::ptrdiff_t>(i));
+  return tokens;
+}
+
+// The right side of \in: (a, b), [a, b], (a, \infty) or \{a, b, …\}.
+void read_membership(const Source& source, std::vector<Token> tokens, std::size_t at, Relation& r,
+                     const Limits& limits) {
+  tokens = trimmed_tokens(std::move(tokens));
+  if (tokens.size() >= 2 && is_command(tokens.front(), "\\left")) {
+    tokens.erase(tokens.begin());
+  }
+  if (tokens.size() >= 2 && is_command(tokens[tokens.size() - 2], "\\right")) {
+    tokens.erase(tokens.end() - 2);
+  }
+  if (tokens.size() < 3) {
+    throw source.error(at, "expected an interval (a, b) or a set \\{a, b\\} after \\in");
+  }
+  const Token open = tokens.front();
+  const Token close = tokens.back();
+  std::vector<Token> inside(tokens.begin() + 1, tokens.end() - 1);
+  std::vector<std::vector<Token>> parts =
+      split_top(inside, [](const Token& t) { return is_char(t, ','); });
+  const auto side = [&](std::vector<Token> part) {
+    if (blank_tokens(part)) {
+      throw source.error(open.offset, "expected a value between the commas after \\in");
+    }
+    return parse_side(source, std::move(part), open.offset, limits);
+  };
+  if (is_command(open, "\\{")) {
+    if (!is_command(close, "\\}")) {
+      throw source.error(close.offset, "expected \\} to close the set after \\in");
+    }
+    r.kind = Relation::Kind::in_set;
+    for (auto& part : parts) {
+      r.members.push_back(side(std::move(part)));
+    }
+    return;
+  }
+  if (!(is_char(open, '(') || is_char(open, '[')) ||
+      !(is_char(close, ')') || is_char(close, ']')) || parts.size() != 2) {
+    throw source.error(open.offset,
+                       "expected an interval (a, b), [a, b] or (a, \\infty) after \\in");
+  }
+  r.kind = Relation::Kind::in_range;
+  r.low_closed = is_char(open, '[');
+  r.high_closed = is_char(close, ']');
+  const auto infinite = [](const std::vector<Token>& part, bool negative) {
+    std::vector<Token> t = trimmed_tokens(part);
+    if (negative) {
+      return t.size() == 2 && is_char(t[0], '-') && is_command(t[1], "\\infty");
+    }
+    return (t.size() == 1 && is_command(t[0], "\\infty")) ||
+           (t.size() == 2 && is_char(t[0], '+') && is_command(t[1], "\\infty"));
+  };
+  if (!infinite(parts[0], true)) {
+    r.low = side(std::move(parts[0]));
+  }
+  if (!infinite(parts[1], false)) {
+    r.high = side(std::move(parts[1]));
+  }
+}
+
+std::vector<Relation> read_relations(const Source& source, const std::vector<Token>& tokens,
+                                     std::size_t fallback, const Limits& limits) {
+  std::vector<Relation> found;
+  for (std::vector<Token>& chain :
+       split_top(tokens, [](const Token& t) { return is_char(t, ','); })) {
+    std::vector<Token> marks;
+    std::vector<std::vector<Token>> sides = split_top(chain, is_relation_token, &marks);
+    const std::size_t at = first_offset(chain, fallback);
+    if (marks.empty()) {
+      throw source.error(at, "expected a relation (=, \\neq, <, >, \\leq, \\geq, \\in)");
+    }
+    for (std::size_t k = 0; k < marks.size(); ++k) {
+      if (blank_tokens(sides[k]) || blank_tokens(sides[k + 1])) {
+        throw source.error(marks[k].offset,
+                           "expected an expression on both sides of " + describe(marks[k]));
+      }
+      Relation r;
+      r.offset = marks[k].offset;
+      r.kind = relation_kind(marks[k]);
+      r.left = parse_side(source, sides[k], at, limits);
+      if (r.kind == Relation::Kind::in_range) {
+        if (k + 1 != marks.size()) {
+          throw source.error(marks[k + 1].offset,
+                             "expected nothing after the set or interval of "
+                             "\\in");
+        }
+        read_membership(source, sides[k + 1], marks[k].offset, r, limits);
+      } else {
+        r.right = parse_side(source, sides[k + 1], marks[k].offset, limits);
+      }
+      found.push_back(std::move(r));
+    }
+  }
+  return found;
+}
+
+}  // namespace
+
+std::vector<ClaimRow> read_claim_block(const Source& source, std::size_t content_offset,
+                                       std::string_view content, const Limits& limits) {
+  std::vector<Token> tokens = Tokenizer(source, content_offset, content).run();
+  check_braces(source, tokens);
+  tokens = strip_environments(source, std::move(tokens));
+  std::vector<ClaimRow> rows;
+  for (RowTokens& row_tokens : split_rows(source, tokens)) {
+    if (row_tokens.tag) {
+      throw source.error(row_tokens.offset,
+                         "expected a claim without \\tag (claims are "
+                         "unnumbered)");
+    }
+    ClaimRow row;
+    row.offset = row_tokens.offset;
+    std::vector<Token> body = trimmed_tokens(row_tokens.tokens);
+    row.latex = join(body);
+    if (!body.empty() && is_command(body.front(), "\\exists")) {
+      row.exists = true;
+      body.erase(body.begin());
+    }
+    std::vector<Token> arrows;
+    std::vector<std::vector<Token>> parts = split_top(
+        body,
+        [](const Token& t) {
+          return is_command(t, "\\Rightarrow") || is_command(t, "\\implies") ||
+                 is_command(t, "\\Longrightarrow");
+        },
+        &arrows);
+    if (parts.size() > 2) {
+      throw source.error(arrows[1].offset, "expected one \\Rightarrow in a claim's row");
+    }
+    if (parts.size() == 2) {
+      if (row.exists) {
+        throw source.error(row.offset, "expected \\exists or \\Rightarrow, not both");
+      }
+      row.hypotheses = read_relations(source, parts[0], row.offset, limits);
+    }
+    row.conclusions = read_relations(source, parts.back(), row.offset, limits);
+    rows.push_back(std::move(row));
+  }
+  if (rows.empty()) {
+    throw source.error(content_offset, "expected a claim in the display block, found nothing");
   }
   return rows;
 }

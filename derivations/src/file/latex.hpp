@@ -21,6 +21,13 @@ struct SymbolName {
   std::string subscript;  ///< "", "1", "vn", "\alpha"
   int primes = 0;         ///< p' has one
   bool delta = false;     ///< \Delta X: the change of X, one symbol
+  /// Written under an accent (\vec p, \vec{F_i}): the same symbol as without it, unless the
+  /// file declares the letter with `arrow:` (meaning.hpp decides; the tree only records it).
+  bool accent = false;
+  /// Stands for the vector of an `arrow:` letter (\vec F, distinct from the number F).
+  bool arrow = false;
+  /// The differential of a symbol declared with `differentials:` (\mathrm{d}S_v, dL).
+  bool differential = false;
 
   /// The canonical LaTeX of the symbol ("p_{1}'", "\Delta E_{o}", "\omega"), the key under which
   /// the file's symbols are known.
@@ -29,7 +36,11 @@ struct SymbolName {
   [[nodiscard]] std::string plain() const;
   /// The same name without its primes.
   [[nodiscard]] SymbolName unprimed() const;
-  bool operator==(const SymbolName&) const = default;
+  /// The same symbol: the names agree in all but the accent as written.
+  bool operator==(const SymbolName& other) const {
+    return base == other.base && subscript == other.subscript && primes == other.primes &&
+           delta == other.delta && arrow == other.arrow && differential == other.differential;
+  }
 };
 
 /// The kinds of node of an expression tree.
@@ -48,6 +59,13 @@ enum class NodeKind {
   abs,       ///< |children[0]|
   det,       ///< \det(children[0], children[1])
   vector,    ///< [children[0], children[1]]
+  // Accepted beyond the contract (the paper's files):
+  sum_over,  ///< \sum_{text} children[0]: the index `text` runs over its declared range
+  integral,  ///< \int: children[0] the integrand (a 1-form: it holds its differential), then
+             ///< the lower and upper limits when written (`ops`: "l", "u", "lu" or "")
+  bar,       ///< children[0]\Big|_{children[1]}^{children[2]}; `text`: the variable ("t", or
+             ///< the symbol of a lower limit written x = a, whose value is then children[1])
+  dots,      ///< \cdots between the terms of a sum: the terms whose subscripts lie between
 };
 
 /// A node of an expression tree, with the span of the file it was read from.
@@ -73,7 +91,10 @@ struct Row {
   std::vector<Side> sides;  ///< two or more; when `continues`, the first is the empty side
   bool continues = false;   ///< the row began with `=`: its left side is the row before's right
   std::optional<std::string> tag;  ///< `\tag{k}`: "k"
-  std::size_t offset = 0;          ///< where the row begins in the file
+  /// `\label{k}`: "k" (accepted beyond the contract: it names the row for `from:` as a tag does,
+  /// without a number in print)
+  std::optional<std::string> label;
+  std::size_t offset = 0;  ///< where the row begins in the file
 };
 
 /// Reads the rows of a display block. Throws ReadError with the place of whatever is not
@@ -84,6 +105,39 @@ struct Row {
 /// @param limits nesting depth, number length, exponent size
 [[nodiscard]] std::vector<Row> read_block(const Source& source, std::size_t content_offset,
                                           std::string_view content, const Limits& limits);
+
+/// A relation of a claim (accepted beyond the contract, for the paper's files): x = y, x \neq y,
+/// x < y, x > y, x \leq y, x \geq y, x \in (a, b) (brackets closed, \infty open) or
+/// x \in \{a, b, …\}.
+struct Relation {
+  enum class Kind { equal, not_equal, less, greater, less_equal, greater_equal, in_range, in_set };
+  Kind kind = Kind::equal;
+  Side left;
+  Side right;                 ///< the other side (not for in_range, in_set)
+  std::vector<Side> members;  ///< in_set: the members; in_range: the finite ends (see below)
+  std::optional<Side> low;    ///< in_range: the lower end, or none for -\infty
+  std::optional<Side> high;   ///< in_range: the upper end, or none for \infty
+  bool low_closed = false;    ///< in_range: [a, …
+  bool high_closed = false;   ///< in_range: …, b]
+  std::size_t offset = 0;
+};
+
+/// One row of a claim: hypotheses ⇒ conclusions (each a list separated by commas; no
+/// hypotheses without \Rightarrow), or \exists conclusions (some case satisfies them).
+struct ClaimRow {
+  bool exists = false;
+  std::vector<Relation> hypotheses;
+  std::vector<Relation> conclusions;
+  std::size_t offset = 0;
+  std::string latex;  ///< the row as written
+};
+
+/// Reads the rows of a claim's display block. Throws ReadError with the place of whatever is not
+/// understood.
+[[nodiscard]] std::vector<ClaimRow> read_claim_block(const Source& source,
+                                                     std::size_t content_offset,
+                                                     std::string_view content,
+                                                     const Limits& limits);
 
 /// Reads one expression (the LaTeX of a directive: a `let:` right side), spanning the whole
 /// of @p text.

@@ -10,13 +10,31 @@ namespace impulse::derivations::file {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, DirectiveKind>, 6> directive_words{{
+constexpr std::array<std::pair<std::string_view, DirectiveKind>, 24> directive_words{{
     {"assume", DirectiveKind::assume},
     {"let", DirectiveKind::let},
     {"given", DirectiveKind::given},
     {"from", DirectiveKind::from},
     {"vector", DirectiveKind::vector},
     {"units", DirectiveKind::units},
+    {"also", DirectiveKind::also},
+    {"section", DirectiveKind::section},
+    {"check", DirectiveKind::check},
+    {"claim", DirectiveKind::claim},
+    {"correction", DirectiveKind::correction},
+    {"evidence", DirectiveKind::evidence},
+    {"test", DirectiveKind::test},
+    {"explanation", DirectiveKind::explanation},
+    {"index", DirectiveKind::index},
+    {"arrow", DirectiveKind::arrow},
+    {"differentials", DirectiveKind::differentials},
+    {"forces", DirectiveKind::forces},
+    {"matrix", DirectiveKind::matrix},
+    {"column", DirectiveKind::column},
+    {"model", DirectiveKind::model},
+    {"ode", DirectiveKind::ode},
+    {"quadrature", DirectiveKind::quadrature},
+    {"search", DirectiveKind::search},
 }};
 
 bool blank(char c) {

@@ -13,8 +13,35 @@
 
 namespace impulse::derivations::file {
 
-/// The directive words of the format (spec/derivation-format.md).
-enum class DirectiveKind { assume, let, given, from, vector, units };
+/// The directive words of the format (spec/derivation-format.md), then those accepted beyond it
+/// for the paper's files (docs/pages/derivations.md).
+enum class DirectiveKind {
+  assume,
+  let,
+  given,
+  from,
+  vector,
+  units,
+  // beyond the contract
+  also,
+  section,
+  check,
+  claim,
+  correction,
+  evidence,
+  test,
+  explanation,
+  index,
+  arrow,
+  differentials,
+  forces,
+  matrix,
+  column,
+  model,
+  ode,
+  quadrature,
+  search,
+};
 
 /// A directive line: `word: content`.
 struct Directive {

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "file/meaning.hpp"
 
+#include "file/time.hpp"
+
 #include <algorithm>
 #include <functional>
+#include <set>
 #include <sstream>
 
 namespace impulse::derivations::file {
@@ -151,8 +154,16 @@ const SymbolInfo* Symbols::info(const ex& symbol) const {
   return found == infos_.end() ? nullptr : &found->second;
 }
 
+SymbolName Symbols::resolve(SymbolName name) const {
+  if (name.accent && arrows_.contains(name.base) && !name.delta) {
+    name.arrow = true;
+  }
+  return name;
+}
+
 bool Symbols::is_vector(const SymbolName& name) const {
-  return vectors_.contains(name.unprimed().latex());
+  const std::string key = name.unprimed().latex();
+  return vectors_.contains(key) || (name.arrow && !blocks_.contains(key));
 }
 
 std::optional<std::pair<SymbolName, int>> Symbols::component_of(const SymbolName& name) const {
@@ -169,17 +180,137 @@ std::optional<std::pair<SymbolName, int>> Symbols::component_of(const SymbolName
     parent.subscript.pop_back();
   }
   if (!is_vector(parent)) {
-    return std::nullopt;
+    // The components of \vec F are F_x and F_y when F is an `arrow:` letter.
+    SymbolName arrowed = parent;
+    arrowed.arrow = true;
+    if (parent.arrow || !arrows_.contains(parent.base) || !is_vector(arrowed)) {
+      return std::nullopt;
+    }
+    return std::pair{arrowed, last == 'x' ? 0 : 1};
   }
   return std::pair{parent, last == 'x' ? 0 : 1};
 }
 
 void Symbols::declare_vector(const SymbolName& name) {
-  vectors_[name.unprimed().latex()] = true;
+  vectors_[resolve(name).unprimed().latex()] = true;
 }
 
 void Symbols::declare_units(const SymbolName& name, const Dimension& dimension, std::size_t) {
-  units_[name.latex()] = dimension;
+  units_[resolve(name).latex()] = dimension;
+}
+
+void Symbols::declare_force(const SymbolName& name) {
+  const Value v = symbol_value(resolve(name));
+  forces_.push_back(v.x);
+  if (v.vector) {
+    forces_.push_back(v.y);
+  }
+}
+
+std::vector<std::string> Symbols::indices_in(const Node& node) const {
+  std::vector<std::string> found;
+  std::function<void(const Node&, const std::set<std::string>&)> walk =
+      [&](const Node& n, const std::set<std::string>& bound) {
+        if (n.kind == NodeKind::symbol) {
+          const std::string& sub = n.symbol.subscript;
+          const bool plain =
+              sub.size() <= 3 && std::all_of(sub.begin(), sub.end(), [](char c) {
+                return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+              });
+          if (plain) {
+            for (const char c : sub) {
+              const std::string letter(1, c);
+              if (indices_.contains(letter) && !bound.contains(letter) &&
+                  std::find(found.begin(), found.end(), letter) == found.end()) {
+                found.push_back(letter);
+              }
+            }
+          }
+        }
+        if (n.kind == NodeKind::sum_over) {
+          std::set<std::string> inner = bound;
+          inner.insert(n.text);
+          walk(n.children[0], inner);
+          return;
+        }
+        for (const Node& child : n.children) {
+          walk(child, bound);
+        }
+      };
+  walk(node, {});
+  return found;
+}
+
+std::vector<std::string> Symbols::free_indices(const Node& node) const {
+  return indices_in(node);
+}
+
+void Symbols::declare_block(const SymbolName& name, const Side& entry, bool matrix,
+                            std::size_t offset) {
+  Block block{entry, indices_in(entry.expression)};
+  const std::size_t wanted = matrix ? 2 : 1;
+  if (block.indices.size() != wanted) {
+    throw error(entry.offset, std::string("expected the entry of a ") +
+                                  (matrix ? "matrix to hold two indices (row, column)"
+                                          : "column to hold one index (its row)") +
+                                  " declared with index:, found " +
+                                  std::to_string(block.indices.size()));
+  }
+  const std::string key = resolve(name).unprimed().latex();
+  if (vectors_.contains(key)) {
+    throw error(offset, "expected " + key + " to be a vector or a block, not both");
+  }
+  blocks_[key] = std::move(block);
+}
+
+Value Symbols::block_value(const Block& block, std::size_t offset,
+                           const std::function<Value(const Node&)>& eval) const {
+  const std::vector<long>& rows = indices_.at(block.indices[0]);
+  const std::vector<long> one{0};
+  const std::vector<long>& cols = block.indices.size() > 1 ? indices_.at(block.indices[1]) : one;
+  Value v;
+  v.rows = rows.size();
+  v.cols = cols.size();
+  for (const long r : rows) {
+    for (const long c : cols) {
+      Node entry = with_index(block.entry.expression, block.indices[0], r);
+      if (block.indices.size() > 1) {
+        entry = with_index(entry, block.indices[1], c);
+      }
+      const Value e = eval(entry);
+      if (e.vector || e.block()) {
+        throw error(offset, "expected the entries of a block to be numbers");
+      }
+      v.entries.push_back(e.x);
+    }
+  }
+  return v;
+}
+
+Node with_index(const Node& node, const std::string& index, long value) {
+  Node copy = node;
+  if (copy.kind == NodeKind::symbol) {
+    std::string& sub = copy.symbol.subscript;
+    const bool plain =
+        sub.size() <= 3 && std::all_of(sub.begin(), sub.end(), [](char c) {
+          return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+        });
+    if (plain && sub.find(index[0]) != std::string::npos) {
+      std::string out;
+      for (const char c : sub) {
+        out += c == index[0] ? std::to_string(value) : std::string(1, c);
+      }
+      sub = out;
+    }
+    return copy;
+  }
+  if (copy.kind == NodeKind::sum_over && copy.text == index) {
+    return copy;  // the inner sum binds the index again
+  }
+  for (Node& child : copy.children) {
+    child = with_index(child, index, value);
+  }
+  return copy;
 }
 
 namespace {
@@ -201,20 +332,28 @@ void each_symbol(const Node& node, const std::function<void(const Node&)>& visit
 
 }  // namespace
 
-Value Symbols::symbol_value(const SymbolName& name) {
+Value Symbols::symbol_value(const SymbolName& written) {
+  const SymbolName name = resolve(written);
   if (is_vector(name)) {
     return {true, scalar(component_name(name, 0), name, 0),
             scalar(component_name(name, 1), name, 1)};
   }
   if (const auto parent = component_of(name)) {
-    return {false, scalar(name, parent->first, parent->second), 0};
+    // The component's one name: p_x of \vec p (an `arrow:` letter) is \vec{p}_x.
+    return {false,
+            scalar(component_name(parent->first, parent->second), parent->first, parent->second),
+            0};
   }
   return {false, scalar(name), 0};
 }
 
-void Symbols::define(const SymbolName& name, const Side& definition, std::size_t offset) {
+void Symbols::define(const SymbolName& written, const Side& definition, std::size_t offset) {
+  const SymbolName name = resolve(written);
+  if (blocks_.contains(name.unprimed().latex())) {
+    throw error(offset, "expected a symbol, not a block (matrix:, column:), after let:");
+  }
   each_symbol(definition.expression, [&](const Node& n) {
-    const SymbolName& used = n.symbol;
+    const SymbolName used = resolve(n.symbol);
     const auto parent = component_of(used);
     if (used == name || (parent && parent->first == name)) {
       throw error(n.offset, "expected a definition of " + name.latex() + " that does not use " +
@@ -279,13 +418,217 @@ numeric decimal(const std::string& text) {
 }
 
 std::string kind_name(const Value& v) {
+  if (v.block()) {
+    return v.cols > 1 ? "a matrix" : "a column";
+  }
   return v.vector ? "a vector" : "a scalar";
+}
+
+Value negated(Value v) {
+  v.x = -v.x;
+  v.y = -v.y;
+  for (ex& e : v.entries) {
+    e = -e;
+  }
+  return v;
+}
+
+Value scaled_value(const Value& v, const ex& k) {
+  Value r = v;
+  r.x = v.x * k;
+  r.y = v.vector ? v.y * k : ex(0);
+  for (ex& e : r.entries) {
+    e = e * k;
+  }
+  return r;
+}
+
+bool all_digits(const std::string& text) {
+  return !text.empty() &&
+         std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+}  // namespace
+
+std::vector<std::pair<Node, char>> Symbols::expanded_terms(const Node& sum) {
+  std::vector<std::pair<Node, char>> terms;
+  for (std::size_t i = 0; i < sum.children.size(); ++i) {
+    terms.emplace_back(sum.children[i], sum.ops[i]);
+  }
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    if (terms[i].first.kind != NodeKind::dots) {
+      continue;
+    }
+    // A_2 + \cdots + A_M: the terms A_3 … A_{M-1}, M a number or a symbol defined as one.
+    const std::size_t at = terms[i].first.offset;
+    Node& left = terms[i - 1].first;
+    Node& right = terms[i + 1].first;
+    if (left.kind != NodeKind::symbol || right.kind != NodeKind::symbol ||
+        left.symbol.base != right.symbol.base) {
+      throw error(at,
+                  "expected \\cdots between two terms of one name with numbered subscripts "
+                  "(A_2 + \\cdots + A_M)");
+    }
+    const auto number = [&](const std::string& sub) -> std::optional<long> {
+      if (all_digits(sub) && sub.size() < 6) {
+        return std::stol(sub);
+      }
+      if (sub.size() == 1) {
+        const ex v = scalar(SymbolName{sub, "", 0, false}).subs(substitutions_);
+        if (GiNaC::is_a<numeric>(v) && GiNaC::ex_to<numeric>(v).is_integer() &&
+            GiNaC::abs(GiNaC::ex_to<numeric>(v)) < 1000) {
+          return GiNaC::ex_to<numeric>(v).to_long();
+        }
+      }
+      return std::nullopt;
+    };
+    const auto from = number(left.symbol.subscript);
+    const auto to = number(right.symbol.subscript);
+    if (!from || !to || *to <= *from) {
+      throw error(at,
+                  "expected \\cdots between numbered terms (A_2 + \\cdots + A_M, with M "
+                  "a number or defined by let: as one, larger than 2)");
+    }
+    right.symbol.subscript = std::to_string(*to);
+    std::vector<std::pair<Node, char>> between;
+    for (long k = *from + 1; k < *to; ++k) {
+      Node term = left;
+      term.symbol.subscript = std::to_string(k);
+      term.offset = at;
+      between.emplace_back(std::move(term), '+');
+    }
+    terms.erase(terms.begin() + static_cast<std::ptrdiff_t>(i));
+    terms.insert(terms.begin() + static_cast<std::ptrdiff_t>(i), between.begin(), between.end());
+    i += between.size();
+  }
+  return terms;
+}
+
+Value Symbols::block_product(const Value& a, const Value& b, char op, std::size_t offset,
+                             std::vector<ex>& denominators) const {
+  if (op == '/') {
+    if (b.vector || b.block()) {
+      throw error(offset, "expected a number to divide by, found " + kind_name(b));
+    }
+    denominators.push_back(b.x);
+    return scaled_value(a, 1 / b.x);
+  }
+  if (a.vector || b.vector) {
+    throw error(offset, "expected a number or a block with a block, found a vector");
+  }
+  if (!a.block()) {
+    return scaled_value(b, a.x);
+  }
+  if (!b.block()) {
+    return scaled_value(a, b.x);
+  }
+  if (a.cols != b.rows) {
+    throw error(offset, "expected blocks that multiply: " + std::to_string(a.rows) + " by " +
+                            std::to_string(a.cols) + " times " + std::to_string(b.rows) + " by " +
+                            std::to_string(b.cols));
+  }
+  Value r;
+  r.rows = a.rows;
+  r.cols = b.cols;
+  for (std::size_t i = 0; i < a.rows; ++i) {
+    for (std::size_t j = 0; j < b.cols; ++j) {
+      ex sum = 0;
+      for (std::size_t k = 0; k < a.cols; ++k) {
+        sum += a.entries[i * a.cols + k] * b.entries[k * b.cols + j];
+      }
+      r.entries.push_back(sum);
+    }
+  }
+  return r;
+}
+
+ex Symbols::integral_value(const Node& n, const std::function<Value(const Node&)>& eval) {
+  const Value integrand = eval(n.children[0]);
+  if (integrand.vector || integrand.block()) {
+    throw error(n.offset, "expected a number to integrate, found " + kind_name(integrand));
+  }
+  ex form = integrand.x.subs(substitutions_);
+  // The differential: dt, or dt', dt'' for a variable t', t''.
+  std::optional<std::pair<ex, int>> differential;
+  for (const auto& [key, symbol] : symbols_) {
+    const SymbolInfo& info = infos_.at(symbol);
+    if (info.name.base == "dt" && info.name.subscript.empty() && !info.name.delta &&
+        !info.name.differential && form.has(symbol)) {
+      if (differential) {
+        throw error(n.offset, "expected one differential in the integrand (dt or dt'), found two");
+      }
+      differential = std::pair{symbol, info.name.primes};
+    }
+  }
+  if (!differential) {
+    throw error(n.offset, "expected the integrand to hold its differential (dt, or dt' for t')");
+  }
+  const ex delta = differential->first;
+  const ex variable = scalar(SymbolName{"t", "", differential->second, false});
+  // Inside the contact a force is its mean times the pulse's shape.
+  GiNaC::exmap shaped;
+  for (const ex& f : forces_) {
+    shaped[f] = f * contact_pulse(variable / pulse_duration());
+  }
+  form = form.subs(shaped);
+  const ex coefficient = form.diff(GiNaC::ex_to<GiNaC::symbol>(delta));
+  if (coefficient.has(delta) || !GiNaC::normal(form - coefficient * delta).is_zero()) {
+    throw error(n.offset, "expected an integrand linear in its differential (… dt)");
+  }
+  const bool lower_written = n.ops.find('l') != std::string::npos;
+  const bool upper_written = n.ops.find('u') != std::string::npos;
+  if (!lower_written) {
+    throw error(n.offset,
+                "expected the limits of the integral: \\int_0^{dt} or \\int_{dt} (over the "
+                "contact)");
+  }
+  ex lower = eval(n.children[1]).x.subs(substitutions_);
+  ex upper = 0;
+  if (upper_written) {
+    upper = eval(n.children[2]).x.subs(substitutions_);
+  } else {
+    upper = lower;  // \int_{dt}: over the contact, from 0 to dt
+    lower = 0;
+  }
+  return GiNaC::integral(variable, lower, upper, coefficient);
+}
+
+namespace {
+
+// d followed by a symbol declared with `differentials:` is that symbol's differential.
+std::vector<std::pair<Node, char>> merged_factors(
+    const Node& product, const std::function<bool(const SymbolName&)>& differential) {
+  std::vector<std::pair<Node, char>> factors;
+  for (std::size_t i = 0; i < product.children.size(); ++i) {
+    const Node& c = product.children[i];
+    const bool d = c.kind == NodeKind::symbol && c.symbol.base == "d" &&
+                   c.symbol.subscript.empty() && c.symbol.primes == 0 && !c.symbol.delta;
+    if (d && i + 1 < product.children.size() && product.ops[i + 1] == ' ' &&
+        product.children[i + 1].kind == NodeKind::symbol &&
+        !product.children[i + 1].symbol.differential &&
+        differential(product.children[i + 1].symbol)) {
+      Node merged = product.children[i + 1];
+      merged.symbol.differential = true;
+      merged.offset = c.offset;
+      factors.emplace_back(std::move(merged), product.ops[i]);
+      ++i;
+      continue;
+    }
+    factors.emplace_back(c, product.ops[i]);
+  }
+  return factors;
 }
 
 }  // namespace
 
 Meaning Symbols::meaning(const Node& node) {
   std::vector<ex> denominators;
+  const auto unblocked = [&](Value v, std::size_t at) {
+    if (v.block()) {
+      throw error(at, "expected a number or a vector here, found " + kind_name(v));
+    }
+    return v;
+  };
   std::function<Value(const Node&)> eval = [&](const Node& n) -> Value {
     try {
       switch (n.kind) {
@@ -293,25 +636,34 @@ Meaning Symbols::meaning(const Node& node) {
           return {false, decimal(n.text), 0};
         case NodeKind::pi:
           return {false, GiNaC::Pi, 0};
-        case NodeKind::symbol:
+        case NodeKind::symbol: {
+          const SymbolName name = resolve(n.symbol);
+          if (const auto block = blocks_.find(name.unprimed().latex()); block != blocks_.end()) {
+            return block_value(block->second, n.offset, eval);
+          }
           return symbol_value(n.symbol);
+        }
         case NodeKind::sum: {
           Value total;
-          for (std::size_t i = 0; i < n.children.size(); ++i) {
-            Value term = eval(n.children[i]);
-            if (n.ops[i] == '-') {
-              term.x = -term.x;
-              term.y = -term.y;
+          const std::vector<std::pair<Node, char>> terms = expanded_terms(n);
+          for (std::size_t i = 0; i < terms.size(); ++i) {
+            Value term = eval(terms[i].first);
+            if (terms[i].second == '-') {
+              term = negated(std::move(term));
             }
             if (i == 0) {
               total = term;
-            } else if (term.vector != total.vector) {
-              throw error(n.children[i].offset, "expected " + kind_name(total) +
-                                                    " here, as the terms before it, found " +
-                                                    kind_name(term));
+            } else if (term.vector != total.vector || term.rows != total.rows ||
+                       term.cols != total.cols) {
+              throw error(terms[i].first.offset, "expected " + kind_name(total) +
+                                                     " here, as the terms before it, found " +
+                                                     kind_name(term));
             } else {
               total.x = total.x + term.x;
               total.y = total.y + term.y;
+              for (std::size_t k = 0; k < total.entries.size(); ++k) {
+                total.entries[k] += term.entries[k];
+              }
             }
           }
           if (!total.vector) {
@@ -320,11 +672,18 @@ Meaning Symbols::meaning(const Node& node) {
           return total;
         }
         case NodeKind::product: {
-          Value acc = eval(n.children[0]);
-          for (std::size_t i = 1; i < n.children.size(); ++i) {
-            const Value next = eval(n.children[i]);
-            const char op = n.ops[i];
-            const std::size_t at = n.children[i].offset;
+          const auto factors = merged_factors(n, [&](const SymbolName& name) {
+            return differentials_.contains(resolve(name).unprimed().latex());
+          });
+          Value acc = eval(factors[0].first);
+          for (std::size_t i = 1; i < factors.size(); ++i) {
+            const Value next = eval(factors[i].first);
+            const char op = factors[i].second;
+            const std::size_t at = factors[i].first.offset;
+            if (acc.block() || next.block()) {
+              acc = block_product(acc, next, op, at, denominators);
+              continue;
+            }
             if (op == '/') {
               if (next.vector) {
                 throw error(at, "expected a scalar to divide by, found a vector");
@@ -352,15 +711,62 @@ Meaning Symbols::meaning(const Node& node) {
         case NodeKind::fraction: {
           const Value top = eval(n.children[0]);
           const Value bottom = eval(n.children[1]);
-          if (bottom.vector) {
-            throw error(n.children[1].offset, "expected a scalar denominator, found a vector");
+          if (bottom.vector || bottom.block()) {
+            throw error(n.children[1].offset,
+                        "expected a scalar denominator, found " + kind_name(bottom));
           }
           denominators.push_back(bottom.x);
-          return {top.vector, top.x / bottom.x, top.vector ? top.y / bottom.x : ex(0)};
+          return scaled_value(top, 1 / bottom.x);
         }
-        case NodeKind::power: {
+        case NodeKind::sum_over: {
+          const auto range = indices_.find(n.text);
+          if (range == indices_.end()) {
+            throw error(n.offset, "expected the index " + n.text +
+                                      " of \\sum to be declared (index: " + n.text +
+                                      " \\in \\{1, 2\\})");
+          }
+          Value total;
+          for (std::size_t k = 0; k < range->second.size(); ++k) {
+            Value term = eval(with_index(n.children[0], n.text, range->second[k]));
+            if (k == 0) {
+              total = term;
+              continue;
+            }
+            if (term.vector != total.vector || term.rows != total.rows) {
+              throw error(n.offset, "expected the terms of the sum to be of one kind");
+            }
+            total.x += term.x;
+            total.y += term.y;
+            for (std::size_t e = 0; e < total.entries.size(); ++e) {
+              total.entries[e] += term.entries[e];
+            }
+          }
+          return total;
+        }
+        case NodeKind::integral:
+          return {false, integral_value(n, eval), 0};
+        case NodeKind::bar: {
           const Value base = eval(n.children[0]);
-          const Value exponent = eval(n.children[1]);
+          if (base.vector || base.block()) {
+            throw error(n.offset, "expected a number before the bar |");
+          }
+          const bool has_upper = n.ops.find('u') != std::string::npos;
+          const bool has_variable = n.ops.find('v') != std::string::npos;
+          const ex variable = has_variable ? symbol_value(n.children.back().symbol).x
+                                           : symbol_value(SymbolName{"t", "", 0, false}).x;
+          const ex inner = base.x.subs(substitutions_);
+          const ex lower = eval(n.children[1]).x;
+          if (!has_upper) {
+            return {false, inner.subs(variable == lower), 0};
+          }
+          const ex upper = eval(n.children[2]).x;
+          return {false, inner.subs(variable == upper) - inner.subs(variable == lower), 0};
+        }
+        case NodeKind::dots:
+          throw error(n.offset, "expected \\cdots between two terms of a sum");
+        case NodeKind::power: {
+          const Value base = unblocked(eval(n.children[0]), n.children[0].offset);
+          const Value exponent = unblocked(eval(n.children[1]), n.children[1].offset);
           if (exponent.vector) {
             throw error(n.children[1].offset, "expected a scalar exponent, found a vector");
           }
@@ -395,7 +801,7 @@ Meaning Symbols::meaning(const Node& node) {
           return {false, GiNaC::pow(base.x, e), 0};
         }
         case NodeKind::function: {
-          const Value argument = eval(n.children[0]);
+          const Value argument = unblocked(eval(n.children[0]), n.children[0].offset);
           if (argument.vector) {
             throw error(n.children[0].offset,
                         "expected a scalar argument of \\" + n.text + ", found a vector");
@@ -417,14 +823,14 @@ Meaning Symbols::meaning(const Node& node) {
           return {false, GiNaC::log(a), 0};
         }
         case NodeKind::root: {
-          const Value radicand = eval(n.children[0]);
+          const Value radicand = unblocked(eval(n.children[0]), n.children[0].offset);
           if (radicand.vector) {
             throw error(n.children[0].offset, "expected a scalar under the root, found a vector");
           }
           if (n.children.size() == 1) {
             return {false, GiNaC::sqrt(radicand.x), 0};
           }
-          const Value index = eval(n.children[1]);
+          const Value index = unblocked(eval(n.children[1]), n.children[1].offset);
           if (index.vector || !GiNaC::is_a<numeric>(index.x) ||
               !GiNaC::ex_to<numeric>(index.x).is_pos_integer() || index.x == 1 ||
               GiNaC::ex_to<numeric>(index.x) > 1000) {
@@ -435,22 +841,22 @@ Meaning Symbols::meaning(const Node& node) {
           return {false, GiNaC::pow(radicand.x, 1 / index.x), 0};
         }
         case NodeKind::norm: {
-          const Value v = eval(n.children[0]);
+          const Value v = unblocked(eval(n.children[0]), n.children[0].offset);
           if (!v.vector) {
             throw error(n.offset, "expected a vector inside \\| \\| (for a scalar write |x|)");
           }
           return {false, GiNaC::sqrt(v.x * v.x + v.y * v.y), 0};
         }
         case NodeKind::abs: {
-          const Value v = eval(n.children[0]);
+          const Value v = unblocked(eval(n.children[0]), n.children[0].offset);
           if (v.vector) {
             return {false, GiNaC::sqrt(v.x * v.x + v.y * v.y), 0};
           }
           return {false, GiNaC::abs(v.x), 0};
         }
         case NodeKind::det: {
-          const Value a = eval(n.children[0]);
-          const Value b = eval(n.children[1]);
+          const Value a = unblocked(eval(n.children[0]), n.children[0].offset);
+          const Value b = unblocked(eval(n.children[1]), n.children[1].offset);
           if (!a.vector || !b.vector) {
             throw error(a.vector ? n.children[1].offset : n.children[0].offset,
                         "expected two vectors in \\det(\\vec a, \\vec b), found a scalar");
@@ -458,8 +864,8 @@ Meaning Symbols::meaning(const Node& node) {
           return {false, a.x * b.y - a.y * b.x, 0};
         }
         case NodeKind::vector: {
-          const Value a = eval(n.children[0]);
-          const Value b = eval(n.children[1]);
+          const Value a = unblocked(eval(n.children[0]), n.children[0].offset);
+          const Value b = unblocked(eval(n.children[1]), n.children[1].offset);
           if (a.vector || b.vector) {
             throw error(a.vector ? n.children[0].offset : n.children[1].offset,
                         "expected scalar components in [x, y], found a vector");
@@ -483,7 +889,13 @@ Meaning Symbols::meaning(const Node& node) {
   return {std::move(value), std::move(denominators)};
 }
 
-std::optional<Dimension> Symbols::symbol_dimension(const SymbolName& name) const {
+std::optional<Dimension> Symbols::symbol_dimension(const SymbolName& written) const {
+  const SymbolName name = resolve(written);
+  if (name.differential) {  // dX has the dimension of X
+    SymbolName base = name;
+    base.differential = false;
+    return symbol_dimension(base);
+  }
   if (const auto found = units_.find(name.latex()); found != units_.end()) {
     return found->second;
   }
@@ -559,16 +971,31 @@ Symbols::DimensionResult Symbols::dimension(const Node& node) {
       }
       case NodeKind::product: {
         std::optional<Dimension> total = Dimension{};
-        for (std::size_t i = 0; i < n.children.size(); ++i) {
-          const auto d = walk(n.children[i]);
+        const auto factors = merged_factors(n, [&](const SymbolName& name) {
+          return differentials_.contains(resolve(name).unprimed().latex());
+        });
+        for (const auto& [factor, op] : factors) {
+          const auto d = walk(factor);
           if (!d || !total) {
             total = std::nullopt;
             continue;
           }
-          total = n.ops[i] == '/' ? *total - *d : *total + *d;
+          total = op == '/' ? *total - *d : *total + *d;
         }
         return total;
       }
+      case NodeKind::sum_over: {
+        const auto range = indices_.find(n.text);
+        if (range == indices_.end() || range->second.empty()) {
+          return std::nullopt;
+        }
+        return walk(with_index(n.children[0], n.text, range->second.front()));
+      }
+      case NodeKind::integral:  // a 1-form: its differential carries the time
+      case NodeKind::bar:
+        return walk(n.children[0]);
+      case NodeKind::dots:
+        return std::nullopt;
       case NodeKind::fraction: {
         const auto top = walk(n.children[0]);
         const auto bottom = walk(n.children[1]);

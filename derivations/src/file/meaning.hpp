@@ -7,8 +7,10 @@
 
 #include <ginac/ginac.h>
 
+#include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -17,11 +19,20 @@
 
 namespace impulse::derivations::file {
 
-/// A scalar, or a vector of the plane [x, y].
+/// A scalar, a vector of the plane [x, y], or (accepted beyond the contract) a block: a matrix
+/// or a column over the contacts, declared with `matrix:` or `column:`.
 struct Value {
+  Value() = default;
+  /// A scalar (vector false, y 0) or a vector of the plane.
+  Value(bool is_vector, GiNaC::ex x_value, GiNaC::ex y_value)
+      : vector(is_vector), x(std::move(x_value)), y(std::move(y_value)) {}
   bool vector = false;
-  GiNaC::ex x;  ///< the scalar, or the x component
-  GiNaC::ex y;  ///< the y component of a vector
+  GiNaC::ex x;                     ///< the scalar, or the x component
+  GiNaC::ex y;                     ///< the y component of a vector
+  std::size_t rows = 0;            ///< a block's rows (0: not a block)
+  std::size_t cols = 0;            ///< a block's columns (1: a column)
+  std::vector<GiNaC::ex> entries;  ///< a block's entries, row by row
+  [[nodiscard]] bool block() const { return rows > 0; }
 };
 
 /// An expression's value and the denominators written in it (each one must not be zero where
@@ -59,10 +70,42 @@ struct SymbolInfo {
   int component = 0;             ///< 0: x, 1: y
 };
 
+/// A copy of @p node with the index @p index replaced by @p value in the subscripts of its
+/// symbols (subscripts of up to three letters and digits: a_{vi} with i = 2 is a_{v2}), except
+/// inside a sum over the same index.
+[[nodiscard]] Node with_index(const Node& node, const std::string& index, long value);
+
 /// The symbols, vectors, definitions and units of one file, as its lines declare them.
 class Symbols {
  public:
   Symbols(const Source& source, const Limits& limits) : source_(source), limits_(limits) {}
+
+  // ---- accepted beyond the contract (the paper's files) ----
+  /// `arrow: F`: \vec F (any subscript, primes) is a vector distinct from the number F.
+  void declare_arrow(const std::string& letter) { arrows_.insert(letter); }
+  /// `differentials: S_v`: dS_v and \mathrm{d}S_v are one symbol, the differential of S_v.
+  void declare_differential(const SymbolName& name) {
+    differentials_.insert(resolve(name).latex());
+  }
+  /// `forces: F_v`: a force that varies over the contact (its value is its mean): inside an
+  /// integral it is shaped by the contact's pulse.
+  void declare_force(const SymbolName& name);
+  /// `index: i \in \{1, 2\}`: the values of an index of sums and of rows.
+  void declare_index(const std::string& letter, std::vector<long> values) {
+    indices_[letter] = std::move(values);
+  }
+  /// `matrix: \mathbf{A} = a_{vi}` or `column: \vec{B} = b_v`: a block over the contacts, its
+  /// entry given by the template (the indices of the template in the order they appear: row,
+  /// then column).
+  void declare_block(const SymbolName& name, const Side& entry, bool matrix, std::size_t offset);
+  /// The declared indices.
+  [[nodiscard]] const std::map<std::string, std::vector<long>>& indices() const { return indices_; }
+  /// The force symbols (scalars and the components of vectors) declared with `forces:`.
+  [[nodiscard]] const std::vector<GiNaC::ex>& forces() const { return forces_; }
+  /// The declared indices that stand free in @p node (not bound by a sum).
+  [[nodiscard]] std::vector<std::string> free_indices(const Node& node) const;
+  /// The name as the file's declarations read it (an accent over an `arrow:` letter).
+  [[nodiscard]] SymbolName resolve(SymbolName name) const;
 
   /// `vector: name` from here on.
   void declare_vector(const SymbolName& name);
@@ -96,6 +139,10 @@ class Symbols {
     const Value v = symbol_value(name);
     return v.vector ? GiNaC::ex(0) : v.x;
   }
+  /// What a name stands for: a scalar symbol, or the two of a vector (made on first use).
+  [[nodiscard]] Value value_of(const SymbolName& name) { return symbol_value(name); }
+  /// Whether a name is declared a differential's (`differentials:`).
+  [[nodiscard]] bool is_differential(const SymbolName& name) const { return name.differential; }
   /// The GiNaC symbol of a scalar name (made on first use).
   [[nodiscard]] GiNaC::ex scalar(const SymbolName& name, std::optional<SymbolName> of = {},
                                  int component = 0);
@@ -109,8 +156,25 @@ class Symbols {
     return source_.error(offset, message);
   }
 
+  struct Block {
+    Side entry;
+    std::vector<std::string> indices;  // row index, then column index (matrices)
+  };
+  Value block_value(const Block& block, std::size_t offset,
+                    const std::function<Value(const Node&)>& eval) const;
+  std::vector<std::pair<Node, char>> expanded_terms(const Node& sum);
+  Value block_product(const Value& a, const Value& b, char op, std::size_t offset,
+                      std::vector<GiNaC::ex>& denominators) const;
+  GiNaC::ex integral_value(const Node& n, const std::function<Value(const Node&)>& eval);
+  std::vector<std::string> indices_in(const Node& node) const;
+
   const Source& source_;
   const Limits& limits_;
+  std::set<std::string> arrows_;
+  std::set<std::string> differentials_;
+  std::vector<GiNaC::ex> forces_;
+  std::map<std::string, std::vector<long>> indices_;
+  std::map<std::string, Block> blocks_;       // latex key → template
   std::map<std::string, GiNaC::ex> symbols_;  // latex key → GiNaC symbol
   std::map<GiNaC::ex, SymbolInfo, GiNaC::ex_is_less> infos_;
   std::map<std::string, bool> vectors_;     // unprimed latex keys declared vectors

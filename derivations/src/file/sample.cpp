@@ -46,166 +46,23 @@ ex term_scale(const ex& e) {
 
 namespace {
 
-// One premise to be solved for one of its symbols.
+// One equation to be solved for one of its symbols.
 struct Unknown {
-  std::size_t premise;
-  std::size_t symbol;  // index into the symbol list
-  // When the premise's numerator is a polynomial of degree ≤ 4 in the symbol: its coefficients,
-  // lowest first, compiled as functions of all the symbols.
+  std::size_t premise;  // index into the equations
+  std::size_t symbol;   // index into the symbol list
+  // When the equation's numerator is a polynomial of degree ≤ 4 in the symbol: its
+  // coefficients, lowest first, compiled as functions of all the symbols.
   std::vector<sym::Compiled> coefficients;
 };
 
-class Sampler {
- public:
-  Sampler(const NumericProblem& problem, const Facts& facts, std::uint64_t seed)
-      : problem_(problem), facts_(facts), random_(seed) {
-    std::vector<ex> all{problem.target, problem.target_scale};
-    all.insert(all.end(), problem.premises.begin(), problem.premises.end());
-    all.insert(all.end(), problem.denominators.begin(), problem.denominators.end());
-    symbols_ = symbols_of(all);
-    values_.assign(symbols_.size(), 0.0);
-  }
+}  // namespace
 
-  NumericOpinion run(std::size_t wanted) {
-    NumericOpinion opinion;
-    try {
-      compile_all();
-    } catch (const std::exception& e) {
-      opinion.how =
-          std::string("the expressions cannot be evaluated numerically (") + e.what() + ")";
-      return opinion;
-    }
-    if (!choose_unknowns()) {
-      opinion.how = "no symbol could be chosen to solve each equation before for";
-      return opinion;
-    }
-    const std::size_t attempts = 6 * wanted + 20;
-    for (std::size_t attempt = 0; attempt < attempts && opinion.points < wanted; ++attempt) {
-      draw();
-      if (!solve()) {
-        continue;
-      }
-      if (!valid()) {
-        continue;
-      }
-      const double residual = target_residual();
-      if (!std::isfinite(residual)) {
-        continue;
-      }
-      ++opinion.points;
-      opinion.worst = std::max(opinion.worst, residual);
-      if (residual > numeric_fails_above && !opinion.counterexample) {
-        std::vector<std::pair<ex, double>> point;
-        for (std::size_t i = 0; i < symbols_.size(); ++i) {
-          point.emplace_back(symbols_[i], values_[i]);
-        }
-        opinion.counterexample = std::move(point);
-        opinion.counterexample_residual = residual;
-      }
-    }
-    opinion.how =
-        std::to_string(opinion.points) + " random points" +
-        (problem_.premises.empty()
-             ? ""
-             : std::string(" on the equations before (each solved for ") + solved_names() + ")");
-    if (opinion.points == 0) {
-      opinion.how = "no point satisfying the equations before and the facts was found in " +
-                    std::to_string(attempts) + " attempts";
-    }
-    return opinion;
-  }
-
- private:
-  void compile_all() {
-    for (const ex& p : problem_.premises) {
-      premises_.push_back(sym::compile(p, symbols_));
-    }
-    for (const ex& s : problem_.premise_scales) {
-      premise_scales_.push_back(sym::compile(s, symbols_));
-    }
-    for (const ex& d : problem_.denominators) {
-      denominators_.push_back(sym::compile(d, symbols_));
-    }
-    target_ = sym::compile(problem_.target, symbols_);
-    target_scale_ = sym::compile(problem_.target_scale, symbols_);
-  }
-
-  std::size_t index_of(const ex& s) const {
-    for (std::size_t i = 0; i < symbols_.size(); ++i) {
-      if (symbols_[i].is_equal(s)) {
-        return i;
-      }
-    }
-    return symbols_.size();
-  }
-
-  // One distinct symbol per premise: preferably one without a sign fact (its value is then
-  // free to come out as it must), of low degree, in few other premises.
-  bool choose_unknowns() {
-    std::vector<bool> taken(symbols_.size(), false);
-    for (std::size_t i = 0; i < problem_.premises.size(); ++i) {
-      const ex numerator = GiNaC::normal(problem_.premises[i]).numer();
-      double best_score = -1e9;
-      std::optional<std::size_t> best;
-      for (const ex& s : symbols_of(problem_.premises[i])) {
-        const std::size_t k = index_of(s);
-        if (taken[k]) {
-          continue;
-        }
-        double score = facts_.of_symbol(s) == Sign::unknown ? 10 : 0;
-        if (numerator.is_polynomial(s)) {
-          score += 8 - 2.0 * std::min(numerator.degree(s), 4);
-        }
-        for (std::size_t j = 0; j < problem_.premises.size(); ++j) {
-          score -= j != i && problem_.premises[j].has(s) ? 1 : 0;
-        }
-        if (score > best_score) {
-          best_score = score;
-          best = k;
-        }
-      }
-      if (!best) {
-        return false;
-      }
-      taken[*best] = true;
-      Unknown u{i, *best, {}};
-      const ex& s = symbols_[*best];
-      if (numerator.is_polynomial(s) && numerator.degree(s) <= 4 && numerator.degree(s) >= 1) {
-        for (int d = 0; d <= numerator.degree(s); ++d) {
-          u.coefficients.push_back(sym::compile(numerator.coeff(s, d), symbols_));
-        }
-      }
-      unknowns_.push_back(std::move(u));
-    }
-    return true;
-  }
-
-  std::string solved_names() const {
-    std::string names;
-    for (const Unknown& u : unknowns_) {
-      names +=
-          (names.empty() ? "" : ", ") + GiNaC::ex_to<GiNaC::symbol>(symbols_[u.symbol]).get_name();
-    }
-    return names;
-  }
-
-  double draw_value(Sign sign) {
-    const double magnitude = random_.log_uniform(0.2, 5.0);
-    switch (sign) {
-      case Sign::positive:
-      case Sign::nonnegative:
-        return magnitude;
-      case Sign::negative:
-      case Sign::nonpositive:
-        return -magnitude;
-      default:
-        return random_.coin() ? magnitude : -magnitude;
-    }
-  }
-
-  void draw() {
-    for (std::size_t i = 0; i < symbols_.size(); ++i) {
-      values_[i] = draw_value(facts_.of_symbol(symbols_[i]));
+struct Solver::State {
+  State(const std::vector<ex>& equations, const std::vector<ex>& symbols, const Facts& facts,
+        num::Random& random)
+      : equations_(equations), symbols_(symbols), facts_(facts), random_(random) {
+    for (const ex& e : equations_) {
+      premises_.push_back(sym::compile(e, symbols_));
     }
   }
 
@@ -322,7 +179,7 @@ class Sampler {
         std::vector<sym::Compiled> row;
         for (const Unknown& v : unknowns_) {
           row.push_back(sym::compile(
-              problem_.premises[u.premise].diff(GiNaC::ex_to<GiNaC::symbol>(symbols_[v.symbol])),
+              equations_[u.premise].diff(GiNaC::ex_to<GiNaC::symbol>(symbols_[v.symbol])),
               symbols_));
         }
         jacobian_.push_back(std::move(row));
@@ -333,7 +190,7 @@ class Sampler {
     system.n = n;
     system.params = this;
     system.f = [](const gsl_vector* x, void* p, gsl_vector* f) -> int {
-      auto* self = static_cast<Sampler*>(p);
+      auto* self = static_cast<Solver::State*>(p);
       self->set(x);
       for (std::size_t i = 0; i < self->unknowns_.size(); ++i) {
         gsl_vector_set(f, i, self->premises_[self->unknowns_[i].premise](self->values_));
@@ -341,7 +198,7 @@ class Sampler {
       return GSL_SUCCESS;
     };
     system.df = [](const gsl_vector* x, void* p, gsl_matrix* j) -> int {
-      auto* self = static_cast<Sampler*>(p);
+      auto* self = static_cast<Solver::State*>(p);
       self->set(x);
       for (std::size_t r = 0; r < self->unknowns_.size(); ++r) {
         for (std::size_t c = 0; c < self->unknowns_.size(); ++c) {
@@ -351,7 +208,7 @@ class Sampler {
       return GSL_SUCCESS;
     };
     system.fdf = [](const gsl_vector* x, void* p, gsl_vector* f, gsl_matrix* j) -> int {
-      auto* self = static_cast<Sampler*>(p);
+      auto* self = static_cast<Solver::State*>(p);
       self->set(x);
       for (std::size_t r = 0; r < self->unknowns_.size(); ++r) {
         gsl_vector_set(f, r, self->premises_[self->unknowns_[r].premise](self->values_));
@@ -391,6 +248,198 @@ class Sampler {
   void set(const gsl_vector* x) {
     for (std::size_t i = 0; i < unknowns_.size(); ++i) {
       values_[unknowns_[i].symbol] = gsl_vector_get(x, i);
+    }
+  }
+
+  std::vector<ex> equations_;
+  std::vector<ex> symbols_;
+  const Facts& facts_;
+  num::Random& random_;
+  std::vector<sym::Compiled> premises_;
+  std::vector<Unknown> unknowns_;
+  std::vector<std::vector<sym::Compiled>> jacobian_;
+  std::vector<double> values_;
+};
+
+Solver::Solver(const std::vector<ex>& equations, const std::vector<ex>& unknowns,
+               const std::vector<ex>& symbols, const Facts& facts, num::Random& random)
+    : state_(std::make_unique<State>(equations, symbols, facts, random)) {
+  for (std::size_t i = 0; i < equations.size(); ++i) {
+    const auto at = std::find_if(symbols.begin(), symbols.end(),
+                                 [&](const ex& s) { return s.is_equal(unknowns[i]); });
+    const auto k = static_cast<std::size_t>(at - symbols.begin());
+    Unknown u{i, k, {}};
+    const ex numerator = GiNaC::normal(equations[i]).numer();
+    const ex& s = unknowns[i];
+    if (numerator.is_polynomial(s) && numerator.degree(s) <= 4 && numerator.degree(s) >= 1) {
+      for (int d = 0; d <= numerator.degree(s); ++d) {
+        u.coefficients.push_back(sym::compile(numerator.coeff(s, d), symbols));
+      }
+    }
+    state_->unknowns_.push_back(std::move(u));
+  }
+}
+
+Solver::~Solver() = default;
+Solver::Solver(Solver&&) noexcept = default;
+Solver& Solver::operator=(Solver&&) noexcept = default;
+
+bool Solver::solve(std::vector<double>& values) {
+  state_->values_ = values;
+  const bool solved = state_->solve();
+  values = state_->values_;
+  return solved;
+}
+
+namespace {
+class Sampler {
+ public:
+  Sampler(const NumericProblem& problem, const Facts& facts, std::uint64_t seed)
+      : problem_(problem), facts_(facts), random_(seed) {
+    std::vector<ex> all{problem.target, problem.target_scale};
+    all.insert(all.end(), problem.premises.begin(), problem.premises.end());
+    all.insert(all.end(), problem.denominators.begin(), problem.denominators.end());
+    symbols_ = symbols_of(all);
+    values_.assign(symbols_.size(), 0.0);
+  }
+
+  NumericOpinion run(std::size_t wanted) {
+    NumericOpinion opinion;
+    try {
+      compile_all();
+    } catch (const std::exception& e) {
+      opinion.how =
+          std::string("the expressions cannot be evaluated numerically (") + e.what() + ")";
+      return opinion;
+    }
+    if (!choose_unknowns()) {
+      opinion.how = "no symbol could be chosen to solve each equation before for";
+      return opinion;
+    }
+    const std::size_t attempts = 6 * wanted + 20;
+    for (std::size_t attempt = 0; attempt < attempts && opinion.points < wanted; ++attempt) {
+      draw();
+      if (!solver_->solve(values_)) {
+        continue;
+      }
+      if (!valid()) {
+        continue;
+      }
+      const double residual = target_residual();
+      if (!std::isfinite(residual)) {
+        continue;
+      }
+      ++opinion.points;
+      opinion.worst = std::max(opinion.worst, residual);
+      if (residual > numeric_fails_above && !opinion.counterexample) {
+        std::vector<std::pair<ex, double>> point;
+        for (std::size_t i = 0; i < symbols_.size(); ++i) {
+          point.emplace_back(symbols_[i], values_[i]);
+        }
+        opinion.counterexample = std::move(point);
+        opinion.counterexample_residual = residual;
+      }
+    }
+    opinion.how =
+        std::to_string(opinion.points) + " random points" +
+        (problem_.premises.empty()
+             ? ""
+             : std::string(" on the equations before (each solved for ") + solved_names() + ")");
+    if (opinion.points == 0) {
+      opinion.how = "no point satisfying the equations before and the facts was found in " +
+                    std::to_string(attempts) + " attempts";
+    }
+    return opinion;
+  }
+
+ private:
+  void compile_all() {
+    for (const ex& p : problem_.premises) {
+      premises_.push_back(sym::compile(p, symbols_));
+    }
+    for (const ex& s : problem_.premise_scales) {
+      premise_scales_.push_back(sym::compile(s, symbols_));
+    }
+    for (const ex& d : problem_.denominators) {
+      denominators_.push_back(sym::compile(d, symbols_));
+    }
+    target_ = sym::compile(problem_.target, symbols_);
+    target_scale_ = sym::compile(problem_.target_scale, symbols_);
+  }
+
+  std::size_t index_of(const ex& s) const {
+    for (std::size_t i = 0; i < symbols_.size(); ++i) {
+      if (symbols_[i].is_equal(s)) {
+        return i;
+      }
+    }
+    return symbols_.size();
+  }
+
+  // One distinct symbol per premise: preferably one without a sign fact (its value is then
+  // free to come out as it must), of low degree, in few other premises.
+  bool choose_unknowns() {
+    std::vector<bool> taken(symbols_.size(), false);
+    for (std::size_t i = 0; i < problem_.premises.size(); ++i) {
+      const ex numerator = GiNaC::normal(problem_.premises[i]).numer();
+      double best_score = -1e9;
+      std::optional<std::size_t> best;
+      for (const ex& s : symbols_of(problem_.premises[i])) {
+        const std::size_t k = index_of(s);
+        if (taken[k]) {
+          continue;
+        }
+        double score = facts_.of_symbol(s) == Sign::unknown ? 10 : 0;
+        if (numerator.is_polynomial(s)) {
+          score += 8 - 2.0 * std::min(numerator.degree(s), 4);
+        }
+        for (std::size_t j = 0; j < problem_.premises.size(); ++j) {
+          score -= j != i && problem_.premises[j].has(s) ? 1 : 0;
+        }
+        if (score > best_score) {
+          best_score = score;
+          best = k;
+        }
+      }
+      if (!best) {
+        return false;
+      }
+      taken[*best] = true;
+      unknowns_.push_back(*best);
+    }
+    std::vector<ex> unknown_symbols;
+    for (const std::size_t k : unknowns_) {
+      unknown_symbols.push_back(symbols_[k]);
+    }
+    solver_.emplace(problem_.premises, unknown_symbols, symbols_, facts_, random_);
+    return true;
+  }
+
+  std::string solved_names() const {
+    std::string names;
+    for (const std::size_t k : unknowns_) {
+      names += (names.empty() ? "" : ", ") + GiNaC::ex_to<GiNaC::symbol>(symbols_[k]).get_name();
+    }
+    return names;
+  }
+
+  double draw_value(Sign sign) {
+    const double magnitude = random_.log_uniform(0.2, 5.0);
+    switch (sign) {
+      case Sign::positive:
+      case Sign::nonnegative:
+        return magnitude;
+      case Sign::negative:
+      case Sign::nonpositive:
+        return -magnitude;
+      default:
+        return random_.coin() ? magnitude : -magnitude;
+    }
+  }
+
+  void draw() {
+    for (std::size_t i = 0; i < symbols_.size(); ++i) {
+      values_[i] = draw_value(facts_.of_symbol(symbols_[i]));
     }
   }
 
@@ -436,8 +485,8 @@ class Sampler {
   std::vector<sym::Compiled> denominators_;
   sym::Compiled target_;
   sym::Compiled target_scale_;
-  std::vector<Unknown> unknowns_;
-  std::vector<std::vector<sym::Compiled>> jacobian_;
+  std::vector<std::size_t> unknowns_;
+  std::optional<Solver> solver_;
 };
 
 }  // namespace

@@ -9,12 +9,14 @@
 #include <ginac/ginac.h>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "file/facts.hpp"
+#include "numeric.hpp"
 
 namespace impulse::derivations::file {
 
@@ -41,6 +43,30 @@ struct NumericOpinion {
 inline constexpr double numeric_holds_below = 1e-9;
 /// A relative residual above this shows the step failing at the point.
 inline constexpr double numeric_fails_above = 1e-6;
+
+/// Solves equations (each = 0, compiled over a list of symbols) for some of the symbols, the
+/// others held at their values: one equation by its polynomial roots or by Brent's method along
+/// the unknown, several at once by Powell's hybrid method with the exact Jacobian. A root that
+/// breaks a fact is not a solution.
+class Solver {
+ public:
+  /// @param equations each = 0
+  /// @param unknowns the symbol each equation is solved for (one each, distinct)
+  /// @param symbols every symbol, in the order of the values
+  /// @param facts the signs a solution must keep
+  /// @param random where a random root is chosen among several (kept by the caller)
+  Solver(const std::vector<GiNaC::ex>& equations, const std::vector<GiNaC::ex>& unknowns,
+         const std::vector<GiNaC::ex>& symbols, const Facts& facts, num::Random& random);
+  ~Solver();
+  Solver(Solver&&) noexcept;
+  Solver& operator=(Solver&&) noexcept;
+  /// Solves in place: @p values holds every symbol's value, the unknowns' as a first guess.
+  [[nodiscard]] bool solve(std::vector<double>& values);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 /// Evaluates @p problem at up to @p points random points (seeded).
 [[nodiscard]] NumericOpinion sample(const NumericProblem& problem, const Facts& facts,

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// An independent model of many bodies in contact for the checks of sections 4 and 5: bodies,
-// contacts, the global Jacobian built from the definitions (each contact's generalised normals),
-// and the bodies after a set of impulses. The checks build A and B from the paper's printed
-// coefficients and judge the result with this model.
+// Bodies in contact, for the models of sections 3 to 5: bodies, contacts, the global Jacobian
+// built from the definitions (each contact's generalised normals: the velocity of the contact
+// points along the normal, as a linear function of the bodies' velocities), the impulses of the
+// law of restitution at every contact, and the bodies after a set of impulses. Nothing here is
+// one of the paper's coefficients.
 #pragma once
 
 #include <Eigen/Core>
@@ -70,17 +71,6 @@ Eigen::VectorXd solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& B);
 
 /// Whether B lies in the range of A: the least-squares residual relative to |A||x| + |B|.
 double inconsistency(const Eigen::MatrixXd& A, const Eigen::VectorXd& B);
-
-/// The paper's per-contact energies of body k at contact v (sections 4.1 and 5.1): with J_i the
-/// impulses exchanged with the other body of contact v, K all of body k's impulses, both cast on
-/// k's own normal at v: translational J_i (K/2 + p_v)/m, rotational d_v J_i (dL/2 + L)/I.
-struct ContactEnergy {
-  double translational = 0;
-  double rotational = 0;
-  double pair_impulse = 0;  ///< J_i, the impulses exchanged with the other body, cast on n_v
-};
-ContactEnergy contact_energy(const Scene& scene, const Eigen::VectorXd& F, std::size_t body,
-                             std::size_t contact);
 
 /// A system A F = B as the checks assemble it from printed coefficients.
 struct System {

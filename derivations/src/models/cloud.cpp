@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "cloud.hpp"
+#include "models/cloud.hpp"
 
 #include <Eigen/QR>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "many.hpp"
+#include "models/scene.hpp"
 
 #include <Eigen/QR>
 #include <algorithm>
@@ -198,34 +198,6 @@ double inconsistency(const MatrixXd& A, const VectorXd& B) {
   const VectorXd x = solve(A, B);
   const double scale = A.norm() * x.norm() + B.norm();
   return scale == 0 ? 0.0 : (A * x - B).norm() / scale;
-}
-
-ContactEnergy contact_energy(const Scene& scene, const VectorXd& F, std::size_t body,
-                             std::size_t contact) {
-  const Contact& cv = scene.contacts[contact];
-  const Body& b = scene.bodies[body];
-  const std::size_t other = cv.a == body ? cv.b : cv.a;
-  const Vector2d nv = cv.a == body ? cv.n : Vector2d(-cv.n);
-  double pair = 0, all = 0, spin = 0;
-  for (std::size_t k = 0; k < scene.contacts.size(); ++k) {
-    const Contact& c = scene.contacts[k];
-    if (c.a != body && c.b != body)
-      continue;
-    const Vector2d own = c.a == body ? c.n : Vector2d(-c.n);
-    const Vector2d impulse = -own * F(static_cast<Eigen::Index>(k));
-    all += impulse.dot(nv);
-    if (c.a == other || c.b == other)
-      pair += impulse.dot(nv);
-    if (b.rigid())
-      spin += cross(c.point - b.position, impulse);
-  }
-  ContactEnergy e;
-  e.pair_impulse = pair;
-  e.translational = pair * (all / 2 + b.p.dot(nv)) / b.m;
-  if (b.rigid()) {
-    e.rotational = cross(cv.point - b.position, nv) * pair * (spin / 2 + b.L) / b.I;
-  }
-  return e;
 }
 
 double matrix_error(const MatrixXd& a, const MatrixXd& b) {

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A derivation file read into what is checked: its equations (rows, chain links, rows of an index,
+// each with the equations it must follow from, the facts and definitions in force) and, for the
+// paper's files, its checks (the statement, the correction, the evidence and the models of each).
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "derivations/check.hpp"
+#include "file/facts.hpp"
+#include "file/latex.hpp"
+#include "file/markdown.hpp"
+#include "file/meaning.hpp"
+#include "file/text.hpp"
+
+namespace impulse::derivations::file {
+
+/// What an equation is to the check it belongs to.
+enum class Role {
+  plain,       ///< outside every check (a setting, a definition, a step of the notes)
+  statement,   ///< the check's statement (as printed)
+  correction,  ///< what holds instead (an erratum)
+  evidence,    ///< the check's evidence, in our words: it must follow from the statement
+  test,        ///< what the check's models test besides the statement (not derived)
+};
+
+/// One equation as it is checked: for a link of a chain a = b = c, "a = c".
+struct Equation {
+  std::size_t offset = 0;
+  std::optional<std::string> tag;
+  std::string latex;
+  bool premise = false;
+  Meaning lhs;
+  Meaning rhs;
+  std::vector<std::size_t> premises;  ///< indices of the equations it must follow from
+  Facts facts;                        ///< the facts in force at its line
+  GiNaC::exmap substitutions;         ///< the definitions in force at its line
+  std::optional<DimensionIssue> dimension_issue;
+  std::size_t group = static_cast<std::size_t>(-1);  ///< its check, if any
+  Role role = Role::plain;
+};
+
+/// A model a check names: `ode: NAME`, `quadrature: NAME`, `model: NAME`, `search: NAME`.
+struct ModelUse {
+  std::string method;  ///< "ode", "quadrature", "numeric" (for model:), "search"
+  std::string name;
+  std::size_t offset = 0;
+};
+
+/// A check of the paper's files: `check: ID KIND` or `claim: ID` and what follows it.
+struct Group {
+  std::string id;
+  Kind kind = Kind::equation;
+  std::string section;
+  std::optional<std::string> label;  ///< "(1.1)", from the statement's \tag
+  std::size_t offset = 0;            ///< where check: stands
+  std::string statement;             ///< the statement's block as written
+  std::size_t statement_offset = 0;
+  std::vector<std::size_t> statement_equations;
+  std::vector<std::size_t> correction_equations;
+  std::vector<std::size_t> evidence_equations;
+  std::vector<std::size_t> test_equations;
+  std::string correction;   ///< the correction's block as written
+  std::string explanation;  ///< what goes wrong (erratum, refuted), in our words
+  std::vector<ModelUse> models;
+  // Claims: the rows, and what they are read with.
+  std::vector<ClaimRow> rows;
+  std::vector<std::size_t> claim_premises;
+  Facts claim_facts;
+  GiNaC::exmap claim_substitutions;
+};
+
+/// A file read: its equations and checks.
+struct ReadFile {
+  std::vector<Equation> equations;
+  std::vector<Group> groups;
+};
+
+/// Reads a derivation file (throws ReadError at the first place not understood).
+class Reader {
+ public:
+  Reader(const Source& source, const Limits& limits);
+  ReadFile read();
+  Symbols& symbols() { return symbols_; }
+
+ private:
+  void read_directive(const Directive& d);
+  void assume(const Directive& d);
+  void fact(std::size_t at, const SymbolName& name, Sign sign);
+  void let(const Directive& d);
+  void from(const Directive& d);
+  std::vector<std::size_t> named(const Directive& d);
+  void units(const Directive& d);
+  void index(const Directive& d);
+  void block_declaration(const Directive& d, bool matrix);
+  void open_group(const Directive& d);
+  void close_group();
+  void note_used(const Node& node);
+  void read_block(const Block& block);
+  void read_claim(const Block& block);
+  void dimension(Equation& e, const Node& left, const Node& right);
+  bool used_scalar(const SymbolName& name) const;
+  Group* group();
+
+  const Source& source_;
+  const Limits& limits_;
+  Symbols symbols_;
+  Facts facts_;
+  std::vector<Equation> equations_;
+  std::vector<Group> groups_;
+  std::map<std::string, std::vector<std::size_t>> tags_;
+  std::set<std::string> used_;
+  std::optional<std::size_t> given_;
+  std::optional<std::pair<std::size_t, std::vector<std::size_t>>> from_;
+  std::optional<std::pair<std::size_t, std::vector<std::size_t>>> also_;
+  std::vector<std::size_t> previous_;
+  std::vector<std::size_t> block_premises_;
+  // The chain of the row before, one per row of an index (a = b, then = c continues it).
+  struct Chain {
+    Meaning start;
+    std::string last_latex;
+    Node last_node;
+  };
+  std::vector<Chain> chains_;
+  // Paper files: the check being read, and what its next block is.
+  std::string section_;
+  bool group_open_ = false;
+  enum class Awaiting { nothing, statement, correction } awaiting_ = Awaiting::nothing;
+  bool statement_given_ = false;
+  std::optional<std::size_t> evidence_;  // evidence: stands here, for the next block
+  std::optional<std::size_t> test_;      // test: stands here, for the next block
+  std::vector<std::size_t> statement_premises_;
+};
+
+/// The pieces of a directive's LaTeX separated by commas outside braces and brackets.
+std::vector<std::pair<std::size_t, std::string_view>> split_commas(std::string_view text,
+                                                                   std::size_t offset);
+
+}  // namespace impulse::derivations::file

@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "file/time.hpp"
+
+#include <gsl/gsl_integration.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "symbolic.hpp"
+
+namespace impulse::derivations::file {
+
+namespace {
+void pulse_latex(const GiNaC::ex& u, const GiNaC::print_context& c) {
+  c.s << "\\phi(" << u << ")";
+}
+}  // namespace
+
+REGISTER_FUNCTION(contact_pulse, print_func<GiNaC::print_latex>(pulse_latex))
+
+const GiNaC::symbol& pulse_duration() {
+  static const GiNaC::symbol tau("contact duration", "\\tau_c");
+  return tau;
+}
+
+bool timed(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::integral>(e)) {
+    return true;
+  }
+  if (GiNaC::is_a<GiNaC::function>(e) &&
+      GiNaC::ex_to<GiNaC::function>(e).get_serial() == contact_pulse_SERIAL::serial) {
+    return true;
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (timed(e.op(i))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+GiNaC::ex exact_reading(const GiNaC::ex& e) {
+  if (!timed(e)) {
+    return e;
+  }
+  if (GiNaC::is_a<GiNaC::function>(e) &&
+      GiNaC::ex_to<GiNaC::function>(e).get_serial() == contact_pulse_SERIAL::serial) {
+    return 1;
+  }
+  if (GiNaC::is_a<GiNaC::integral>(e)) {
+    const GiNaC::ex x = e.op(0);
+    const GiNaC::ex a = exact_reading(e.op(1));
+    const GiNaC::ex b = exact_reading(e.op(2));
+    const GiNaC::ex f = GiNaC::expand(exact_reading(e.op(3)));
+    if (!f.is_polynomial(x)) {
+      throw std::invalid_argument("the exact reading integrates polynomials in the variable only");
+    }
+    // ∫_a^b Σ c_k x^k dx, term by term.
+    GiNaC::ex sum = 0;
+    for (int k = f.ldegree(x); k <= f.degree(x); ++k) {
+      const GiNaC::ex c = f.coeff(x, k);
+      sum += c * (GiNaC::pow(b, k + 1) - GiNaC::pow(a, k + 1)) / (k + 1);
+    }
+    return sum;
+  }
+  return e.map([](const GiNaC::ex& part) { return exact_reading(part); });
+}
+
+// ---- the quadrature reading ------------------------------------------------------------------
+
+namespace {
+
+const gsl_integration_glfixed_table& legendre() {
+  static const std::unique_ptr<gsl_integration_glfixed_table,
+                               void (*)(gsl_integration_glfixed_table*)>
+      table(gsl_integration_glfixed_table_alloc(24), gsl_integration_glfixed_table_free);
+  return *table;
+}
+
+}  // namespace
+
+TimedExpression::TimedExpression(const GiNaC::ex& e, const std::vector<GiNaC::ex>& symbols) {
+  std::vector<GiNaC::ex> slots = symbols;
+  for (std::size_t i = 0; i < symbols.size(); ++i) {
+    if (symbols[i].is_equal(pulse_duration())) {
+      duration_slot_ = i;
+    }
+  }
+  root_ = compile(e, slots);
+  slots_ = slots.size();
+}
+
+std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>& slots) {
+  Op op;
+  if (GiNaC::is_a<GiNaC::numeric>(e)) {
+    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+    if (!n.is_real()) {
+      throw std::invalid_argument("a complex number");
+    }
+    op.kind = Op::constant;
+    op.value = n.to_double();
+  } else if (GiNaC::is_a<GiNaC::constant>(e)) {
+    op.kind = Op::constant;
+    op.value = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double();
+  } else if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    const auto found =
+        std::find_if(slots.begin(), slots.end(), [&](const GiNaC::ex& s) { return s.is_equal(e); });
+    if (found == slots.end()) {
+      throw std::invalid_argument("a symbol without a value: " +
+                                  GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+    }
+    op.kind = Op::variable;
+    op.index = static_cast<std::size_t>(found - slots.begin());
+  } else if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+    op.kind = GiNaC::is_a<GiNaC::add>(e) ? Op::add : Op::mul;
+    std::vector<std::pair<std::string, std::size_t>> order;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      order.emplace_back(sym::canonical(e.op(i)), i);  // the same order in every run
+    }
+    std::sort(order.begin(), order.end());
+    for (const auto& [key, i] : order) {
+      op.kids.push_back(compile(e.op(i), slots));
+    }
+  } else if (GiNaC::is_a<GiNaC::power>(e)) {
+    op.kind = Op::power;
+    op.kids.push_back(compile(e.op(0), slots));
+    op.kids.push_back(compile(e.op(1), slots));
+  } else if (GiNaC::is_a<GiNaC::integral>(e)) {
+    op.kind = Op::integral;
+    op.index = slots.size();
+    op.kids.push_back(compile(e.op(1), slots));
+    op.kids.push_back(compile(e.op(2), slots));
+    slots.push_back(e.op(0));  // the variable is bound inside the integrand only
+    op.kids.push_back(compile(e.op(3), slots));
+  } else if (GiNaC::is_a<GiNaC::function>(e)) {
+    const auto& f = GiNaC::ex_to<GiNaC::function>(e);
+    const unsigned serial = f.get_serial();
+    if (serial == contact_pulse_SERIAL::serial) {
+      op.kind = Op::pulse;
+    } else {
+      const std::string name = f.get_name();
+      if (name == "sin") {
+        op.kind = Op::sin;
+      } else if (name == "cos") {
+        op.kind = Op::cos;
+      } else if (name == "tan") {
+        op.kind = Op::tan;
+      } else if (name == "exp") {
+        op.kind = Op::exp;
+      } else if (name == "log") {
+        op.kind = Op::log;
+      } else if (name == "abs") {
+        op.kind = Op::abs;
+      } else {
+        throw std::invalid_argument("the function " + name);
+      }
+    }
+    op.kids.push_back(compile(e.op(0), slots));
+  } else {
+    throw std::invalid_argument("an expression that is not a number");
+  }
+  ops_.push_back(std::move(op));
+  return ops_.size() - 1;
+}
+
+double TimedExpression::operator()(std::span<const double> values, const PulseShape* shape) const {
+  std::vector<double> slots(values.begin(), values.end());
+  slots.resize(slots_, 0.0);
+  return eval(root_, slots, shape);
+}
+
+double TimedExpression::eval(std::size_t index, std::vector<double>& values,
+                             const PulseShape* shape) const {
+  const Op& op = ops_[index];
+  switch (op.kind) {
+    case Op::constant:
+      return op.value;
+    case Op::variable:
+      return values[op.index];
+    case Op::add: {
+      double sum = 0.0;
+      for (const std::size_t k : op.kids) {
+        sum += eval(k, values, shape);
+      }
+      return sum;
+    }
+    case Op::mul: {
+      double product = 1.0;
+      for (const std::size_t k : op.kids) {
+        product *= eval(k, values, shape);
+      }
+      return product;
+    }
+    case Op::power: {
+      const double base = eval(op.kids[0], values, shape);
+      const double exponent = eval(op.kids[1], values, shape);
+      if (exponent == std::round(exponent) && std::abs(exponent) <= 64) {
+        double r = 1.0;
+        for (int k = 0; k < static_cast<int>(std::abs(exponent)); ++k) {
+          r *= base;
+        }
+        return exponent < 0 ? 1.0 / r : r;
+      }
+      return std::pow(base, exponent);
+    }
+    case Op::sin:
+      return std::sin(eval(op.kids[0], values, shape));
+    case Op::cos:
+      return std::cos(eval(op.kids[0], values, shape));
+    case Op::tan:
+      return std::tan(eval(op.kids[0], values, shape));
+    case Op::exp:
+      return std::exp(eval(op.kids[0], values, shape));
+    case Op::log:
+      return std::log(eval(op.kids[0], values, shape));
+    case Op::abs:
+      return std::abs(eval(op.kids[0], values, shape));
+    case Op::pulse: {
+      const double u = eval(op.kids[0], values, shape);
+      if (shape == nullptr) {
+        return 1.0;
+      }
+      return u < 0.0 || u > 1.0 ? 0.0 : shape->f(u);
+    }
+    case Op::integral: {
+      const double a = eval(op.kids[0], values, shape);
+      const double b = eval(op.kids[1], values, shape);
+      // Pieces between the pulse's kinks (in t: the kinks times the duration), each by a
+      // 24-point Gauss–Legendre rule: smooth pieces are integrated to rounding.
+      std::vector<double> cuts{a, b};
+      if (shape != nullptr && duration_slot_ < values.size()) {
+        const double duration = values[duration_slot_];
+        for (const double kink : shape->kinks) {
+          const double t = kink * duration;
+          if ((t - a) * (t - b) < 0) {
+            cuts.push_back(t);
+          }
+        }
+        for (const double end : {0.0, duration}) {  // the pulse starts and stops there
+          if ((end - a) * (end - b) < 0) {
+            cuts.push_back(end);
+          }
+        }
+      }
+      std::sort(cuts.begin(), cuts.end());
+      const double saved = values[op.index];
+      double total = 0.0;
+      for (std::size_t piece = 0; piece + 1 < cuts.size(); ++piece) {
+        const double lo = cuts[piece];
+        const double hi = cuts[piece + 1];
+        for (std::size_t k = 0; k < legendre().n; ++k) {
+          double x = 0.0;
+          double w = 0.0;
+          gsl_integration_glfixed_point(lo, hi, k, &x, &w, &legendre());
+          values[op.index] = x;
+          total += w * eval(op.kids[2], values, shape);
+        }
+      }
+      values[op.index] = saved;
+      return b < a ? -total : total;  // the pieces run from the smaller limit up
+    }
+  }
+  return std::nan("");
+}
+
+}  // namespace impulse::derivations::file

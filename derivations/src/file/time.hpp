@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Time in a derivation file (accepted beyond the contract, for the paper's §4 and §5): integrals
+// over the contact, the shape of the contact force, and the two readings of an expression that
+// holds them. The exact reading holds every force constant over the contact, as the paper's
+// integrations do, so that an integral of a polynomial in t is done by computer algebra. The
+// quadrature reading gives the force a shape (a pulse, chosen by a model) and integrates
+// numerically: what holds for a constant force only fails there.
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace impulse::derivations::file {
+
+/// The shape of a contact force: u = t / duration, mean 1 over [0, 1], zero outside.
+DECLARE_FUNCTION_1P(contact_pulse)
+
+/// The contact's duration inside a pulse's argument: a hidden symbol, given the value of dt when
+/// an expression is evaluated numerically.
+[[nodiscard]] const GiNaC::symbol& pulse_duration();
+
+/// Whether @p e holds an integral or a pulse (it then has two readings).
+[[nodiscard]] bool timed(const GiNaC::ex& e);
+
+/// The exact reading: every pulse is 1 (forces constant over the contact) and the integrals of
+/// polynomials are done. Throws std::invalid_argument naming the integrand when an integral is
+/// not of a polynomial.
+[[nodiscard]] GiNaC::ex exact_reading(const GiNaC::ex& e);
+
+/// A pulse shape for the quadrature reading.
+struct PulseShape {
+  std::string name;               ///< "half-sine"
+  double (*f)(double) = nullptr;  ///< the shape on [0, 1], mean 1
+  std::vector<double> kinks;      ///< where it is not smooth, in (0, 1)
+};
+
+/// An expression with integrals and pulses, compiled to evaluate numerically (Gauss–Legendre
+/// quadrature on each smooth piece). Sums, products, powers, sin, cos, tan, exp, log, abs.
+class TimedExpression {
+ public:
+  TimedExpression() = default;
+  /// Compiles @p e over @p symbols (every free symbol must be one of them; the pulse's duration
+  /// may be among them). Throws std::invalid_argument on anything else.
+  TimedExpression(const GiNaC::ex& e, const std::vector<GiNaC::ex>& symbols);
+  /// The value at @p values (one per symbol), the pulses shaped by @p shape (a constant force
+  /// when null).
+  [[nodiscard]] double operator()(std::span<const double> values, const PulseShape* shape) const;
+
+ private:
+  struct Op {
+    enum Kind {
+      constant,
+      variable,
+      add,
+      mul,
+      power,
+      sin,
+      cos,
+      tan,
+      exp,
+      log,
+      abs,
+      pulse,
+      integral
+    };
+    Kind kind = constant;
+    double value = 0.0;             // constant; the exponent of an integer power
+    std::size_t index = 0;          // variable slot; integral: the slot of its variable
+    std::vector<std::size_t> kids;  // operands; integral: lower, upper, integrand
+  };
+  std::size_t compile(const GiNaC::ex& e, std::vector<GiNaC::ex>& slots);
+  double eval(std::size_t op, std::vector<double>& values, const PulseShape* shape) const;
+
+  std::vector<Op> ops_;
+  std::size_t root_ = 0;
+  std::size_t slots_ = 0;
+  std::size_t duration_slot_ = static_cast<std::size_t>(-1);
+};
+
+}  // namespace impulse::derivations::file

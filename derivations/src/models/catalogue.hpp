@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The points functions of the models, one file per family (models.cpp names them).
+#pragma once
+
+#include <vector>
+
+#include "models/model.hpp"
+
+namespace impulse::derivations::models {
+
+// line.cpp: two bodies on a line.
+std::vector<Point> spring_contact_on_a_line(Probe&, const Settings&);
+std::vector<Point> damper_contact_on_a_line(Probe&, const Settings&);
+std::vector<Point> spring_damper_contact_on_a_line(Probe&, const Settings&);
+std::vector<Point> bodies_on_a_line_one_elasticity(Probe&, const Settings&);
+std::vector<Point> bodies_on_a_line_two_elasticities(Probe&, const Settings&);
+std::vector<Point> bodies_and_impulses_on_a_line(Probe&, const Settings&);
+std::vector<Point> changes_of_units_on_a_line(Probe&, const Settings&);
+
+// plane.cpp: point masses in the plane.
+std::vector<Point> base_turned_to_a_vector(Probe&, const Settings&);
+std::vector<Point> momenta_and_normals_in_the_plane(Probe&, const Settings&);
+std::vector<Point> pucks(Probe&, const Settings&);
+
+// rigid.cpp: rigid bodies of point masses, a rod on a penalty contact.
+std::vector<Point> point_cloud_rigid_body(Probe&, const Settings&);
+std::vector<Point> point_cloud_hit_at_several_points(Probe&, const Settings&);
+std::vector<Point> point_cloud_pinned(Probe&, const Settings&);
+std::vector<Point> turned_point(Probe&, const Settings&);
+std::vector<Point> rod_on_a_penalty_spring(Probe&, const Settings&);
+std::vector<Point> rod_on_a_penalty_damper(Probe&, const Settings&);
+
+// contacts.cpp: bodies in contact by the law of restitution.
+std::vector<Point> two_rigid_bodies_elastic(Probe&, const Settings&);
+std::vector<Point> two_rigid_bodies_inelastic(Probe&, const Settings&);
+std::vector<Point> two_rigid_bodies_one_elasticity(Probe&, const Settings&);
+
+}  // namespace impulse::derivations::models

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Named reference models: the physics a paper file calls on when algebra is not enough (a
+// contact simulated in continuous time, a body made of point masses, pulses of force, scenes of
+// many bodies, searches for counterexamples). A model knows nothing of the paper's formulas: it
+// produces points (values of the file's symbols, in the paper's notation, as its physics gives
+// them), and the engine evaluates the file's own statements there. A file chooses its models by
+// name:
+//
+//     ode: spring-damper contact on a line
+//
+// Adding a model: write its points function in a file of this folder and add it to the table in
+// models.cpp (method, name, what it sets, its tolerance).
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "file/time.hpp"
+
+namespace impulse::derivations::models {
+
+/// One value a model gives a symbol of the file: the symbol in the paper's notation ("m_1",
+/// "\\vec{p_1}", "F", "dt"), a number or a vector of the plane.
+struct Value {
+  std::string symbol;
+  bool vector = false;
+  double x = 0.0;
+  double y = 0.0;
+};
+
+/// A point: values of symbols, and (quadrature models) the shape of the contact force.
+struct Point {
+  std::vector<Value> values;
+  const file::PulseShape* pulse = nullptr;
+  /// Adds a number.
+  Point& set(std::string symbol, double x) {
+    values.push_back({std::move(symbol), false, x, 0.0});
+    return *this;
+  }
+  /// Adds a vector.
+  Point& set(std::string symbol, const Eigen::Vector2d& v) {
+    values.push_back({std::move(symbol), true, v.x(), v.y()});
+    return *this;
+  }
+};
+
+/// The engine's side: the file's expressions evaluated at a point (the definitions of the file
+/// substituted), for models that compute from what the file says (a system assembled from its
+/// coefficients, say).
+class Probe {
+ public:
+  virtual ~Probe() = default;
+  /// The value of the file's symbol @p symbol (a scalar, in the paper's notation) at @p point;
+  /// NaN when the point does not determine it.
+  [[nodiscard]] virtual double value(std::string_view symbol, const Point& point) = 0;
+};
+
+/// How many points a model makes, and from which seed.
+struct Settings {
+  std::uint64_t seed = 1;
+  std::size_t samples = 10000;
+  /// A share of the samples for a costlier model: samples / divisor, at least 1.
+  [[nodiscard]] std::size_t share(std::size_t divisor) const {
+    return samples / divisor > 0 ? samples / divisor : 1;
+  }
+};
+
+/// A named model.
+struct Model {
+  std::string_view method;             ///< "ode", "quadrature", "numeric" (`model:`) or "search"
+  std::string_view name;               ///< what a file writes after the method
+  std::string_view summary;            ///< one sentence: the physics, for the docs and the report
+  std::vector<std::string_view> sets;  ///< the symbols its points give values (for the docs)
+  double holds_below = 1e-9;           ///< worst relative residual of a statement that holds on it
+  double fails_above = 1e-6;           ///< smallest worst residual of one that does not
+  /// Symbols of the file a point leaves unset are drawn at random (quadrature models: they only
+  /// shape the force); otherwise they must follow from the equations before.
+  bool draws_the_rest = false;
+  std::vector<Point> (*points)(Probe& probe, const Settings& settings) = nullptr;
+};
+
+/// Every model, in the order of the docs.
+[[nodiscard]] const std::vector<Model>& all();
+
+/// The model a file names, or null.
+[[nodiscard]] const Model* find(std::string_view method, std::string_view name);
+
+}  // namespace impulse::derivations::models

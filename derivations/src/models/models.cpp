@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The table of models: what a paper file may name after ode:, quadrature:, model: and search:.
+#include "models/catalogue.hpp"
+#include "models/model.hpp"
+
+namespace impulse::derivations::models {
+
+const std::vector<Model>& all() {
+  static const std::vector<Model> table{
+      {"ode",
+       "linear spring contact on a line",
+       "Two bodies on a line meet; while they overlap a linear spring pushes them apart (GSL "
+       "rk8pd until the overlap is gone); the impulse is the time integral of the spring's force "
+       "sampled along the motion (Simpson's rule), the momenta after come from the velocities at "
+       "the end.",
+       {"m_1", "m_2", "p_1", "p_2", "p_1'", "p_2'", "\\vec{p_1}", "\\vec{p_2}", "\\vec{p_1'}",
+        "\\vec{p_2'}", "F", "\\vec{F}", "dt"},
+       1e-9,
+       1e-6,
+       false,
+       spring_contact_on_a_line},
+      {"ode",
+       "damper contact on a line",
+       "As the linear spring, with a damper alone (force proportional to the closing speed): the "
+       "contact ends when the bodies stop closing.",
+       {"m_1", "m_2", "p_1", "p_2", "p_1'", "p_2'", "F", "dt"},
+       1e-9,
+       1e-6,
+       false,
+       damper_contact_on_a_line},
+      {"ode",
+       "spring-damper contact on a line",
+       "A linear spring and damper of damping ratio 0.05, 0.2 or 0.5: the textbook coefficient "
+       "of restitution exp(-z pi / sqrt(1 - z^2)) gives elasticity_1 = elasticity_2 = 1 + that "
+       "coefficient.",
+       {"m_1", "m_2", "p_1", "p_2", "p_1'", "p_2'", "F", "dt", "elasticity_1", "elasticity_2",
+        "elasticity"},
+       1e-9,
+       1e-6,
+       false,
+       spring_damper_contact_on_a_line},
+      {"search",
+       "bodies on a line, one elasticity",
+       "Approaching bodies on a line (small whole numbers first, then masses from 1e-3 to 1e3 "
+       "and speeds up to 10) with one elasticity for both, from -3 to 10 (0, 1 and 2 included).",
+       {"m_1", "m_2", "p_1", "p_2", "elasticity", "elasticity_1", "elasticity_2", "dt"},
+       1e-9,
+       1e-6,
+       false,
+       bodies_on_a_line_one_elasticity},
+      {"search",
+       "bodies on a line, two elasticities",
+       "Approaching bodies on a line with an elasticity each, from 1 to 2 (the pairs 2, 1 and "
+       "1, 2 on small whole numbers first).",
+       {"m_1", "m_2", "p_1", "p_2", "elasticity_1", "elasticity_2", "dt"},
+       1e-9,
+       1e-6,
+       false,
+       bodies_on_a_line_two_elasticities},
+      {"search",
+       "bodies and impulses on a line",
+       "Bodies on a line and any impulse between them, from -1e6 to 1e6.",
+       {"m_1", "m_2", "p_1", "p_2", "F", "dt"},
+       1e-9,
+       1e-6,
+       false,
+       bodies_and_impulses_on_a_line},
+      {"numeric",
+       "changes of units on a line",
+       "Bodies on a line seen in other units of mass, length and time (each changed by a factor "
+       "from 1e-3 to 1e3): the same quantities, numbered with a tilde, in the new units.",
+       {"m_1", "m_2", "p_1", "p_2", "\\tilde{m}_1", "\\tilde{m}_2", "\\tilde{p}_1", "\\tilde{p}_2",
+        "\\mu", "\\lambda"},
+       1e-9,
+       1e-6,
+       false,
+       changes_of_units_on_a_line},
+      {"numeric",
+       "a base turned to a vector",
+       "Vectors of the plane and their coordinates in a base turned to a direction: the rotation "
+       "of Eigen::Rotation2D by minus the direction's angle, not a dot product. The coordinate of "
+       "x along v is cast_v, that of p along the unit normal n (also given as tau = tan(angle/2)) "
+       "is p_n.",
+       {"\\vec{x}", "\\vec{v}", "\\mathrm{cast}_v", "\\vec{p}", "\\vec{n}", "\\tau", "p_n"},
+       1e-9,
+       1e-6,
+       false,
+       base_turned_to_a_vector},
+      {"search",
+       "momenta and normals in the plane",
+       "A momentum and a unit normal (with tau = tan(angle/2)): first p = (0, 2) against n = (1, "
+       "0), then random ones, every fourth along the contact's tangent.",
+       {"\\vec{p}", "\\vec{n}", "\\tau"},
+       1e-9,
+       1e-6,
+       false,
+       momenta_and_normals_in_the_plane},
+      {"search",
+       "pucks",
+       "Two point masses in the plane (masses 1e-3 to 1e3, any momenta), the bumper's outward "
+       "normal n (and tau), one elasticity for both (2, 1 or from 0 to 3); first the bumper at "
+       "(-1, 0) caught up by the wedge at (-3, 0) against n = (1, 0).",
+       {"m_1", "m_2", "\\vec{p_1}", "\\vec{p_2}", "\\vec{n}", "\\tau", "\\mathit{elasticity}_1",
+        "\\mathit{elasticity}_2", "dt"},
+       1e-9,
+       1e-6,
+       false,
+       pucks},
+      {"numeric",
+       "point cloud rigid body",
+       "A rigid body made of 3 to 6 point masses: its mass, inertia, momentum, angular momentum "
+       "and kinetic energy summed point by point; an impulse -n F dt at one of its points (arm "
+       "r), the body's response by Gauss's principle (the rigid motion nearest, in the mass "
+       "metric, to the points' free response); the point's velocity before and after by a "
+       "complex-step derivative of its motion, and its parts: v_t the centre's velocity, v_r "
+       "the rest.",
+       {"m", "I", "\\vec{p}", "L", "E_k", "E_k'", "\\vec{r}", "\\vec{n}", "F", "dt", "\\vec{F}",
+        "\\vec{v_v}", "\\vec{v_v'}", "\\omega", "\\vec{v}", "\\vec{v_r}", "\\vec{v_t}"},
+       1e-9,
+       1e-6,
+       false,
+       point_cloud_rigid_body},
+      {"numeric",
+       "point cloud rigid body hit at several points",
+       "The body of point masses receiving impulses -n_k F_k dt at three of its points (arms "
+       "r_1, r_2, r_3): its angular momentum's change dL summed point by point after Gauss's "
+       "principle, and the velocity of a fourth point (arm r_v) after, split into the centre's "
+       "v'_vt and the rest v'_vr.",
+       {"m", "I", "\\vec{p}", "L", "dt", "\\vec{r_k}", "\\vec{n_k}", "F_k", "\\vec{F_k}",
+        "\\mathrm{d}L", "\\vec{r_v}", "\\vec{v_{vt}'}", "\\vec{v_{vr}'}"},
+       1e-9,
+       1e-6,
+       false,
+       point_cloud_hit_at_several_points},
+      {"numeric",
+       "point cloud pinned",
+       "Point masses turning together about a pin O: the kinetic energy E, angular momentum L_O "
+       "and inertia I_O about O summed point by point, the inertia I about the centre of mass, "
+       "the mass m and the distance d from O to the centre.",
+       {"E", "L_O", "I_O", "I", "m", "d"},
+       1e-9,
+       1e-6,
+       false,
+       point_cloud_pinned},
+      {"numeric",
+       "turned point",
+       "A material point at arm r_v turned by a small angle d alpha: its displacement along a "
+       "unit normal n_v, d S_v, from the complex-step derivative of its rotation.",
+       {"\\vec{r_v}", "\\vec{n_v}", "\\mathrm{d}\\alpha", "\\mathrm{d}S_v"},
+       1e-9,
+       1e-6,
+       false,
+       turned_point},
+      {"ode",
+       "rigid rod on a penalty spring",
+       "A uniform rod falls, turning, onto a ground tilted by up to 0.3 rad; while its end is "
+       "below the ground a stiff linear spring (1e14 times its mass) pushes it out along the "
+       "ground's normal (GSL rk8pd). The impulse is the push's integral sampled along the motion; "
+       "r is the end's arm when it touches, n the rod's outward normal there (minus the "
+       "ground's); the ground does not move (E_o = E_o' = 0). The rod turns a little while it "
+       "is pushed, so the instant impulse is matched to about 1e-7.",
+       {"m", "I", "\\vec{p}", "L", "\\vec{r}", "\\vec{n}", "F", "dt", "\\vec{F}", "E_k", "E_k'",
+        "E_o", "E_o'"},
+       1e-6,
+       1e-3,
+       false,
+       rod_on_a_penalty_spring},
+      {"ode",
+       "rigid rod on a penalty damper",
+       "As the rod on a spring, held by a damper (1e8 times its mass) that stops its end: the "
+       "contact ends when the end stops sinking.",
+       {"m", "I", "\\vec{p}", "L", "\\vec{r}", "\\vec{n}", "F", "dt", "\\vec{F}", "E_k", "E_k'",
+        "E_o", "E_o'"},
+       1e-6,
+       1e-3,
+       false,
+       rod_on_a_penalty_damper},
+      {"numeric",
+       "two rigid bodies at one contact, elastic",
+       "Two rigid bodies touching at one point (masses 1e-3 to 1e3, radii of gyration on the "
+       "scale of their arms), resolved by the law of restitution with elasticity 2 from the "
+       "contact Jacobian: the body's m, I, p, L, arm r and outward normal n, the other's m_o, "
+       "I_o, p_o, L_o and arm r_o, the impulse F (dt = 1), the contact points' velocities after "
+       "(v_v', v_o' and their parts along n, v'_vn and v'_on) and the kinetic energies.",
+       {"m",           "I",
+        "\\vec{p}",    "L",
+        "\\vec{r}",    "\\vec{n}",
+        "m_o",         "I_o",
+        "\\vec{p_o}",  "L_o",
+        "\\vec{r_o}",  "F",
+        "dt",          "\\vec{v_v'}",
+        "\\vec{v_o'}", "v'_{vn}",
+        "v'_{on}",     "E_k",
+        "E_k'",        "E_o",
+        "E_o'",        "\\mathit{elasticity}"},
+       1e-9,
+       1e-6,
+       false,
+       two_rigid_bodies_elastic},
+      {"numeric",
+       "two rigid bodies at one contact, inelastic",
+       "The same, with elasticity 1: the contact points leave with one velocity along the normal.",
+       {"(as the elastic one)"},
+       1e-9,
+       1e-6,
+       false,
+       two_rigid_bodies_inelastic},
+      {"numeric",
+       "two rigid bodies at one contact, one elasticity",
+       "The same, with one elasticity for both bodies drawn from 0 to 3.",
+       {"(as the elastic one)"},
+       1e-9,
+       1e-6,
+       false,
+       two_rigid_bodies_one_elasticity},
+  };
+  return table;
+}
+
+const Model* find(std::string_view method, std::string_view name) {
+  for (const Model& m : all()) {
+    if (m.method == method && m.name == name) {
+      return &m;
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace impulse::derivations::models
