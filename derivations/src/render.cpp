@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "derivations/check.hpp"
@@ -153,6 +154,25 @@ const char* mark(Status status) {
   return "";
 }
 
+// A statement as MathJax 2 displays it: the statement keeps its \tag where the paper's file puts
+// it (inside a gathered block, say), which MathJax refuses there; the tag goes to the end, the
+// \labels (names the files give rows for their evidence) go, and rows without an environment of
+// their own are gathered. (docs/cmake/prepare_site.cmake does the same for the section pages.)
+std::string displayed(const Check& check) {
+  static const std::regex tag(R"(\\tag\{[^}]*\})");
+  static const std::regex tag_or_label(R"(\\(tag|label)\{[^}]*\})");
+  std::smatch found;
+  std::string shown_tag;
+  if (std::regex_search(check.statement, found, tag)) {
+    shown_tag = found.str();
+  }
+  std::string shown = std::regex_replace(check.statement, tag_or_label, "");
+  if (shown.find("\\\\") != std::string::npos && shown.find("\\begin{") == std::string::npos) {
+    shown = "\\begin{gathered} " + shown + " \\end{gathered}";
+  }
+  return shown_tag.empty() ? shown : shown + " " + shown_tag;
+}
+
 // Markdown for the Doxygen site: math in \f[ \f], each check a heading with an anchor.
 std::string render_markdown(const Report& report) {
   std::ostringstream out;
@@ -178,7 +198,7 @@ std::string render_markdown(const Report& report) {
     }
     out << "\n### " << r.check.id << (r.check.equation ? " " + *r.check.equation : "") << " {#"
         << anchor(r.check.id) << "}\n\n"
-        << "\\f[ " << r.check.statement << " \\f]\n\n"
+        << "\\f[ " << displayed(r.check) << " \\f]\n\n"
         << "- kind: " << to_string(r.check.kind) << "\n"
         << "- status: " << mark(r.outcome.status) << "\n"
         << "- methods: " << methods_list(r.outcome.methods) << "\n";

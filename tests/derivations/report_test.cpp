@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <set>
 #include <string>
 
@@ -99,7 +100,15 @@ TEST_CASE("Markdown report: a heading with an anchor and the math for every chec
   for (const auto& r : report().results) {
     CAPTURE(r.check.id);
     CHECK(count(md, "{#" + check::anchor(r.check.id) + "}") == 1);
-    CHECK(count(md, r.check.statement) >= 1);
+    // The statement as the checker read it, but its \tag at the end of the display (MathJax 2
+    // refuses one inside an environment; the docs' browser test sees that) and without \labels.
+    static const std::regex tag(R"(\\tag\{[^}]*\})");
+    static const std::regex tag_or_label(R"(\\(tag|label)\{[^}]*\})");
+    CHECK(count(md, std::regex_replace(r.check.statement, tag_or_label, "")) >= 1);
+    std::smatch found;
+    if (std::regex_search(r.check.statement, found, tag)) {
+      CHECK(count(md, found.str() + " \\f]") == 1);
+    }
   }
   CHECK(check::anchor("eq-1.1") == "check-eq-1-1");
   // Doxygen math is \f$ ... \f$ or \f[ ... \f]: every dollar sign belongs to a \f$.
