@@ -180,7 +180,6 @@ class FileRun : public models::Probe {
   ReadFile& read_;
   Symbols& symbols_;
   const Options& options_;
-  std::uint64_t seed_ = 1;
   // Probe::value: the definitions in force at the check, and its facts.
   GiNaC::exmap probe_substitutions_;
   std::map<std::string, std::vector<ex>> names_;  // a model's names, read once
