@@ -235,20 +235,6 @@ double FileRun::value(std::string_view symbol, const models::Point& point) {
 
 // ---- a model's points against the file's statements -----------------------------------------
 
-double draw(num::Random& random, Sign sign) {
-  const double magnitude = random.log_uniform(0.2, 5.0);
-  switch (sign) {
-    case Sign::positive:
-    case Sign::nonnegative:
-      return magnitude;
-    case Sign::negative:
-    case Sign::nonpositive:
-      return -magnitude;
-    default:
-      return random.coin() ? magnitude : -magnitude;
-  }
-}
-
 // The force symbols outside integrals shaped by the pulse at the instant t (inside an integral
 // the reader has shaped them already).
 struct ShapeOutsideIntegrals : GiNaC::map_function {
@@ -678,10 +664,10 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
       }
     }
     for (const std::size_t slot : p.drawn) {
-      values[slot] = draw(random, facts.of_symbol(symbols[slot]));
+      values[slot] = draw_with_sign(random, facts.of_symbol(symbols[slot]));
     }
     for (const std::size_t slot : p.solved) {
-      values[slot] = draw(random, facts.of_symbol(symbols[slot]));
+      values[slot] = draw_with_sign(random, facts.of_symbol(symbols[slot]));
     }
     // The pulse's time scale: the duration dt, or for an instant a duration of its own.
     const auto tau = index_of(pulse_duration());

@@ -423,19 +423,7 @@ class Sampler {
     return names;
   }
 
-  double draw_value(Sign sign) {
-    const double magnitude = random_.log_uniform(0.2, 5.0);
-    switch (sign) {
-      case Sign::positive:
-      case Sign::nonnegative:
-        return magnitude;
-      case Sign::negative:
-      case Sign::nonpositive:
-        return -magnitude;
-      default:
-        return random_.coin() ? magnitude : -magnitude;
-    }
-  }
+  double draw_value(Sign sign) { return draw_with_sign(random_, sign); }
 
   void draw() {
     for (std::size_t i = 0; i < symbols_.size(); ++i) {
@@ -496,6 +484,20 @@ NumericOpinion sample(const NumericProblem& problem, const Facts& facts, std::ui
   num::quiet_gsl();
   Sampler sampler(problem, facts, seed);
   return sampler.run(points);
+}
+
+double draw_with_sign(num::Random& random, Sign sign) {
+  const double magnitude = random.log_uniform(0.2, 5.0);
+  switch (sign) {
+    case Sign::positive:
+    case Sign::nonnegative:
+      return magnitude;
+    case Sign::negative:
+    case Sign::nonpositive:
+      return -magnitude;
+    default:
+      return random.coin() ? magnitude : -magnitude;
+  }
 }
 
 }  // namespace impulse::derivations::file

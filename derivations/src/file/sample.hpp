@@ -76,4 +76,11 @@ class Solver {
 /// of their terms, its products multiply them (the terms that cancel in floating point).
 [[nodiscard]] GiNaC::ex term_scale(const GiNaC::ex& e);
 
+/// @brief A sample value of a symbol: a magnitude drawn log-uniformly in [0.2, 5], with the sign
+/// the facts give it (either sign, at random, when they give none).
+/// @param random the generator
+/// @param sign what the facts say of the symbol's sign
+/// @return the value
+double draw_with_sign(num::Random& random, Sign sign);
+
 }  // namespace impulse::derivations::file
