@@ -174,13 +174,19 @@ Point rod_on_ground(num::Random& r, bool spring) {
   }
   const double k = spring ? 1e14 * m : 0.0;
   const double c = spring ? 0.0 : 1e8 * m;
-  // y = [x, y, angle, vx, vy, w]
+  // y = [x, y, turn, vx, vy, w]: the centre's displacement and the angle turned since t = 0.
+  // The depth (about 1e-8) is the small displacement of the end, written without subtracting
+  // numbers of size l: end_of(theta + d) - end_of(theta) by the sum-to-product identities. As a
+  // difference of the end's coordinates its rounding (1e-16 of l) would be 1e-8 of the force,
+  // noise the ODE solver's error control chases with tiny steps.
   const auto depth_of = [&](const double* y, double& sinking) {
-    const Vector2d arm = end_of(y[2]);
-    const Vector2d end = Vector2d(y[0], y[1]) + arm;
+    const Vector2d arm = end_of(theta + y[2]);
+    const double half = std::sin(y[2] / 2);
+    const Vector2d moved(2 * l * std::sin(theta + y[2] / 2) * half,
+                         -2 * l * std::cos(theta + y[2] / 2) * half);
     const Vector2d velocity = Vector2d(y[3], y[4]) + y[5] * Vector2d(-arm.y(), arm.x());
     sinking = -velocity.dot(g);
-    return -(end - touch).dot(g);
+    return -(Vector2d(y[0], y[1]) + moved).dot(g);
   };
   const auto push = [&](const double* y) {  // along g, on the rod
     double sinking = 0.0;
@@ -189,7 +195,7 @@ Point rod_on_ground(num::Random& r, bool spring) {
   };
   const num::OdeRhs rhs = [&](double, const double* y, double* dy) {
     const Vector2d f = push(y) * g;
-    const Vector2d arm = end_of(y[2]);
+    const Vector2d arm = end_of(theta + y[2]);
     dy[0] = y[3];
     dy[1] = y[4];
     dy[2] = y[5];
@@ -197,7 +203,7 @@ Point rod_on_ground(num::Random& r, bool spring) {
     dy[4] = f.y() / m;
     dy[5] = cross(arm, f) / I;
   };
-  const std::vector<double> start{0, 0, theta, v0.x(), v0.y(), w0};
+  const std::vector<double> start{0, 0, 0, v0.x(), v0.y(), w0};
   const double scale = spring ? std::sqrt(1.0 / 1e14) : 1.0 / 1e8;
   const num::OdeEvent ended = [&](double t, const double* y) {
     if (t <= 0) {
