@@ -4,6 +4,7 @@
 #include <gsl/gsl_integration.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -132,6 +133,7 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
     op.kids.push_back(compile(e.op(1), slots));
   } else if (GiNaC::is_a<GiNaC::integral>(e)) {
     op.kind = Op::integral;
+    integrals_ = true;
     op.index = slots.size();
     op.kids.push_back(compile(e.op(1), slots));
     op.kids.push_back(compile(e.op(2), slots));
@@ -169,12 +171,95 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
 }
 
 double TimedExpression::operator()(std::span<const double> values, const PulseShape* shape) const {
+  if (!integrals_ && values.size() >= slots_) {
+    return sweep(values, shape);
+  }
   std::vector<double> slots(values.begin(), values.end());
   slots.resize(slots_, 0.0);
   return eval(root_, slots, shape);
 }
 
-double TimedExpression::eval(std::size_t index, std::vector<double>& values,
+double TimedExpression::sweep(std::span<const double> values, const PulseShape* shape) const {
+  constexpr std::size_t on_stack = 256;
+  std::array<double, on_stack> small{};
+  const std::unique_ptr<double[]> large(ops_.size() > on_stack ? new double[ops_.size()] : nullptr);
+  double* results = large ? large.get() : small.data();
+  std::array<double, 2> operands{};
+  for (std::size_t i = 0; i < ops_.size(); ++i) {
+    const Op& op = ops_[i];
+    switch (op.kind) {
+      case Op::constant:
+        results[i] = op.value;
+        break;
+      case Op::variable:
+        results[i] = values[op.index];
+        break;
+      case Op::add: {
+        double sum = 0.0;
+        for (const std::size_t k : op.kids) {
+          sum += results[k];
+        }
+        results[i] = sum;
+        break;
+      }
+      case Op::mul: {
+        double product = 1.0;
+        for (const std::size_t k : op.kids) {
+          product *= results[k];
+        }
+        results[i] = product;
+        break;
+      }
+      default:
+        for (std::size_t k = 0; k < op.kids.size() && k < operands.size(); ++k) {
+          operands[k] = results[op.kids[k]];
+        }
+        results[i] = apply(op, operands.data(), shape);
+        break;
+    }
+  }
+  return results[root_];
+}
+
+double TimedExpression::apply(const Op& op, const double* operands, const PulseShape* shape) const {
+  switch (op.kind) {
+    case Op::power: {
+      const double base = operands[0];
+      const double exponent = operands[1];
+      if (exponent == std::round(exponent) && std::abs(exponent) <= 64) {
+        double r = 1.0;
+        for (int k = 0; k < static_cast<int>(std::abs(exponent)); ++k) {
+          r *= base;
+        }
+        return exponent < 0 ? 1.0 / r : r;
+      }
+      return std::pow(base, exponent);
+    }
+    case Op::sin:
+      return std::sin(operands[0]);
+    case Op::cos:
+      return std::cos(operands[0]);
+    case Op::tan:
+      return std::tan(operands[0]);
+    case Op::exp:
+      return std::exp(operands[0]);
+    case Op::log:
+      return std::log(operands[0]);
+    case Op::abs:
+      return std::abs(operands[0]);
+    case Op::pulse: {
+      const double u = operands[0];
+      if (shape == nullptr) {
+        return 1.0;
+      }
+      return u < 0.0 || u > 1.0 ? 0.0 : shape->f(u);
+    }
+    default:
+      return std::nan("");
+  }
+}
+
+double TimedExpression::eval(std::size_t index, std::span<double> values,
                              const PulseShape* shape) const {
   const Op& op = ops_[index];
   switch (op.kind) {
@@ -195,37 +280,6 @@ double TimedExpression::eval(std::size_t index, std::vector<double>& values,
         product *= eval(k, values, shape);
       }
       return product;
-    }
-    case Op::power: {
-      const double base = eval(op.kids[0], values, shape);
-      const double exponent = eval(op.kids[1], values, shape);
-      if (exponent == std::round(exponent) && std::abs(exponent) <= 64) {
-        double r = 1.0;
-        for (int k = 0; k < static_cast<int>(std::abs(exponent)); ++k) {
-          r *= base;
-        }
-        return exponent < 0 ? 1.0 / r : r;
-      }
-      return std::pow(base, exponent);
-    }
-    case Op::sin:
-      return std::sin(eval(op.kids[0], values, shape));
-    case Op::cos:
-      return std::cos(eval(op.kids[0], values, shape));
-    case Op::tan:
-      return std::tan(eval(op.kids[0], values, shape));
-    case Op::exp:
-      return std::exp(eval(op.kids[0], values, shape));
-    case Op::log:
-      return std::log(eval(op.kids[0], values, shape));
-    case Op::abs:
-      return std::abs(eval(op.kids[0], values, shape));
-    case Op::pulse: {
-      const double u = eval(op.kids[0], values, shape);
-      if (shape == nullptr) {
-        return 1.0;
-      }
-      return u < 0.0 || u > 1.0 ? 0.0 : shape->f(u);
     }
     case Op::integral: {
       const double a = eval(op.kids[0], values, shape);
@@ -264,8 +318,14 @@ double TimedExpression::eval(std::size_t index, std::vector<double>& values,
       values[op.index] = saved;
       return b < a ? -total : total;  // the pieces run from the smaller limit up
     }
+    default: {
+      std::array<double, 2> operands{};
+      for (std::size_t k = 0; k < op.kids.size() && k < operands.size(); ++k) {
+        operands[k] = eval(op.kids[k], values, shape);
+      }
+      return apply(op, operands.data(), shape);
+    }
   }
-  return std::nan("");
 }
 
 }  // namespace impulse::derivations::file

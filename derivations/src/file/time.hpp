@@ -73,9 +73,14 @@ class TimedExpression {
     std::vector<std::size_t> kids;  // operands; integral: lower, upper, integrand
   };
   std::size_t compile(const GiNaC::ex& e, std::vector<GiNaC::ex>& slots);
-  double eval(std::size_t op, std::vector<double>& values, const PulseShape* shape) const;
+  double eval(std::size_t op, std::span<double> values, const PulseShape* shape) const;
+  // Without integrals: every operation once, in order (operands come before their operation).
+  double sweep(std::span<const double> values, const PulseShape* shape) const;
+  // One operation, its operands' values at hand.
+  double apply(const Op& op, const double* operands, const PulseShape* shape) const;
 
   std::vector<Op> ops_;
+  bool integrals_ = false;
   std::size_t root_ = 0;
   std::size_t slots_ = 0;
   std::size_t duration_slot_ = static_cast<std::size_t>(-1);
