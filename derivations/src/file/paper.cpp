@@ -259,10 +259,12 @@ ex shaped_outside_integrals(const ex& e, const GiNaC::exmap& shaped) {
 
 // One relation at a point: its sides are sides[slot] (left), then the right side or the members,
 // then the size of the terms. Whether it holds, and whether that is sure (not within the rounding
-// band between 1e-9 and 1e-6 of the terms' size).
+// band between 1e-9 and 1e-6 of the terms' size). When it does not hold and @p shown is given, the
+// sides as text for a counterexample (formatting them costs more than the rest, so only the first
+// failure of a claim asks).
 bool compare_holds(const Compare& c, const std::vector<double>& values,
                    const std::vector<TimedExpression>& sides, std::size_t& slot,
-                   std::optional<bool>& conclusive_result, std::string& shown) {
+                   std::optional<bool>& conclusive_result, std::string* shown) {
   using K = Relation::Kind;
   const bool membership = c.kind == K::in_set || c.kind == K::in_range;
   const double left = sides[slot](values, nullptr);
@@ -276,7 +278,9 @@ bool compare_holds(const Compare& c, const std::vector<double>& values,
   if (!std::isfinite(left) || !std::isfinite(terms) ||
       !std::all_of(others.begin(), others.end(), [](double x) { return std::isfinite(x); })) {
     conclusive_result = std::nullopt;
-    shown = "not finite";
+    if (shown != nullptr) {
+      *shown = "not finite";
+    }
     return false;
   }
   bool holds = false;
@@ -312,8 +316,8 @@ bool compare_holds(const Compare& c, const std::vector<double>& values,
       default:
         break;
     }
-    if (!holds) {  // the sides, for a counterexample (formatting them costs more than the rest)
-      shown = shown_number(left) + " and " + shown_number(others[0]);
+    if (!holds && shown != nullptr) {
+      *shown = shown_number(left) + " and " + shown_number(others[0]);
     }
   } else if (c.kind == K::in_set) {
     holds = std::any_of(others.begin(), others.end(),
@@ -431,12 +435,25 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
   num::Random random(check_seed(options_.seed, g.id + "/" + use.name) ^ 0x5DEECE66DULL);
   const std::map<std::string, std::vector<ex>> no_lookup;
 
+  const models::Point* last_point = nullptr;  // the last point prepared, and what it gave
+  Prepared* last_prepared = nullptr;
   const auto prepare = [&](const models::Point& point) -> Prepared& {
+    // Most models give every point the same names: then the last point's preparation serves.
+    if (last_point != nullptr && last_point->values.size() == point.values.size() &&
+        std::equal(
+            point.values.begin(), point.values.end(), last_point->values.begin(),
+            [](const models::Value& a, const models::Value& b) { return a.symbol == b.symbol; })) {
+      last_point = &point;
+      return *last_prepared;
+    }
     std::string key;
     for (const models::Value& v : point.values) {
-      key += v.symbol + '\n';
+      key += v.symbol;
+      key += '\n';
     }
+    last_point = &point;
     if (const auto found = cache.find(key); found != cache.end()) {
+      last_prepared = &found->second;
       return found->second;
     }
     Prepared p;
@@ -646,7 +663,8 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
                                           g.id + ": it does not give " + names +
                                           " a value, nor do the equations before");
     }
-    return cache.emplace(key, std::move(p)).first->second;
+    last_prepared = &cache.emplace(key, std::move(p)).first->second;
+    return *last_prepared;
   };
 
   std::vector<double> values(symbols.size(), 0.0);
@@ -723,30 +741,39 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
     for (std::size_t r = 0; r < rows && hypotheses != nullptr; ++r) {
       for (const Compare& c : (*hypotheses)[r]) {
         std::optional<bool> sure;
-        std::string shown;
-        if (!compare_holds(c, values, p.sides, slot, sure, shown)) {
+        if (!compare_holds(c, values, p.sides, slot, sure, nullptr)) {
           applies[r] = false;
         }
       }
     }
     bool counted = false;
     for (std::size_t r = 0; r < rows; ++r) {
+      if (!applies[r]) {  // the row says nothing here: its sides are not evaluated
+        for (const Compare& c : (*conclusions)[r]) {
+          slot += 2 + (c.kind == Relation::Kind::in_set || c.kind == Relation::Kind::in_range
+                           ? c.members.size()
+                           : 1);
+        }
+        continue;
+      }
       bool every = true;
       bool sure_all = true;
       std::string failure;
+      const bool explain = f.row_first_failure[r].empty();
       for (const Compare& c : (*conclusions)[r]) {
         std::optional<bool> sure;
         std::string shown;
-        const bool holds = compare_holds(c, values, p.sides, slot, sure, shown);
+        const bool holds =
+            compare_holds(c, values, p.sides, slot, sure, explain ? &shown : nullptr);
         if (!sure) {
           sure_all = false;
         }
-        if (!holds && failure.empty()) {
+        if (!holds && failure.empty() && explain) {
           failure = c.text + " fails (its sides: " + shown + ")";
         }
         every = every && holds;
       }
-      if (!applies[r] || !sure_all) {
+      if (!sure_all) {
         continue;
       }
       counted = true;
