@@ -709,6 +709,27 @@ Meaning Symbols::meaning(const Node& node) {
           return acc;
         }
         case NodeKind::fraction: {
+          // dy/dx with d a plain letter would be read as the product d y over d x, which
+          // cancels to y/x: a derivative silently misread. Refused instead.
+          const auto plain_d = [&](const Node& x) {
+            const auto is_d = [](const Node& c) {
+              return c.kind == NodeKind::symbol && c.symbol.base == "d" &&
+                     c.symbol.subscript.empty() && c.symbol.primes == 0 && !c.symbol.delta &&
+                     !c.symbol.accent;
+            };
+            if (is_d(x)) {
+              return true;
+            }
+            return x.kind == NodeKind::product && x.children.size() >= 2 && is_d(x.children[0]) &&
+                   x.ops.size() >= 2 && x.ops[1] == ' ' && x.children[1].kind == NodeKind::symbol &&
+                   !differentials_.contains(resolve(x.children[1].symbol).unprimed().latex());
+          };
+          if (plain_d(n.children[0]) && plain_d(n.children[1])) {
+            throw error(n.offset,
+                        "expected no derivative: the checker does not read \\frac{d…}{d…} (it "
+                        "would be d times … over d times …); write the relation between the "
+                        "quantities themselves, or declare small changes with differentials:");
+          }
           const Value top = eval(n.children[0]);
           const Value bottom = eval(n.children[1]);
           if (bottom.vector || bottom.block()) {
