@@ -659,9 +659,13 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
       for (const std::size_t u : undetermined) {
         names += (names.empty() ? "" : ", ") + symbol_text(symbols_, symbols[u]);
       }
-      throw source_.error(use.offset, "expected the model " + use.name + " to test something in " +
-                                          g.id + ": it does not give " + names +
-                                          " a value, nor do the equations before");
+      throw source_.error(
+          use.offset,
+          "expected the model " + use.name + " to test something in " + g.id +
+              (names.empty()
+                   ? ": each statement there is an equation the model's values were "
+                     "solved with, which holds by construction"
+                   : ": it does not give " + names + " a value, nor do the equations before"));
     }
     last_prepared = &cache.emplace(key, std::move(p)).first->second;
     return *last_prepared;
