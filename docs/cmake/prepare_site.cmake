@@ -72,7 +72,7 @@ foreach(i RANGE ${last})
   string(JSON kind GET "${check}" kind)
   string(JSON section GET "${check}" section)
   member("${check}" equation equation)
-  member("${check}" statement statement)
+  member("${check}" display display)
   member("${check}" correction correction)
   member("${check}" counterexample counterexample)
   member("${check}" explanation explanation)
@@ -96,21 +96,9 @@ foreach(i RANGE ${last})
     set(label "${equation}")
   endif()
   set(verdict_${id} "<span class=\"verdict ${status}\">\\ref ${anchor} \"${status}\"</span>")
-  # The statement as the checker read it (derivations/paper/sectionN.md): the page's display.
-  # Its \tag goes to the end and its \labels (names for the file's evidence) go; rows without an
-  # environment of their own are gathered.
-  set(shown "${statement}")
-  string(REGEX MATCH "\\\\tag{[^}]*}" shown_tag "${shown}")
-  string(REGEX REPLACE "\\\\(tag|label){[^}]*}" "" shown "${shown}")
-  if(shown_tag STREQUAL "" AND equation MATCHES "^\\((.*)\\)$")
-    set(shown_tag "\\tag{${CMAKE_MATCH_1}}")
-  endif()
-  string(FIND "${shown}" "\\\\" rows)
-  string(FIND "${shown}" "\\begin{" environment)
-  if(rows GREATER -1 AND environment EQUAL -1)
-    set(shown "\\begin{gathered} ${shown} \\end{gathered}")
-  endif()
-  set(statement_${id} "\\f[ ${shown} ${shown_tag} \\f]")
+  # The statement as the checker read it (derivations/paper/sectionN.md), arranged for MathJax by
+  # the checker itself (the report's "display": tag at the end, labels gone, rows gathered).
+  set(statement_${id} "\\f[ ${display} \\f]")
   string(CONCAT block "<div class=\"check ${status}\">\n<b>Check</b> <code>${id}</code> (${kind}): "
                      "${verdict_${id}} by ${methods}.")
   if(NOT correction STREQUAL "")
@@ -125,7 +113,7 @@ foreach(i RANGE ${last})
   if(status STREQUAL "erratum" OR status STREQUAL "refuted")
     string(APPEND errata_list
       "\n### ${label}, section ${section}: ${status}\n\n"
-      "As printed (check \\ref ${anchor} \"${id}\", kind: ${kind}):\n\n\\f[ ${statement} \\f]\n\n"
+      "As printed (check \\ref ${anchor} \"${id}\", kind: ${kind}):\n\n\\f[ ${display} \\f]\n\n"
       "What goes wrong: ${explanation}\n\n")
     if(NOT correction STREQUAL "")
       string(APPEND errata_list "What holds instead:\n\n\\f[ ${correction} \\f]\n")

@@ -67,6 +67,19 @@ TEST_CASE("JSON report: the contract's fields and values", "[derivations]") {
     }
     // Numbered equations carry their label; steps and claims do not.
     REQUIRE((c.at("kind") == "equation") == c.at("equation").is_string());
+    // The display (beyond the contract; the docs' pages show it): one \tag, the check's own
+    // label, at the very end, where MathJax 2 accepts it; no \label.
+    const std::string display = c.at("display").get<std::string>();
+    CHECK(display.find("\\label{") == std::string::npos);
+    if (c.at("equation").is_string()) {
+      const std::string label = c.at("equation").get<std::string>();
+      const std::string tag = "\\tag{" + label.substr(1, label.size() - 2) + "}";
+      CHECK(display.size() >= tag.size());
+      CHECK(display.rfind(tag) == display.size() - tag.size());
+      CHECK(display.find("\\tag{") == display.size() - tag.size());
+    } else {
+      CHECK(display.find("\\tag{") == std::string::npos);
+    }
   }
   for (const auto& s : statuses) {
     CAPTURE(s);
