@@ -8,6 +8,7 @@
 
 namespace impulse::derivations::sym {
 
+using GiNaC::ex_to;
 using GiNaC::is_a;
 
 ex simplify(const ex& e) {
@@ -107,10 +108,237 @@ ex solve_for(const Equation& equation, const ex& unknown) {
   return GiNaC::lsolve(equation.lhs == equation.rhs, unknown);
 }
 
-std::string latex(const ex& e) {
+namespace {
+
+// ---- printing in an order that is the same in every run ------------------------------------
+// GiNaC prints a sum's terms and a product's factors in its own order, which follows hash values
+// seeded by addresses: "F dt" in one run, "dt F" in the next. These printers order them by
+// canonical() instead. Numbers, symbols and functions are printed by GiNaC.
+
+enum class Style { latex, plain };
+
+std::string ginac_text(const ex& e, Style style) {
   std::ostringstream out;
-  out << GiNaC::latex << e;
+  if (style == Style::latex) {
+    out << GiNaC::latex << e;
+  } else {
+    out << GiNaC::dflt << e;
+  }
   return out.str();
+}
+
+// A term's sign and its magnitude: -3 a b is (true, 3 a b).
+std::pair<bool, ex> sign_and_magnitude(const ex& term) {
+  const auto negative_number = [](const ex& x) {
+    return is_a<GiNaC::numeric>(x) && ex_to<GiNaC::numeric>(x).is_real() &&
+           ex_to<GiNaC::numeric>(x).is_negative();
+  };
+  if (negative_number(term) ||
+      (is_a<GiNaC::mul>(term) && negative_number(term.op(term.nops() - 1)))) {
+    return {true, -term};  // a mul keeps its number last
+  }
+  return {false, term};
+}
+
+// Parts in the order of their canonical keys; a sum's terms by their magnitudes (so that a - b
+// and -b + a are the same order).
+std::vector<ex> ordered(const std::vector<ex>& parts, bool by_magnitude) {
+  std::vector<std::pair<std::string, std::size_t>> keys;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const auto [negative, magnitude] = sign_and_magnitude(parts[i]);
+    keys.emplace_back(
+        by_magnitude ? canonical(magnitude) + (negative ? "-" : "+") : canonical(parts[i]), i);
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<ex> out;
+  for (const auto& [key, i] : keys) {
+    out.push_back(parts[i]);
+  }
+  return out;
+}
+
+std::vector<ex> terms_of(const ex& sum) {
+  std::vector<ex> terms;
+  for (std::size_t i = 0; i < sum.nops(); ++i) {
+    terms.push_back(sum.op(i));
+  }
+  return ordered(terms, true);
+}
+
+// Precedence of what a printed part is: a sum, a product, a power, an atom.
+enum Level { sum_level = 1, product_level = 2, power_level = 3, atom_level = 4 };
+
+// Text and whether it carries a minus sign in front (then it binds as a sum).
+struct Signed {
+  bool negative = false;
+  std::string text;
+};
+
+Signed print_signed(const ex& e, Style style);
+
+std::string grouped(const std::string& text, Style style) {
+  return style == Style::latex ? "\\left(" + text + "\\right)" : "(" + text + ")";
+}
+
+std::string print(const ex& e, Style style, int context) {
+  const Signed s = print_signed(e, style);
+  int level = atom_level;
+  if (s.negative || is_a<GiNaC::add>(e)) {
+    level = sum_level;
+  } else if (is_a<GiNaC::mul>(e) || (is_a<GiNaC::power>(e) && is_a<GiNaC::numeric>(e.op(1)) &&
+                                     ex_to<GiNaC::numeric>(e.op(1)).is_real() &&
+                                     ex_to<GiNaC::numeric>(e.op(1)).is_negative())) {
+    level = product_level;
+  } else if (is_a<GiNaC::power>(e)) {
+    level = power_level;
+  } else if (is_a<GiNaC::numeric>(e) && !ex_to<GiNaC::numeric>(e).is_integer()) {
+    level = sum_level;
+  }
+  const std::string text = s.negative ? "-" + s.text : s.text;
+  return level < context ? grouped(text, style) : text;
+}
+
+std::string print_sum(const ex& e, Style style) {
+  std::string out;
+  for (const ex& term : terms_of(e)) {
+    const Signed s = print_signed(term, style);
+    const std::string text = s.text;
+    if (out.empty()) {
+      out = s.negative ? "-" + text : text;
+    } else {
+      out += s.negative ? style == Style::latex ? " - " : "-" : style == Style::latex ? " + " : "+";
+      out += text;
+    }
+  }
+  return out;
+}
+
+// A product's factors, each sum among them with its first term positive (a - b, not -a + b: the
+// sign goes in front of the product), numbers and the denominator apart.
+Signed print_product(const ex& e, Style style) {
+  GiNaC::numeric coefficient = 1;
+  std::vector<ex> above;
+  std::vector<ex> below;
+  const auto take = [&](ex factor) {
+    if (is_a<GiNaC::numeric>(factor)) {
+      coefficient *= ex_to<GiNaC::numeric>(factor);
+      return;
+    }
+    bool down = false;
+    if (is_a<GiNaC::power>(factor) && is_a<GiNaC::numeric>(factor.op(1)) &&
+        ex_to<GiNaC::numeric>(factor.op(1)).is_real() &&
+        ex_to<GiNaC::numeric>(factor.op(1)).is_negative()) {
+      factor = GiNaC::pow(factor.op(0), -factor.op(1));
+      down = true;
+    }
+    // A sum (or an odd power of one) whose first term is negative: its negation, and a sign.
+    const ex base = is_a<GiNaC::power>(factor) ? factor.op(0) : factor;
+    const ex exponent = is_a<GiNaC::power>(factor) ? factor.op(1) : ex(1);
+    if (is_a<GiNaC::add>(base) && is_a<GiNaC::numeric>(exponent) &&
+        ex_to<GiNaC::numeric>(exponent).is_integer() &&
+        sign_and_magnitude(terms_of(base).front()).first) {
+      factor = GiNaC::pow(-base, exponent);
+      if (ex_to<GiNaC::numeric>(exponent).is_odd()) {
+        coefficient = -coefficient;
+      }
+    }
+    (down ? below : above).push_back(factor);
+  };
+  if (is_a<GiNaC::mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      take(e.op(i));
+    }
+  } else {
+    take(e);
+  }
+  Signed out;
+  if (coefficient.is_real() && coefficient.is_negative()) {
+    out.negative = true;
+    coefficient = -coefficient;
+  }
+  const std::string separator = style == Style::latex ? " " : "*";
+  const auto join = [&](const std::vector<ex>& factors, const GiNaC::numeric& number) {
+    std::string text;
+    if (!number.is_equal(1) || factors.empty()) {
+      text = ginac_text(number, style);
+    }
+    for (const ex& f : ordered(factors, false)) {
+      text += (text.empty() ? "" : separator) + print(f, style, power_level - 1);
+    }
+    return text;
+  };
+  if (!coefficient.is_rational()) {  // a floating-point or complex coefficient: GiNaC's digits
+    out.text =
+        join(above, coefficient) + (below.empty() ? "" : "/" + grouped(join(below, 1), style));
+    return out;
+  }
+  const std::string top = join(above, coefficient.numer());
+  if (below.empty() && coefficient.denom().is_equal(1)) {
+    out.text = top;
+    return out;
+  }
+  const std::string bottom = join(below, coefficient.denom());
+  if (style == Style::latex) {
+    out.text = "\\frac{" + top + "}{" + bottom + "}";
+    return out;
+  }
+  const bool several_above = above.size() + (coefficient.numer().is_equal(1) ? 0U : 1U) > 1;
+  const bool several_below = below.size() + (coefficient.denom().is_equal(1) ? 0U : 1U) > 1;
+  out.text =
+      (several_above ? "(" + top + ")" : top) + "/" + (several_below ? "(" + bottom + ")" : bottom);
+  return out;
+}
+
+Signed print_signed(const ex& e, Style style) {
+  if (is_a<GiNaC::add>(e)) {
+    return {false, print_sum(e, style)};
+  }
+  if (is_a<GiNaC::mul>(e) ||
+      (is_a<GiNaC::power>(e) && is_a<GiNaC::numeric>(e.op(1)) &&
+       ex_to<GiNaC::numeric>(e.op(1)).is_real() && ex_to<GiNaC::numeric>(e.op(1)).is_negative())) {
+    return print_product(e, style);
+  }
+  if (is_a<GiNaC::power>(e)) {
+    const ex exponent = e.op(1);
+    if (style == Style::latex && exponent.is_equal(GiNaC::numeric(1, 2))) {
+      return {false, "\\sqrt{" + print(e.op(0), style, 0) + "}"};
+    }
+    const std::string base = print(e.op(0), style, power_level + 1);
+    const std::string power = print(exponent, style, style == Style::latex ? 0 : atom_level);
+    return {false, style == Style::latex ? base + "^{" + power + "}" : base + "^" + power};
+  }
+  if (is_a<GiNaC::function>(e)) {
+    // GiNaC prints the function's name; its arguments, printed here, stand in as symbols.
+    GiNaC::exvector arguments;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      arguments.push_back(
+          GiNaC::symbol(print(e.op(i), Style::plain, 0), print(e.op(i), Style::latex, 0)));
+    }
+    return {false,
+            ginac_text(GiNaC::function(ex_to<GiNaC::function>(e).get_serial(), arguments), style)};
+  }
+  if (is_a<GiNaC::numeric>(e) && ex_to<GiNaC::numeric>(e).is_real() &&
+      ex_to<GiNaC::numeric>(e).is_negative()) {
+    return {true, ginac_text(-e, style)};
+  }
+  return {false, ginac_text(e, style)};
+}
+
+}  // namespace
+
+std::string latex(const ex& e) {
+  return print(e, Style::latex, 0);
+}
+
+std::string plain(const ex& e) {
+  return print(e, Style::plain, 0);
+}
+
+ex up_to_sign(const ex& e) {
+  if (is_a<GiNaC::add>(e)) {
+    return sign_and_magnitude(terms_of(e).front()).first ? ex(-e) : e;
+  }
+  return print_signed(e, Style::latex).negative ? ex(-e) : e;
 }
 
 std::string latex(const Equation& equation) {
@@ -282,6 +510,13 @@ std::string canonical(const ex& e) {
   }
   if (is_a<GiNaC::power>(e)) {
     return "^(" + canonical(e.op(0)) + "," + canonical(e.op(1)) + ")";
+  }
+  if (is_a<GiNaC::function>(e)) {  // its arguments in their own canonical form
+    std::string key = ex_to<GiNaC::function>(e).get_name() + "(";
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      key += canonical(e.op(i)) + ",";
+    }
+    return key + ")";
   }
   std::ostringstream out;
   out << e;

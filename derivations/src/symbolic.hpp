@@ -50,8 +50,15 @@ struct Assumptions {
 /// Solves an equation linear in @p unknown.
 [[nodiscard]] ex solve_for(const Equation& equation, const ex& unknown);
 
-/// LaTeX of an expression or an equation.
+/// LaTeX of an expression or an equation, the terms of sums and the factors of products in the
+/// order of canonical() (the same in every run; GiNaC's own order is not).
 [[nodiscard]] std::string latex(const ex& e);
+/// The same as plain text: "2*p_1/m_1-F*dt".
+[[nodiscard]] std::string plain(const ex& e);
+/// @p e or -e, whichever these printers show without a minus sign in front (for a condition
+/// e != 0, whose sign does not matter: "v_2' - v_2", never "-v_2' + v_2" in one run and the other
+/// in the next).
+[[nodiscard]] ex up_to_sign(const ex& e);
 [[nodiscard]] std::string latex(const Equation& equation);
 
 /// An expression compiled to a function of doubles: sums, products, powers and numbers only.

@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include "symbolic.hpp"
+
 namespace impulse::derivations::file {
 
 using GiNaC::ex;
@@ -172,9 +174,7 @@ bool same_up_to_constant(const ex& a, const ex& b) {
 
 // An expression in a sentence of the report: LaTeX between dollars, as in Markdown.
 std::string text(const ex& e) {
-  std::ostringstream out;
-  out << GiNaC::latex << e;
-  std::string latex = out.str();
+  std::string latex = sym::latex(e);
   const std::size_t first = latex.find_first_not_of(' ');
   const std::size_t last = latex.find_last_not_of(' ');
   latex = first == std::string::npos ? "" : latex.substr(first, last - first + 1);

@@ -10,6 +10,7 @@
 #include "file/sample.hpp"
 #include "file/time.hpp"
 #include "numeric.hpp"
+#include "symbolic.hpp"
 
 namespace impulse::derivations::file {
 
@@ -94,18 +95,12 @@ std::string number_text(const GiNaC::numeric& n) {
 }  // namespace
 
 std::string latex_of(const ex& e) {
-  std::ostringstream out;
-  out << GiNaC::latex << e;
-  return trimmed(out.str());
+  return trimmed(sym::latex(e));
 }
 
 std::string plain_of(const ex& e) {
   // Over one denominator, printed as numerator/denominator: "4*p_2/m_2", not "4*m_2^(-1)*p_2".
-  const auto print = [](const ex& x) {
-    std::ostringstream out;
-    out << GiNaC::dflt << x;
-    return out.str();
-  };
+  const auto print = [](const ex& x) { return sym::plain(x); };
   const auto grouped = [&](const ex& x, bool denominator) {
     const std::string t = print(x);
     const bool group = GiNaC::is_a<GiNaC::add>(x) || (denominator && GiNaC::is_a<GiNaC::mul>(x));
@@ -257,6 +252,7 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
         for (const ex& c : forward.conditions) {
           product *= c;
         }
+        product = sym::up_to_sign(product);  // its sign does not matter: one form in every run
         r.condition = latex_of(product) + " \\neq 0";
         r.condition_text = plain_of(product) + " != 0";
         r.condition_needed = forward.conditions_needed;
