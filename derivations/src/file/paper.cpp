@@ -973,7 +973,7 @@ FileRun::Variant FileRun::run_variant(const Group& g, bool corrected) {
         return false;
       };
       instant = has_differential(e.lhs.value.x) || has_differential(e.rhs.value.x);
-      const auto add = [&](const ex& l, const ex& r) {
+      for_each_scalar(e, [&](const ex& l, const ex& r) {
         const ex left = l.subs(e.substitutions);
         const ex right = r.subs(e.substitutions);
         std::vector<ex> ds;
@@ -984,21 +984,7 @@ FileRun::Variant FileRun::run_variant(const Group& g, bool corrected) {
           ds.push_back(exact_reading(d.subs(e.substitutions)));
         }
         targets.push_back({left, right, ds, instant, e.latex});
-      };
-      if (e.lhs.value.block()) {
-        for (std::size_t k = 0; k < e.lhs.value.entries.size(); ++k) {
-          add(e.lhs.value.entries[k], e.rhs.value.entries[k]);
-        }
-      } else {
-        add(e.lhs.value.x, e.rhs.value.x);
-        if (e.lhs.value.vector) {
-          add(e.lhs.value.y, e.rhs.value.y);
-        }
-      }
-      // A premise tested by a model is not also a solver of itself.
-      if (e.premise) {
-        (void)0;
-      }
+      });
     }
     // Targets that are premises of the check are tested unless they solve for a symbol: the
     // matching in run_model decides; here, the statement's premises also stand in the pool.

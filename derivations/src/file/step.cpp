@@ -122,24 +122,27 @@ std::string plain_of(const ex& e) {
 
 // A residual as a person reads it: over one denominator, factored when that is cheap.
 
+void for_each_scalar(const Equation& e, const std::function<void(const ex&, const ex&)>& each) {
+  if (e.lhs.value.block()) {
+    for (std::size_t k = 0; k < e.lhs.value.entries.size(); ++k) {
+      each(e.lhs.value.entries[k], e.rhs.value.entries[k]);
+    }
+    return;
+  }
+  each(e.lhs.value.x, e.rhs.value.x);
+  if (e.lhs.value.vector) {
+    each(e.lhs.value.y, e.rhs.value.y);
+  }
+}
+
 Scalars scalars_of(const Equation& e, const GiNaC::exmap& substitutions) {
   Scalars s;
-  const auto add = [&](const ex& l, const ex& r) {
+  for_each_scalar(e, [&](const ex& l, const ex& r) {
     const ex left = exact_reading(l.subs(substitutions));
     const ex right = exact_reading(r.subs(substitutions));
     s.differences.push_back(left - right);
     s.scales.push_back(term_scale(left) + term_scale(right));
-  };
-  if (e.lhs.value.block()) {
-    for (std::size_t k = 0; k < e.lhs.value.entries.size(); ++k) {
-      add(e.lhs.value.entries[k], e.rhs.value.entries[k]);
-    }
-  } else {
-    add(e.lhs.value.x, e.rhs.value.x);
-  }
-  if (e.lhs.value.vector) {
-    add(e.lhs.value.y, e.rhs.value.y);
-  }
+  });
   for (const ex& d : e.lhs.denominators) {
     s.denominators.push_back(d.subs(substitutions));
   }

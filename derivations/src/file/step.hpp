@@ -6,6 +6,7 @@
 
 #include <ginac/ginac.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,11 @@
 #include "file/reader.hpp"
 
 namespace impulse::derivations::file {
+
+/// Calls @p each with the two sides of every scalar equation @p e stands for: each entry of a
+/// block, both components of a vector, or the one scalar.
+void for_each_scalar(const Equation& e,
+                     const std::function<void(const GiNaC::ex&, const GiNaC::ex&)>& each);
 
 /// The scalar equations an equation stands for (one per component or entry), each with the size
 /// of its terms, read exactly (forces constant over the contact), and the denominators written.
