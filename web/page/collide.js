@@ -735,10 +735,17 @@
         const at = across ? view.to(add(l.points[v], [0, reach])) : tip;
         context.font = `${11 * dpr}px system-ui, sans-serif`;
         context.textAlign = across ? 'center' : 'left';
-        const rough = impulses[v] && impulses[v].tangential !== undefined
-                          ? `, tangential ${num(impulses[v].tangential, Math.abs(magnitude))}, ${impulses[v].slip}` : '';
-        halo(`${v}: Fdt ${num(magnitude)}${rough}`, across ? at[0] : at[0] + 4 * dpr,
-             across ? at[1] - 8 * dpr - (v % 2) * 13 * dpr : at[1], magnitude < 0 ? '#b42318' : '#1d2430');
+        const x = across ? at[0] : at[0] + 4 * dpr;
+        const y = across ? at[1] - 8 * dpr - (v % 2) * 13 * dpr : at[1];
+        // With friction, the tangential impulse too: on a second line under the normal's tip, on the
+        // same line above a row of bodies (whose labels take two rows already).
+        const tangential = impulses[v] && impulses[v].tangential !== undefined
+                               ? `tangential ${num(impulses[v].tangential, Math.abs(magnitude))}` : '';
+        if (tangential && !across) {
+          halo(tangential, x, y + 13 * dpr);
+        }
+        halo(`${v}: Fdt ${num(magnitude)}${tangential && across ? `, ${tangential}` : ''}`, x, y,
+             magnitude < 0 ? '#b42318' : '#1d2430');
       }
     });
 
@@ -1495,19 +1502,18 @@
     const rough = r.impulses.some((i) => i.tangential !== undefined);
     const largestImpulse = Math.max(0, ...r.impulses.map((i) => Math.max(Math.abs(i.magnitude),
                                                                          Math.abs(i.tangential || 0))));
-    const ends = {slip: 'slipping', stick: 'sticking', reversed: 'slipping back (reversed)'};
     fillTable(impulses, [['contact'], ['bumper → wedge', 'name'], [rough ? 'F dt, normal' : 'F dt'],
                          ...(rough ? [['tangential']] : []), ['on the bumper'], ...(rough ? [['ends', 'name']] : [])],
               r.impulses.map((i) => {
                 const pulls = i.magnitude < -1e-12 * largestImpulse;
                 const friction = rough ? [i.tangential !== undefined ? num(i.tangential, largestImpulse) : ''] : [];
-                const slip = rough ? [{text: i.slip !== undefined ? `${i.slip}: ${ends[i.slip] || ''}`.replace(/: $/, '') : '',
-                                       cls: 'name'}] : [];
+                const slip = rough ? [{text: i.slip !== undefined ? String(i.slip) : '', cls: 'name'}] : [];
                 return [String(i.contact), {text: `${i.bumper} → ${i.wedge}`, cls: 'name'},
                         {text: num(i.magnitude, largestImpulse) + (pulls ? ' (pulls)' : ''), cls: pulls ? 'pulls' : ''},
                         ...friction, vectorText(i.on_bumper, dim, largestImpulse), ...slip];
               }));
-    $('friction-facts').textContent = frictionFacts(r);
+    $('friction-facts').textContent = frictionFacts(r) +
+        (rough ? ' "ends": slip (still sliding), stick, or reversed (sliding back).' : '');
 
     const speeds = d.bodies.flatMap((b) => [norm(vec(b.before.velocity)), norm(vec(b.after.velocity))]);
     const largestSpeed = Math.max(0, ...speeds);
@@ -1559,8 +1565,8 @@
     if (Array.isArray(block.friction)) {
       const mus = block.friction.slice(0, 12).map((mu) => num(mu)).join(', ');
       return `Serial collisions, each resolved by the exact single-contact rule: ${law}; friction μ of ` +
-             `contacts 0, 1, …: ${mus}${block.friction.length > 12 ? ', …' : ''}. "ends" is how each contact's ` +
-             'last collision ended.';
+             `contacts 0, 1, …: ${mus}${block.friction.length > 12 ? ', …' : ''}; a contact "ends" as its last ` +
+             'collision ended.';
     }
     if (typeof block.phases !== 'string' || !Array.isArray(block.phase_ends)) {
       return '';
@@ -1787,7 +1793,11 @@
         (s.condition_estimate !== undefined ? `; condition estimate ${num(s.condition_estimate)}` : '') + '.' +
         (method === 'simultaneous' ? ''
                                    : ` The impulses are those of ${method === 'serial' ? 'serial collisions' : 'complementarity'}; ` +
-                                     'A and B are the paper\'s system of the same scene.');
+                                     'A and B are the paper\'s system of the same scene.') +
+        (r.impulses.some((i) => i.tangential !== undefined)
+             ? ' With friction or another law of restitution the normal impulses F dt are the exact rule\'s (under ' +
+               'Impulses), and A and B the paper\'s frictionless system: the residual measures how far they moved the answer.'
+             : '');
     const used = sceneEquations(state.details, r);
     source.innerHTML = 'Each body adds its share to A and B (' +
         equations.map((e) => `<a href="${e.page}"${used.includes(e.id) ? ' class="used"' : ''}>(${e.id})</a> ${e.what}`)
