@@ -274,6 +274,22 @@ function checkAgainstCommandLine(state, line, where) {
   }
 }
 
+// The address of @p state opened afresh in a new page: the same result and address, and the
+// controls named in @p controls (id: value) showing those values; then back to page @p p.
+async function checkSharedLink(browser, p, state, controls, where) {
+  const shared = await open(browser, state.hash);
+  const again = await pageState(shared);
+  check(again.result === state.result && again.hash === state.hash, `${where}: the same result`);
+  const values = {};
+  for (const id of Object.keys(controls)) {
+    values[id] = await shared.evaluate(`document.getElementById(${JSON.stringify(id)}).value`);
+  }
+  check(JSON.stringify(values) === JSON.stringify(controls), `${where}: the same controls`, JSON.stringify(values));
+  checkClean(shared, where);
+  await shared.close();
+  await p.send('Page.bringToFront');
+}
+
 function jsonFiles(folder) {
   const dir = join(source, folder);
   return readdirSync(dir).filter((f) => f.endsWith('.json')).sort().map((f) => join(dir, f));
@@ -379,15 +395,7 @@ const groups = {
     check(await p.evaluate('document.getElementById("body-0-mass").value') === '1.02', 'the number field follows the slider');
 
     // The shared link, opened afresh, shows the same.
-    const shared = await open(browser, state.hash);
-    const again = await pageState(shared);
-    check(again.result === state.result && again.hash === state.hash, 'the shared link shows the same result');
-    check(await shared.evaluate('document.getElementById("body-0-mass").value') === '1.02' &&
-          await shared.evaluate('document.getElementById("preset").value') === '',
-          'the shared link shows the same controls');
-    checkClean(shared, 'shared link');
-    await shared.close();
-    await p.send('Page.bringToFront');
+    await checkSharedLink(browser, p, state, {'body-0-mass': '1.02', 'preset': ''}, 'shared link');
 
     // The velocity of ball 1 dragged on the canvas: its handle, 40 px to the left.
     await p.evaluate('document.getElementById("view").scrollIntoView()');
@@ -582,15 +590,8 @@ const groups = {
           JSON.stringify(scene));
     checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'rod, Poisson, μ = 0.3');
     check(JSON.parse(state.result).impulses[0].slip === 'reversed', 'rod at μ = 0.3: the slip reverses (1.5 > 0.3 * 2.5)');
-    const shared = await open(browser, state.hash);
-    const again = await pageState(shared);
-    check(again.result === state.result && again.hash === state.hash, 'the shared link shows the same result');
-    check(await shared.evaluate('document.getElementById("friction-number").value') === '0.3' &&
-          await shared.evaluate('document.getElementById("restitution").value') === 'poisson',
-          'the shared link shows μ and the law in their controls');
-    checkClean(shared, 'friction, shared link');
-    await shared.close();
-    await p.send('Page.bringToFront');
+    await checkSharedLink(browser, p, state, {'friction-number': '0.3', 'friction': '0.3', 'restitution': 'poisson'},
+                          'friction, shared link');
 
     // A frictionless scene of two contacts: μ and the law set and set back leave its address and
     // its result as they were, byte for byte; with μ = 0.5 the paper's method and complementarity
