@@ -736,12 +736,16 @@
         context.font = `${11 * dpr}px system-ui, sans-serif`;
         context.textAlign = across ? 'center' : 'left';
         const x = across ? at[0] : at[0] + 4 * dpr;
-        const y = across ? at[1] - 8 * dpr - (v % 2) * 13 * dpr : at[1];
+        let y = across ? at[1] - 8 * dpr - (v % 2) * 13 * dpr : at[1];
         // With friction, the tangential impulse too: on a second line under the normal's tip, on the
         // same line above a row of bodies (whose labels take two rows already).
         const tangential = impulses[v] && impulses[v].tangential !== undefined
                                ? `tangential ${num(impulses[v].tangential, Math.abs(magnitude))}` : '';
         if (tangential && !across) {
+          // Under the first line; both a line higher where the canvas ends.
+          if (y + 13 * dpr > canvas.height - 4 * dpr) {
+            y -= 13 * dpr;
+          }
           halo(tangential, x, y + 13 * dpr);
         }
         halo(`${v}: Fdt ${num(magnitude)}${tangential && across ? `, ${tangential}` : ''}`, x, y,
@@ -830,8 +834,9 @@
   // Each contact's impulse as the whole vector the library reports (on_bumper: the normal part,
   // and with friction the tangential part too), drawn from the contact point on the body that
   // receives it: the bumper, or the wedge (the vector reversed) when the bumper is static. The
-  // longest is 60 px; with friction its two parts are drawn thin, dotted, as the sides of the
-  // parallelogram. Up to 12 contacts (beyond, the arrows would cover the bodies).
+  // longest is 60 px (less on a small canvas); with friction its two parts are drawn thin and
+  // dotted, as the sides of the parallelogram. Up to 12 contacts (beyond, the arrows would cover
+  // the bodies).
   let impulseArrows = [];  // as drawn, for the browser tests
 
   function drawImpulses(l, view, impulses) {
@@ -852,7 +857,8 @@
     if (!(longest > 0)) {
       return;
     }
-    const length = 60 * dpr / longest;
+    // At most 60 px, and a quarter of a small canvas (a phone's), where 60 px would hide the scene.
+    const length = Math.min(60 * dpr, 0.25 * Math.min(canvas.width, canvas.height)) / longest;
     const colour = '#a4460e';
     vectors.forEach((w, v) => {
       const p = view.to(l.points[v]);
@@ -877,7 +883,7 @@
     context.fillStyle = colour;
     context.font = `${12 * dpr}px system-ui, sans-serif`;
     context.textAlign = 'left';
-    context.fillText('→ impulse at each contact', 8 * dpr, canvas.height - 40 * dpr);
+    context.fillText('→ impulse at each contact', 8 * dpr, 32 * dpr);  // under the clock
   }
 
   function resizeCanvas() {
