@@ -18,7 +18,7 @@ if(IMPULSELAB_BUILD_TESTS AND IMPULSELAB_BUILD_DOCS AND TARGET impulselab)
   # Node and Debian's chromium (scripts/install-deps chromium emscripten); IMPULSELAB_CHROMIUM in
   # the environment names another browser. Screenshots of every preset go to screenshots/ here.
   find_program(IMPULSELAB_NODE node REQUIRED)
-  foreach(group IN ITEMS presets scenes malformed interaction links)
+  foreach(group IN ITEMS presets scenes malformed interaction links friction)
     add_test(NAME web:${group}
       COMMAND "${IMPULSELAB_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/test/page_test.mjs" ${group}
         --site "${PROJECT_BINARY_DIR}/docs/html"

@@ -622,6 +622,7 @@
     context.setTransform(1, 0, 0, 1, 0, 0);
     context.clearRect(0, 0, canvas.width, canvas.height);
     handles = [];
+    impulseArrows = [];
     const l = state.layout;
     if (!l) {
       context.fillStyle = '#5a6372';
@@ -716,6 +717,7 @@
 
     // Contacts: the point, the normal (outward from the bumper), the impulse's size.
     const impulses = state.result ? state.result.impulses : [];
+    drawImpulses(l, view, impulses);
     l.contacts.forEach((c, v) => {
       const p = view.to(l.points[v]);
       const tip = [p[0] + c.normal[0] * 28 * dpr, p[1] - c.normal[1] * 28 * dpr];
@@ -733,8 +735,21 @@
         const at = across ? view.to(add(l.points[v], [0, reach])) : tip;
         context.font = `${11 * dpr}px system-ui, sans-serif`;
         context.textAlign = across ? 'center' : 'left';
-        halo(`${v}: Fdt ${num(magnitude)}`, across ? at[0] : at[0] + 4 * dpr,
-             across ? at[1] - 8 * dpr - (v % 2) * 13 * dpr : at[1], magnitude < 0 ? '#b42318' : '#1d2430');
+        const x = across ? at[0] : at[0] + 4 * dpr;
+        let y = across ? at[1] - 8 * dpr - (v % 2) * 13 * dpr : at[1];
+        // With friction, the tangential impulse too: on a second line under the normal's tip, on the
+        // same line above a row of bodies (whose labels take two rows already).
+        const tangential = impulses[v] && impulses[v].tangential !== undefined
+                               ? `tangential ${num(impulses[v].tangential, Math.abs(magnitude))}` : '';
+        if (tangential && !across) {
+          // Under the first line; both a line higher where the canvas ends.
+          if (y + 13 * dpr > canvas.height - 4 * dpr) {
+            y -= 13 * dpr;
+          }
+          halo(tangential, x, y + 13 * dpr);
+        }
+        halo(`${v}: Fdt ${num(magnitude)}${tangential && across ? `, ${tangential}` : ''}`, x, y,
+             magnitude < 0 ? '#b42318' : '#1d2430');
       }
     });
 
@@ -814,6 +829,61 @@
     context.fillText('— velocity before', 8 * dpr, canvas.height - 24 * dpr);
     context.fillStyle = '#1a7f37';
     context.fillText('- - velocity after', 8 * dpr, canvas.height - 8 * dpr);
+  }
+
+  // Each contact's impulse as the whole vector the library reports (on_bumper: the normal part,
+  // and with friction the tangential part too), drawn from the contact point on the body that
+  // receives it: the bumper, or the wedge (the vector reversed) when the bumper is static. The
+  // longest is 60 px (less on a small canvas); with friction its two parts are drawn thin and
+  // dotted, as the sides of the parallelogram. Up to 12 contacts (beyond, the arrows would cover
+  // the bodies).
+  let impulseArrows = [];  // as drawn, for the browser tests
+
+  function drawImpulses(l, view, impulses) {
+    impulseArrows = [];
+    if (l.contacts.length > 12 || impulses.length !== l.contacts.length) {
+      return;
+    }
+    const dpr = devicePixelRatio;
+    const vectors = impulses.map((i, v) => {
+      const c = l.contacts[v];
+      const onStatic = l.drawn[c.bumper].kind === 'static';
+      const sign = onStatic ? -1 : 1;
+      const whole = mul(l.dim === 1 ? [Number(i.on_bumper), 0] : vec(i.on_bumper), sign);
+      const normal = mul(c.normal, -sign * i.magnitude);
+      return {whole, normal, body: onStatic ? c.wedge : c.bumper, rough: i.tangential !== undefined};
+    });
+    const longest = Math.max(0, ...vectors.map((w) => norm(w.whole)));
+    if (!(longest > 0)) {
+      return;
+    }
+    // At most 60 px, and a quarter of a small canvas (a phone's), where 60 px would hide the scene.
+    const length = Math.min(60 * dpr, 0.25 * Math.min(canvas.width, canvas.height)) / longest;
+    const colour = '#a4460e';
+    vectors.forEach((w, v) => {
+      const p = view.to(l.points[v]);
+      const screen = (x) => [p[0] + x[0] * length, p[1] - x[1] * length];
+      const tip = screen(w.whole);
+      if (w.rough && norm(sub(w.whole, w.normal)) > 1e-12 * longest) {
+        const corner = screen(w.normal);
+        context.save();
+        context.strokeStyle = colour;
+        context.lineWidth = 1 * dpr;
+        context.setLineDash([2 * dpr, 3 * dpr]);
+        context.beginPath();
+        context.moveTo(p[0], p[1]);
+        context.lineTo(corner[0], corner[1]);
+        context.lineTo(tip[0], tip[1]);
+        context.stroke();
+        context.restore();
+      }
+      arrow(p, tip, colour, 3 * dpr, false);
+      impulseArrows.push({contact: v, body: l.drawn[w.body].name, from: p, to: tip});
+    });
+    context.fillStyle = colour;
+    context.font = `${12 * dpr}px system-ui, sans-serif`;
+    context.textAlign = 'left';
+    context.fillText('→ impulse at each contact', 8 * dpr, 32 * dpr);  // under the clock
   }
 
   function resizeCanvas() {
@@ -1143,19 +1213,47 @@
 
   const methodSelect = $('method');
   const dependentSelect = $('dependent');
+  const restitutionSelect = $('restitution');
+  const frictionRange = $('friction');
+  const frictionNumber = $('friction-number');
   const defaultRange = $('default-elasticity');
   const defaultNumber = $('default-elasticity-number');
+
+  // The contacts that have a μ of their own (the page edits only the scene's default): named
+  // under the control, so that a reader knows why the slider does not move them.
+  function contactFrictionNote(scene) {
+    const own = scene.contacts.map((c, v) => [c, v]).filter(([c]) => c.friction !== undefined);
+    if (own.length === 0) {
+      return '';
+    }
+    const shown = own.slice(0, 6).map(([c, v]) => `contact ${v} (${c.bumper}–${c.wedge}) μ = ${num(Number(c.friction))}`);
+    return `Contacts with a μ of their own, which the slider leaves as they are: ${shown.join('; ')}` +
+           `${own.length > shown.length ? `; and ${own.length - shown.length} more` : ''} (edit them in the scene's JSON below).`;
+  }
 
   function syncControls() {
     const scene = state.scene;
     const enabled = Boolean(scene);
-    for (const element of [methodSelect, dependentSelect, defaultRange, defaultNumber]) {
+    for (const element of [methodSelect, dependentSelect, restitutionSelect, frictionRange, frictionNumber,
+                           defaultRange, defaultNumber]) {
       element.disabled = !enabled;
     }
+    $('contact-friction').textContent = scene ? contactFrictionNote(scene) : '';
     if (scene) {
       const solver = isObject(scene.solver) ? scene.solver : {};
       methodSelect.value = solver.method || 'simultaneous';
       dependentSelect.value = solver.dependent || 'minimum-norm';
+      restitutionSelect.value = solver.restitution || 'newton';
+      // No key is μ = 0: a frictionless scene.
+      const mu = scene.friction === undefined ? 0 : scene.friction;
+      if (typeof mu === 'number') {
+        if (document.activeElement !== frictionNumber && frictionNumber.valueAsNumber !== mu) {
+          frictionNumber.value = String(mu);
+        }
+        if (document.activeElement !== frictionRange) {
+          frictionRange.value = String(mu);
+        }
+      }
       const hasDefault = typeof scene.elasticity === 'number';
       $('default-elasticity-row').hidden = !hasDefault;
       if (hasDefault) {
@@ -1204,6 +1302,44 @@
 
   methodSelect.addEventListener('change', (event) => setSolver('method', methodSelect.value, 'simultaneous', event));
   dependentSelect.addEventListener('change', () => setSolver('dependent', dependentSelect.value, 'minimum-norm'));
+  // Newton's law is the default: choosing it removes the key, so that a scene without friction
+  // stays the paper's, byte for byte.
+  restitutionSelect.addEventListener('change', () => setSolver('restitution', restitutionSelect.value, 'newton'));
+
+  // The scene's default μ. 0 removes the key (a frictionless scene keeps its text, and so its
+  // address and result); a new key goes after the default elasticity, where the scene format's
+  // examples write it, so that μ set back to a preset's value gives that preset's scene again.
+  function setFriction(scene, mu) {
+    if (mu === 0) {
+      delete scene.friction;
+      return;
+    }
+    if (Object.prototype.hasOwnProperty.call(scene, 'friction')) {
+      scene.friction = mu;
+      return;
+    }
+    const entries = Object.entries(scene);
+    const after = entries.findIndex(([key]) => key === 'elasticity');
+    const at = after >= 0 ? after + 1 : entries.findIndex(([key]) => key === 'dimension') + 1;
+    entries.splice(at, 0, ['friction', mu]);
+    for (const [key] of entries) {
+      delete scene[key];
+    }
+    for (const [key, value] of entries) {
+      scene[key] = value;
+    }
+  }
+  frictionRange.addEventListener('input', (event) => {
+    frictionNumber.value = frictionRange.value;
+    edit((scene) => setFriction(scene, Number(frictionRange.value)), event);
+  });
+  frictionNumber.addEventListener('input', (event) => {
+    if (frictionNumber.value.trim() === '' || !isFinite(frictionNumber.valueAsNumber)) {
+      return;  // half typed: wait
+    }
+    frictionRange.value = frictionNumber.value;
+    edit((scene) => setFriction(scene, frictionNumber.valueAsNumber), event);
+  });
   defaultRange.addEventListener('input', (event) => {
     defaultNumber.value = defaultRange.value;
     edit((scene) => { scene.elasticity = Number(defaultRange.value); }, event);
@@ -1367,14 +1503,23 @@
       return;
     }
     const dim = d.dimension;
-    const largestImpulse = Math.max(0, ...r.impulses.map((i) => Math.abs(i.magnitude)));
-    fillTable(impulses, [['contact'], ['bumper → wedge', 'name'], ['F dt'], ['on the bumper']],
+    // With friction (or a law other than Newton's) the report gives each contact's tangential
+    // impulse and how its slip ended: two more columns.
+    const rough = r.impulses.some((i) => i.tangential !== undefined);
+    const largestImpulse = Math.max(0, ...r.impulses.map((i) => Math.max(Math.abs(i.magnitude),
+                                                                         Math.abs(i.tangential || 0))));
+    fillTable(impulses, [['contact'], ['bumper → wedge', 'name'], [rough ? 'F dt, normal' : 'F dt'],
+                         ...(rough ? [['tangential']] : []), ['on the bumper'], ...(rough ? [['ends', 'name']] : [])],
               r.impulses.map((i) => {
                 const pulls = i.magnitude < -1e-12 * largestImpulse;
+                const friction = rough ? [i.tangential !== undefined ? num(i.tangential, largestImpulse) : ''] : [];
+                const slip = rough ? [{text: i.slip !== undefined ? String(i.slip) : '', cls: 'name'}] : [];
                 return [String(i.contact), {text: `${i.bumper} → ${i.wedge}`, cls: 'name'},
                         {text: num(i.magnitude, largestImpulse) + (pulls ? ' (pulls)' : ''), cls: pulls ? 'pulls' : ''},
-                        vectorText(i.on_bumper, dim, largestImpulse)];
+                        ...friction, vectorText(i.on_bumper, dim, largestImpulse), ...slip];
               }));
+    $('friction-facts').textContent = frictionFacts(r) +
+        (rough ? ' "ends": slip (still sliding), stick, or reversed (sliding back).' : '');
 
     const speeds = d.bodies.flatMap((b) => [norm(vec(b.before.velocity)), norm(vec(b.after.velocity))]);
     const largestSpeed = Math.max(0, ...speeds);
@@ -1411,6 +1556,38 @@
         `${vectorText(p.after, dim, momentumScale)}.` +
         (r.serial ? ` ${r.serial.collisions} collisions in ${r.serial.passes} passes.` : '') +
         (r.complementarity ? ` Algorithm: ${r.complementarity.algorithm}, ${r.complementarity.iterations} iterations.` : '');
+  }
+
+  // What the exact single-contact rule reports, in words: the law, the phases of slip with the
+  // normal impulse at which each ended (as the command line's text report writes them), and the
+  // works; for serial collisions, the laws of each contact.
+  function frictionFacts(r) {
+    const block = r.method ? r[r.method] : null;
+    if (!isObject(block) || block.restitution === undefined) {
+      return '';
+    }
+    const laws = {newton: 'Newton\'s restitution', poisson: 'Poisson\'s restitution', energetic: 'energetic restitution'};
+    const law = laws[block.restitution] || block.restitution;
+    if (Array.isArray(block.friction)) {
+      const mus = block.friction.slice(0, 12).map((mu) => num(mu)).join(', ');
+      return `Serial collisions, each resolved by the exact single-contact rule: ${law}; friction μ of ` +
+             `contacts 0, 1, …: ${mus}${block.friction.length > 12 ? ', …' : ''}; a contact "ends" as its last ` +
+             'collision ended.';
+    }
+    if (typeof block.phases !== 'string' || !Array.isArray(block.phase_ends)) {
+      return '';
+    }
+    const scale = Math.max(...block.phase_ends.map(Math.abs), 0);
+    const phases = block.phases.split(', ').map((phase, k) =>
+        `${phase} until ${k === 0 ? 'Fdt = ' : ''}${num(block.phase_ends[k], scale)}`).join(', ');
+    const i = r.impulses[0];
+    const works = [block.work_compression, block.work_restitution, block.work_tangential];
+    const workScale = Math.max(...works.map(Math.abs), 0);
+    return `Contact ${i.contact} (${i.bumper}–${i.wedge}), followed through the normal impulse by the exact ` +
+           `single-contact rule: friction μ = ${num(block.friction)}, ${law}, elasticity ${num(block.elasticity)}. ` +
+           `Phases: ${phases}; compression ended at Fdt = ${num(block.compression, scale)}. Work of the normal ` +
+           `impulse in compression ${num(works[0], workScale)}, in restitution ${num(works[1], workScale)}; ` +
+           `of friction ${num(works[2], workScale)}.`;
   }
 
   const svgNS = 'http://www.w3.org/2000/svg';
@@ -1450,6 +1627,10 @@
       });
       svg += `<text x="${(x + 6).toFixed(2)}" y="${y + 15}">${num(totals[row], largest)}</text>`;
     });
+    // The energy before, marked across the bar after: a gain shows as a bar past the line.
+    const mark = (left + totals[0] * scale).toFixed(2);
+    svg += `<line x1="${mark}" y1="2" x2="${mark}" y2="${2 * barHeight + 22}" stroke="#1d2430" ` +
+           'stroke-dasharray="4 3" stroke-width="1"/>';
     box.innerHTML = svg + '</svg>';
   }
 
@@ -1618,7 +1799,11 @@
         (s.condition_estimate !== undefined ? `; condition estimate ${num(s.condition_estimate)}` : '') + '.' +
         (method === 'simultaneous' ? ''
                                    : ` The impulses are those of ${method === 'serial' ? 'serial collisions' : 'complementarity'}; ` +
-                                     'A and B are the paper\'s system of the same scene.');
+                                     'A and B are the paper\'s system of the same scene.') +
+        (r.impulses.some((i) => i.tangential !== undefined)
+             ? ' With friction or another law of restitution the normal impulses F dt are the exact rule\'s (under ' +
+               'Impulses), and A and B the paper\'s frictionless system: the residual measures how far they moved the answer.'
+             : '');
     const used = sceneEquations(state.details, r);
     source.innerHTML = 'Each body adds its share to A and B (' +
         equations.map((e) => `<a href="${e.page}"${used.includes(e.id) ? ' class="used"' : ''}>(${e.id})</a> ${e.what}`)
@@ -1638,6 +1823,11 @@
     $('scene-error').textContent = out ? out.error : '';
     const warnings = $('warnings');
     warnings.innerHTML = out ? out.warnings.map((w) => `<li>${escapeHtml(w)}</li>`).join('') : '';
+    // The library's warning that the collision gained energy, again beside the energy bars.
+    const gained = out ? out.warnings.filter((w) => w.startsWith('energy gained')) : [];
+    $('energy-warnings').innerHTML = gained.map((w) => `<li>${escapeHtml(w)} (the bar after passes the ` +
+                                                     'dashed line of the energy before; <a href="friction.html#friction_energy">' +
+                                                     'why</a>)</li>').join('');
     $('result-json').textContent = out ? out.resultText : '';
     if (out && out.error && state.scene === null) {
       $('scene-text-box').open = true;
@@ -1657,6 +1847,12 @@
       return handles.map((h) => ({kind: h.kind, body: h.body,
                                   x: rect.left + h.at[0] * rect.width / canvas.width,
                                   y: rect.top + h.at[1] * rect.height / canvas.height}));
+    },
+    // Each impulse arrow: its contact, the body it acts on, its direction on the screen (x to the
+    // right, y up) and its length in pixels of the canvas.
+    impulseArrows() {
+      return impulseArrows.map((a) => ({contact: a.contact, body: a.body,
+                                         dx: a.to[0] - a.from[0], dy: a.from[1] - a.to[1]}));
     },
   };
 

@@ -15,6 +15,12 @@
 //               Tab; nothing wider than the window at 360 px; the animation plays; the system
 //               typeset
 //   links       every "try it" link of the site opens its scene without an error
+//   friction    the friction μ and the restitution law set through their controls on the rod of
+//               lab 9: the result is the command line's for the scene the address then holds, the
+//               hand-worked impulses of the docs page, the energy-gained warning for Newton's law
+//               only; μ = 0 and Newton's law write no key (the address returns byte for byte);
+//               the address round-trips the keys; the whole impulse drawn; the methods that refuse
+//               several contacts with friction show the command line's message
 //
 // On every page: no console error, no exception, no request outside the site (file:, data:,
 // blob: only).
@@ -268,6 +274,22 @@ function checkAgainstCommandLine(state, line, where) {
   }
 }
 
+// The address of @p state opened afresh in a new page: the same result and address, and the
+// controls named in @p controls (id: value) showing those values; then back to page @p p.
+async function checkSharedLink(browser, p, state, controls, where) {
+  const shared = await open(browser, state.hash);
+  const again = await pageState(shared);
+  check(again.result === state.result && again.hash === state.hash, `${where}: the same result`);
+  const values = {};
+  for (const id of Object.keys(controls)) {
+    values[id] = await shared.evaluate(`document.getElementById(${JSON.stringify(id)}).value`);
+  }
+  check(JSON.stringify(values) === JSON.stringify(controls), `${where}: the same controls`, JSON.stringify(values));
+  checkClean(shared, where);
+  await shared.close();
+  await p.send('Page.bringToFront');
+}
+
 function jsonFiles(folder) {
   const dir = join(source, folder);
   return readdirSync(dir).filter((f) => f.endsWith('.json')).sort().map((f) => join(dir, f));
@@ -373,15 +395,7 @@ const groups = {
     check(await p.evaluate('document.getElementById("body-0-mass").value') === '1.02', 'the number field follows the slider');
 
     // The shared link, opened afresh, shows the same.
-    const shared = await open(browser, state.hash);
-    const again = await pageState(shared);
-    check(again.result === state.result && again.hash === state.hash, 'the shared link shows the same result');
-    check(await shared.evaluate('document.getElementById("body-0-mass").value') === '1.02' &&
-          await shared.evaluate('document.getElementById("preset").value') === '',
-          'the shared link shows the same controls');
-    checkClean(shared, 'shared link');
-    await shared.close();
-    await p.send('Page.bringToFront');
+    await checkSharedLink(browser, p, state, {'body-0-mass': '1.02', 'preset': ''}, 'shared link');
 
     // The velocity of ball 1 dragged on the canvas: its handle, 40 px to the left.
     await p.evaluate('document.getElementById("view").scrollIntoView()');
@@ -463,6 +477,151 @@ const groups = {
     check(await p.evaluate('document.querySelector("#system-equation .merror, #system-equation [data-mjx-error]") === null'),
           'the system is typeset without a MathJax error');
     checkClean(p, 'interaction');
+  },
+
+  async friction(browser) {
+    const rod = presetsOfSite().find((preset) => preset.id === 'rod-rough-floor');
+    check(rod !== undefined, 'the rod on a rough floor (lab 9) is a preset');
+    if (!rod) {
+      return;
+    }
+    const rodText = JSON.stringify(rod.scene);
+    const rodHash = '#scene=' + encodeURIComponent(rodText);
+    const p = await open(browser, rodHash);
+    const value = (id) => p.evaluate(`document.getElementById(${JSON.stringify(id)}).value`);
+    const energyWarnings = () => p.evaluate(`[...document.querySelectorAll('#energy-warnings li')].map((li) => li.textContent)`);
+    const gained = "energy gained: Newton's restitution with friction; see the docs page on friction";
+    // Waits for the page to show a change made by @p act, and for the address to follow it.
+    const change = async (act) => {
+      const before = await shown(p);
+      const hash = await p.evaluate('location.hash');
+      await act();
+      await p.waitFor(`Number(document.body.dataset.shown) > ${before}`);
+      await p.waitFor(`location.hash !== ${JSON.stringify(hash)}`);
+      const state = await pageState(p);
+      return {state, scene: JSON.parse(sceneOfHash(state.hash)), result: state.result ? JSON.parse(state.result) : null};
+    };
+    const press = (id, key) => change(async () => {
+      await p.evaluate(`document.getElementById(${JSON.stringify(id)}).focus()`);
+      await p.press(key);
+    });
+    // A number typed into a field, as a reader types it (a trusted input event).
+    const type = (id, text) => change(async () => {
+      await p.evaluate(`(() => { const e = document.getElementById(${JSON.stringify(id)}); e.focus(); e.value = ''; })()`);
+      await p.send('Input.insertText', {text});
+    });
+    const near = (x, y, tolerance) => typeof x === 'number' && Math.abs(x - y) <= tolerance;
+
+    // The rod as lab 9 and the docs page "Friction and restitution" work it by hand: m = 1, L = 1,
+    // I = 1/12 at 45°, centre velocity (0.7, -1), μ = 0.8, e = 1.9, Newton's law. W = [[2.5, -1.5],
+    // [-1.5, 2.5]], u0 = (-1, 0.7): the slip stops at P_n = 0.2, the end sticks (1.5 <= 0.8 * 2.5),
+    // compression ends at 0.2 + 0.26/1.6 = 0.3625, and Newton's law ends at u = (0.9, 0), so
+    // P = W^-1 (u - u0) = (0.925, 0.275); the energy goes from 0.745 to 0.795.
+    let state = await pageState(p);
+    checkAgainstCommandLine(state, commandLineOnText(rodText), 'rod, Newton');
+    let result = JSON.parse(state.result);
+    check(near(result.impulses[0].magnitude, 0.925, 1e-12) && near(result.impulses[0].tangential, 0.275, 1e-12) &&
+          result.impulses[0].slip === 'stick', 'rod, Newton: the hand-worked impulse (0.925, 0.275), sticking',
+          JSON.stringify(result.impulses[0]));
+    check(near(result.energy.after, 0.795, 1e-12), 'rod, Newton: the energy after is 0.795 (gained 0.05)', result.energy.after);
+    check(await value('preset') === 'rod-rough-floor' && await value('friction-number') === '0.8' &&
+          await value('friction') === '0.8' && await value('restitution') === 'newton',
+          'the controls show the preset, μ = 0.8 and Newton\'s law');
+    check(JSON.stringify(await energyWarnings()).includes(gained), 'rod, Newton: the energy-gained warning beside the energy bars',
+          JSON.stringify(await energyWarnings()));
+    const facts = await p.evaluate('document.getElementById("friction-facts").textContent');
+    check(facts.includes('slip until Fdt = 0.2, stick until 0.925; compression ended at Fdt = 0.3625'),
+          'rod, Newton: the phases of slip as the text report writes them', facts);
+    const table = await p.evaluate('document.getElementById("impulses-table").textContent');
+    check(table.includes('tangential') && table.includes('0.275') && table.includes('stick'),
+          'rod, Newton: the impulses table has the tangential impulse and how the slip ended', table);
+    // The impulse on the rod, (P_t, P_n) = (0.275, 0.925) for the normal (0, -1) and the tangent
+    // (1, 0): drawn as the whole vector, 73.4° from the floor, not along the normal (90°); its
+    // 60 px length leaves 1/60 rad of rounding.
+    const arrows = await p.evaluate('impulselabPage.impulseArrows()');
+    check(arrows.length === 1 && arrows[0].body === 'rod' &&
+          near(Math.atan2(arrows[0].dy, arrows[0].dx), Math.atan2(0.925, 0.275), 0.02),
+          'rod: the impulse drawn on the rod as the whole vector', JSON.stringify(arrows));
+
+    // The law from the keyboard: End is the energetic law, then Up is Poisson's, Home Newton's.
+    // Hand values (the docs page): energetic P_n = 0.3625 + sqrt(0.1489640625), P_t = 0.1690752,
+    // energy 0.66104625; Poisson's P_n = 1.9 * 0.3625 = 0.68875, P_t = 0.13325, energy 0.62702625.
+    const laws = [['End', 'energetic', 0.3625 + Math.sqrt(0.1489640625), 0.66104625],
+                  ['ArrowUp', 'poisson', 0.68875, 0.62702625]];
+    for (const [key, law, normal, energy] of laws) {
+      let scene;
+      ({state, scene, result} = await press('restitution', key));
+      check(scene.solver && scene.solver.restitution === law, `rod, ${law}: the law is in the address`, JSON.stringify(scene.solver));
+      checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), `rod, ${law}`);
+      check(near(result.impulses[0].magnitude, normal, 1e-9) && near(result.energy.after, energy, 1e-12),
+            `rod, ${law}: the hand-worked impulse and energy`, JSON.stringify([result.impulses[0], result.energy]));
+      check((await energyWarnings()).length === 0 && !state.warnings.some((w) => w.startsWith('energy gained')),
+            `rod, ${law}: no energy gained, no warning`, JSON.stringify(state.warnings));
+    }
+    let scene;
+    ({state, scene} = await press('restitution', 'Home'));
+    check(scene.solver === undefined && state.hash === rodHash, 'Newton\'s law writes no key: the preset\'s address again',
+          state.hash.slice(0, 200));
+    check(await value('preset') === 'rod-rough-floor', 'and the menu shows the preset again');
+    check(JSON.stringify(await energyWarnings()).includes(gained), 'rod, Newton again: the warning is back');
+
+    // μ from the keyboard: Home is 0, no key (the frictionless rod: the paper's 1.9/2.5 = 0.76 and
+    // no tangential column); a step up is 0.05, written after the elasticity.
+    let resultText;
+    ({state, scene, result} = await press('friction', 'Home'));
+    resultText = state.result;
+    check(scene.friction === undefined && JSON.stringify(scene) === JSON.stringify({...rod.scene, friction: undefined}),
+          'μ = 0 writes no key', JSON.stringify(scene));
+    checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'rod, μ = 0');
+    check(near(result.impulses[0].magnitude, 0.76, 1e-12) && !('tangential' in result.impulses[0]),
+          'rod, μ = 0: the paper\'s impulse 0.76, no tangential impulse', JSON.stringify(result.impulses[0]));
+    ({state, scene} = await press('friction', 'ArrowRight'));
+    check(scene.friction === 0.05 && Object.keys(scene).join(',') === Object.keys(rod.scene).join(','),
+          'a step of the slider: μ = 0.05, in its place after the elasticity', Object.keys(scene).join(','));
+    checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'rod, μ = 0.05');
+    check(await value('friction-number') === '0.05', 'the number field follows the slider');
+    ({state} = await type('friction-number', '0.8'));
+    check(state.hash === rodHash, 'μ typed back to 0.8: the preset\'s address byte for byte', state.hash.slice(0, 200));
+
+    // The address round-trips both keys: Poisson's law and μ = 0.3 (the slip reverses).
+    await press('restitution', 'ArrowDown');
+    ({state, scene} = await type('friction-number', '0.3'));
+    check(scene.friction === 0.3 && scene.solver.restitution === 'poisson', 'μ = 0.3 and Poisson\'s law in the address',
+          JSON.stringify(scene));
+    checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'rod, Poisson, μ = 0.3');
+    check(JSON.parse(state.result).impulses[0].slip === 'reversed', 'rod at μ = 0.3: the slip reverses (1.5 > 0.3 * 2.5)');
+    await checkSharedLink(browser, p, state, {'friction-number': '0.3', 'friction': '0.3', 'restitution': 'poisson'},
+                          'friction, shared link');
+
+    // A frictionless scene of two contacts: μ and the law set and set back leave its address and
+    // its result as they were, byte for byte; with μ = 0.5 the paper's method and complementarity
+    // refuse it with the command line's message, serial collisions solve it.
+    const box = presetsOfSite().find((preset) => preset.id === 'box-lands-flat');
+    const boxHash = '#scene=' + encodeURIComponent(JSON.stringify(box.scene));
+    await navigate(p, boxHash);
+    const boxResult = (await pageState(p)).result;
+    ({state, scene} = await type('friction-number', '0.5'));
+    check(scene.friction === 0.5, 'box: μ = 0.5 in the address', JSON.stringify(scene));
+    checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'box, μ = 0.5, the paper\'s method');
+    check(state.error.includes('cannot resolve 2 contacts with friction'), 'box, μ = 0.5: the paper\'s method refuses it', state.error);
+    await p.evaluate('document.getElementById("view").scrollIntoView()');
+    check(await p.evaluate('impulselabPage.impulseArrows().length') === 0, 'box refused: no impulse drawn');
+    ({state} = await press('method', 'ArrowDown'));
+    check(JSON.parse(sceneOfHash(state.hash)).solver.method === 'complementarity', 'box: complementarity chosen');
+    checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'box, μ = 0.5, complementarity');
+    check(state.error.includes('complementarity'), 'box, μ = 0.5: complementarity refuses it', state.error);
+    ({state, result} = await press('method', 'End'));
+    checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'box, μ = 0.5, serial');
+    check(result && result.impulses.every((i) => typeof i.tangential === 'number' && typeof i.slip === 'string'),
+          'box, serial: each contact\'s tangential impulse and slip', state.result.slice(0, 200));
+    await press('method', 'Home');
+    ({state} = await type('friction-number', '0'));
+    check(state.hash === boxHash && state.result === boxResult, 'box: μ set back to 0, the same address and result byte for byte',
+          state.hash.slice(0, 200));
+    await press('restitution', 'ArrowDown');
+    ({state} = await press('restitution', 'Home'));
+    check(state.hash === boxHash && state.result === boxResult, 'box: the law set back to Newton\'s, the same address and result');
+    checkClean(p, 'friction');
   },
 
   async links(browser) {
