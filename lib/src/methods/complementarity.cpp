@@ -444,6 +444,35 @@ ComplementaritySolution lemke(const Eigen::Ref<const Eigen::MatrixXd>& A,
   return lemke_with(MatrixXd(A), VectorXd(B), Factor{}, options);
 }
 
+LemkeLcp lemke_lcp(const Eigen::Ref<const Eigen::MatrixXd>& M,
+                   const Eigen::Ref<const Eigen::VectorXd>& q) {
+  require_sizes(M.rows(), M.cols(), q.size());
+  const Index n = q.size();
+  if (n > pivoting_limit) {
+    throw InvalidInput("Lemke's pivoting takes at most " + std::to_string(pivoting_limit) +
+                       " unknowns (its tableau is dense), got " + std::to_string(n));
+  }
+  LemkeLcp result;
+  if (n == 0) {
+    return result;  // nothing to solve: the empty z solves it
+  }
+  if (!all_finite_in(M) || !all_finite_in(q)) {
+    result.end = LemkeEnd::non_finite;
+    result.z = VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
+    result.w = result.z;
+    return result;
+  }
+  // pivot() solves w = A F - B: A = M, B = -q. Nothing in it assumes A symmetric or positive
+  // semi-definite; only what a ray means does.
+  const int max_pivots = static_cast<int>(std::min<Index>(100 * (n + 1), 1000000));
+  const Pivoted p = pivot(M, -q, max_pivots);
+  result.pivots = p.pivots;
+  result.end = p.solved ? LemkeEnd::solution : p.ray ? LemkeEnd::ray : LemkeEnd::pivot_limit;
+  result.z = p.z;
+  result.w = M * p.z + q;
+  return result;
+}
+
 ComplementaritySolution active_set(const Eigen::Ref<const Eigen::MatrixXd>& G,
                                    const Eigen::Ref<const Eigen::VectorXd>& g,
                                    DependentPolicy dependent, double tolerance) {
