@@ -162,9 +162,77 @@ FrictionSolution solve_friction(const FrictionSystem& system, double tolerance, 
   q.segment(n, n) = system.u0.tail(n);
   q.segment(2 * n, n) = -system.u0.tail(n);
 
-  const LemkeLcp lemke = lemke_lcp(M, q);
-  s.pivots = lemke.pivots;
-  if (lemke.end == LemkeEnd::non_finite) {
+  // Lemke's method in floating point can end on a ray where exact arithmetic would not (none
+  // exists when W's null space holds no pushes within the friction cones, see the header): the
+  // problem's degenerate rows (q = 0 in the bound rows, equal tangential columns of contacts on
+  // one flat floor) send the rounded tableau down another path. The contacts are then taken in
+  // other orders (reversed, rotated: up to 8 orders), which changes the path and not the
+  // problem, and then with a looser tie tolerance.
+  // Each attempt's impulses are then settled as the frictionless method settles its own: the
+  // unknowns that carry a value keep their equations w_i = 0, solved again from M (least norm),
+  // more accurately than the tableau's updates leave them; the closer answer is kept.
+  const auto impulses_of = [&](const VectorXd& z, VectorXd& normal, VectorXd& tangential) {
+    normal = z.head(n).cwiseMax(0.0);
+    tangential = z.segment(n, n) - z.segment(2 * n, n);
+    double scale = 0.0;
+    const double residual = friction_residual(system, normal, tangential, scale);
+    return std::pair{residual, scale};
+  };
+  bool found = false;
+  bool non_finite = false;
+  const Index orders = std::min<Index>(2 * n, 8);
+  for (Index attempt = 0; attempt < 2 * orders && !(found && s.residual <= tolerance * s.scale);
+       ++attempt) {
+    // First every order with lemke()'s tie tolerance, then every order with a looser one, which
+    // recognises more rounded ties as the degenerate pivots they are.
+    const double tie = attempt < orders ? 1e-11 : 1e-9;
+    Eigen::VectorXi order(n);
+    for (Index v = 0; v < n; ++v) {
+      const Index rotated = (v + (attempt % orders) / 2) % n;
+      order(v) = static_cast<int>((attempt % orders) % 2 == 1 ? n - 1 - rotated : rotated);
+    }
+    Eigen::VectorXi unknowns(4 * n);
+    for (Index b = 0; b < 4; ++b) {
+      unknowns.segment(b * n, n) = order.array() + static_cast<int>(b * n);
+    }
+    // Unknown i of the permuted problem is unknown unknowns(i) of the problem.
+    const LemkeLcp tried = lemke_lcp(M(unknowns, unknowns), q(unknowns), tie);
+    s.pivots += tried.pivots;
+    if (tried.end == LemkeEnd::non_finite) {
+      non_finite = true;
+      break;
+    }
+    if (tried.end != LemkeEnd::solution) {
+      continue;
+    }
+    VectorXd z = VectorXd::Zero(4 * n);
+    z(unknowns) = tried.z;
+    std::vector<Index> on;
+    for (Index i = 0; i < 4 * n; ++i) {
+      if (z(i) > 0.0) {
+        on.push_back(i);
+      }
+    }
+    VectorXd settled = VectorXd::Zero(4 * n);
+    if (!on.empty()) {
+      const MatrixXd block = M(on, on);
+      const VectorXd rhs = -q(on);
+      settled(on) = impulse::detail::least_norm(block, rhs, 0.0).cwiseMax(0.0);
+    }
+    for (const VectorXd& candidate : {z, settled}) {
+      VectorXd normal;
+      VectorXd tangential;
+      const auto [residual, scale] = impulses_of(candidate, normal, tangential);
+      if (all_finite_in(candidate) && (!found || residual < s.residual)) {
+        found = true;
+        s.normal = normal;
+        s.tangential = tangential;
+        s.residual = residual;
+        s.scale = scale;
+      }
+    }
+  }
+  if (non_finite) {
     s.status = LcpStatus::non_finite;
     s.normal.setConstant(std::numeric_limits<double>::quiet_NaN());
     s.tangential = s.normal;
@@ -173,15 +241,13 @@ FrictionSolution solve_friction(const FrictionSystem& system, double tolerance, 
     s.scale = s.residual;
     return s;
   }
-  if (lemke.end != LemkeEnd::solution) {
-    // A ray (or, not expected, the pivot limit): no impulses; the caller says so.
+  if (!found) {
+    // Every order ended on a ray (or, not expected, at the pivot limit): no impulses; the caller
+    // says so.
     s.status = LcpStatus::infeasible;
     s.residual = friction_residual(system, s.normal, s.tangential, s.scale);
     return s;
   }
-  s.normal = lemke.z.head(n);
-  s.tangential = lemke.z.segment(n, n) - lemke.z.segment(2 * n, n);
-  s.residual = friction_residual(system, s.normal, s.tangential, s.scale);
 
   // The least-norm tangential impulses that change nothing: P_t* = P_t - its part in the null
   // space of the tangential columns (of G when the system carries its factor: W_tt = G_t^T G_t,

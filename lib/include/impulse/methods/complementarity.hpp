@@ -154,9 +154,12 @@ struct LemkeLcp {
 /// positive semi-definite or copositive-plus M); the caller must report it, never use z.
 /// @param M the matrix, square, at most pivoting_limit rows (else InvalidInput)
 /// @param q the right-hand side, of M's size (else InvalidInput)
+/// @param tie ratios closer than this (relative) count as tied and go to the lexicographic rule;
+///        lemke() uses 1e-11. A looser tie follows exact arithmetic's path through degenerate
+///        pivots that rounding would otherwise split (in (0, 1e-3), else InvalidInput)
 /// @return how it ended, z, w and the pivots
 [[nodiscard]] LemkeLcp lemke_lcp(const Eigen::Ref<const Eigen::MatrixXd>& M,
-                                 const Eigen::Ref<const Eigen::VectorXd>& q);
+                                 const Eigen::Ref<const Eigen::VectorXd>& q, double tie = 1e-11);
 
 /// @brief The active-set method (Lawson and Hanson's non-negative least squares) on the factor:
 /// the complementarity problem of @f$ A = G^T G @f$, @f$ B = G^T g @f$.
