@@ -223,6 +223,35 @@ TEST_CASE("Friction LCP: the box landing flat on two corners, no tangential spee
   CHECK(std::abs(rigid(vertex.after, 1).L - rigid(r.after, 1).L) < 1e-12);
 }
 
+TEST_CASE("Friction LCP: the box landing flat and stopping to stick: the least-norm share",
+          "[methods][friction]") {
+  // Velocity (0.2, -1), μ = 0.5. Suppose both corners push and stick: the corners' horizontal
+  // velocity v_x' + 0.5 ω' = 0 and vertical v_y' ∓ ω' = 0.5 give ω' = 0, v' = (0, 0.5), so
+  // P_t,0 + P_t,1 = -0.2 and P_n,0 + P_n,1 = 1.5; no torque: -P_n0 + 0.5 P_t0 + P_n1 + 0.5 P_t1 =
+  // 0, P_n1 - P_n0 = 0.1: P_n = (0.7, 0.8). Coulomb allows any split of -0.2 with |P_t0| <= 0.35,
+  // |P_t1| <= 0.4 (the squeeze again): the least-norm one is (-0.1, -0.1). KE 0.52 -> 0.125.
+  const Configuration c = box({0.2, -1.0});
+  const std::vector<double> mu{0.5, 0.5};
+  const auto r = resolve_friction_complementarity(c, mu);
+  REQUIRE(r.solution.status == LcpStatus::solved);
+  CHECK(r.solution.least_norm);
+  CHECK(r.solution.normal(0) == Approx(0.7));
+  CHECK(r.solution.normal(1) == Approx(0.8));
+  CHECK(r.solution.tangential(0) == Approx(-0.1));
+  CHECK(r.solution.tangential(1) == Approx(-0.1));
+  CHECK(rigid(r.after, 1).p.isApprox(Vector2d(0.0, 0.5)));
+  CHECK(std::abs(rigid(r.after, 1).L) < 1e-12);
+  CHECK(impulse::multipoint::kinetic_energy(r.after) == Approx(0.125));
+  // Lemke's own vertex shares it otherwise (all at one corner, as pivoting does); the same
+  // normal impulses, the same sum of friction, the same bodies after.
+  const auto vertex = resolve_friction_complementarity(c, mu, 1e-10, false);
+  REQUIRE(vertex.solution.status == LcpStatus::solved);
+  CHECK(vertex.solution.normal.isApprox(r.solution.normal, 1e-12));
+  CHECK(vertex.solution.tangential.sum() == Approx(-0.2));
+  CHECK(rigid(vertex.after, 1).p.isApprox(rigid(r.after, 1).p, 1e-12));
+  CHECK(std::abs(rigid(vertex.after, 1).L - rigid(r.after, 1).L) < 1e-12);
+}
+
 TEST_CASE("Friction LCP: the box sliding flat on two corners", "[methods][friction]") {
   // Velocity (1, -1), no spin, μ = 0.5, e = 1.5. Suppose both corners push and slide forwards
   // (+x): the box gets (P_t,v, P_n,v) at corner v with P_t,v = -μ P_n,v. Newton at both corners
