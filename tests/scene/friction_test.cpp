@@ -270,21 +270,114 @@ TEST_CASE("Friction: several contacts: serial collisions, the other methods refu
   CHECK(words(r, "slip")[1] == "slip");
   CHECK(r.outcome.details[0] ==
         "each collision by the exact single-contact rule: friction 0.2, Newton's restitution");
-  for (const auto method :
-       {impulse::methods::Method::simultaneous, impulse::methods::Method::complementarity}) {
-    CHECK_THROWS_MATCHES(
-        sc::solve_output(world, "s.json", method, sc::Format::text), InvalidInput,
-        Message(std::string("s.json: contacts: the method \"") +
-                std::string(impulse::name_of(method)) +
-                "\" cannot resolve 2 contacts with friction (contacts[0] has 0.2): " +
-                (method == impulse::methods::Method::simultaneous
-                     ? "the paper's simultaneous system has no friction and only Newton's law"
-                     : "the complementarity method with Coulomb friction and other laws than "
-                       "Newton's is not supported yet") +
-                "; the serial method (solver.method \"serial\", or --method serial) resolves "
-                "each collision by the exact single-contact rule"));
+  // The paper's simultaneous method is refused; the complementarity method solves the same
+  // contacts at once: contact 1 separates (the other ball leaves at 5), so the answer is contact
+  // 0's alone, as above.
+  CHECK_THROWS_MATCHES(
+      sc::solve_output(world, "s.json", impulse::methods::Method::simultaneous, sc::Format::text),
+      InvalidInput,
+      Message("s.json: contacts: the method \"simultaneous\" cannot resolve 2 contacts with "
+              "friction (contacts[0] has 0.2): the paper's simultaneous system has no friction "
+              "and only Newton's law; the serial method (solver.method \"serial\", or --method "
+              "serial) resolves each collision by the exact single-contact rule"));
+  const sc::Result c = sc::resolve(world, impulse::methods::Method::complementarity);
+  CHECK(c.impulses[0].magnitude == Approx(1.5).epsilon(1e-12));
+  CHECK(c.impulses[1].magnitude == 0.0);
+  CHECK(numbers(c, "tangential")[0] == Approx(-0.3).epsilon(1e-12));
+  CHECK(numbers(c, "tangential")[1] == 0.0);
+  CHECK(words(c, "slip")[0] == "slip");
+  CHECK(words(c, "slip")[1] == "slip");
+  // Poisson's law needs the end of compression, which one problem for all contacts has not.
+  std::string poisson = text;
+  poisson.replace(poisson.find("\"method\": \"serial\""), 18,
+                  "\"method\": \"complementarity\", \"restitution\": \"poisson\"");
+  CHECK_THROWS_MATCHES(
+      sc::resolve(sc::parse_world(poisson, "s.json")), InvalidInput,
+      Message("contacts: the method \"complementarity\" cannot resolve 2 contacts with "
+              "friction (contacts[0] has 0.2) and Poisson's restitution: the complementarity "
+              "method applies Newton's law only (it solves all contacts at once, with no end of "
+              "compression, which Poisson's restitution needs); the serial method "
+              "(solver.method \"serial\", or --method serial) resolves each collision by the "
+              "exact single-contact rule"));
+  // --compare compares the methods that can: serial and complementarity, and says why not the
+  // paper's.
+  const sc::SolveOutput compared = sc::compare_output(world, "s.json", sc::Format::json);
+  const json j = json::parse(compared.report);
+  CHECK(!j.contains("simultaneous"));
+  CHECK(j.contains("complementarity"));
+  CHECK(j.contains("serial"));
+  CHECK(j["complementarity"]["impulses"][0]["tangential"].get<double>() ==
+        Approx(-0.3).epsilon(1e-12));
+  REQUIRE(!compared.warnings.empty());
+  CHECK_THAT(compared.warnings.back(),
+             Contains("simultaneous: not compared: the method \"simultaneous\" cannot resolve"));
+}
+
+// The box of tutorials/scenes/box-lands-flat.json (2 wide, 1 high, m = 1, I = 5/12, corners on
+// the static ground at (-1, 0) and (1, 0), e = 1.5) with μ = 0.5, by the complementarity method.
+sc::Result box_by_complementarity(double vx) {
+  json scene =
+      json::parse(sc::read_file(std::string(IMPULSELAB_SCENES_DIR) + "/box-lands-flat.json"));
+  scene["friction"] = 0.5;
+  scene["bodies"][1]["velocity"] = {vx, -1};
+  scene["solver"] = {{"method", "complementarity"}};
+  return sc::resolve(sc::parse_world(scene.dump(), "box.json"));
+}
+
+TEST_CASE("Friction: the box landing flat on two corners, complementarity with friction",
+          "[scene][friction]") {
+  // No horizontal speed. The paper's frictionless answer: A = [[3.4, -1.4], [-1.4, 3.4]],
+  // B = (1.5, 1.5), F = 0.75 each, the box leaves at (0, 0.5) without spin, so no corner slips
+  // and P_t = 0 meets Coulomb's law: it is the friction problem's answer too (the squeeze ±f,
+  // |f| <= 0.375, would change nothing; the least-norm choice reports 0). KE 0.5 -> 0.125.
+  const sc::Result r = box_by_complementarity(0.0);
+  REQUIRE(sc::finished(r));
+  CHECK(r.impulses[0].magnitude == Approx(0.75).epsilon(1e-12));
+  CHECK(r.impulses[1].magnitude == Approx(0.75).epsilon(1e-12));
+  CHECK(std::abs(numbers(r, "tangential")[0]) < 1e-12);
+  CHECK(std::abs(numbers(r, "tangential")[1]) < 1e-12);
+  CHECK(words(r, "slip") == std::vector<std::string>{"stick", "stick"});
+  CHECK((r.bodies[1].after.momentum - Eigen::Vector2d(0, 0.5)).norm() < 1e-12);
+  CHECK(std::abs(r.bodies[1].after.angular_momentum) < 1e-12);
+  CHECK(r.energy_before == Approx(0.5));
+  CHECK(r.energy_before + r.energy_change == Approx(0.125));
+  CHECK(r.outcome.warnings.empty());
+}
+
+TEST_CASE("Friction: the box sliding flat on two corners, complementarity with friction",
+          "[scene][friction]") {
+  // Velocity (1, -1). Both corners push and slide forwards: P_t,v = -μ P_n,v on the ground along
+  // t = (-1, 0), i.e. the box gets (P_t,v, P_n,v). Newton at both corners: ω' = 0, v_y' = 0.5,
+  // P_n,0 + P_n,1 = 1.5; no torque: P_n,1 - P_n,0 = 0.5 μ 1.5 = 0.375. So P_n = (0.5625, 0.9375),
+  // P_t = (-0.28125, -0.46875), v' = (1 - 0.75, 0.5) = (0.25, 0.5) (still sliding forwards),
+  // KE 1 -> 0.15625.
+  const sc::Result r = box_by_complementarity(1.0);
+  REQUIRE(sc::finished(r));
+  CHECK(r.impulses[0].magnitude == Approx(0.5625).epsilon(1e-12));
+  CHECK(r.impulses[1].magnitude == Approx(0.9375).epsilon(1e-12));
+  CHECK(numbers(r, "tangential")[0] == Approx(-0.28125).epsilon(1e-12));
+  CHECK(numbers(r, "tangential")[1] == Approx(-0.46875).epsilon(1e-12));
+  CHECK(words(r, "slip") == std::vector<std::string>{"slip", "slip"});
+  CHECK((r.bodies[1].after.momentum - Eigen::Vector2d(0.25, 0.5)).norm() < 1e-12);
+  CHECK(std::abs(r.bodies[1].after.angular_momentum) < 1e-12);
+  CHECK(r.energy_before + r.energy_change == Approx(0.15625));
+}
+
+TEST_CASE("Friction: several contacts with friction 0 give today's results, byte for byte",
+          "[scene][friction]") {
+  // μ = 0 everywhere and Newton's law: no contact law, so the frictionless path runs.
+  json scene =
+      json::parse(sc::read_file(std::string(IMPULSELAB_SCENES_DIR) + "/box-lands-flat.json"));
+  const std::string without = scene.dump();
+  scene["friction"] = 0;
+  scene["solver"] = {{"restitution", "newton"}};
+  const std::string with_keys = scene.dump();
+  for (const auto method : impulse::methods::all_methods) {
+    CHECK(sc::solve_output(sc::parse_world(with_keys, "s.json"), "s.json", method, sc::Format::json)
+              .report ==
+          sc::solve_output(sc::parse_world(without, "s.json"), "s.json", method, sc::Format::json)
+              .report);
   }
-  CHECK_THROWS_AS(sc::compare_output(world, "s.json", sc::Format::text), InvalidInput);
 }
 
 TEST_CASE("Friction: the box landing flat on two corners, serial collisions with friction",

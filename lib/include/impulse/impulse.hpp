@@ -12,6 +12,7 @@
 #include "impulse/friction/contact.hpp"
 #include "impulse/material_2d/material_2d.hpp"
 #include "impulse/methods/complementarity.hpp"
+#include "impulse/methods/friction_complementarity.hpp"
 #include "impulse/methods/methods.hpp"
 #include "impulse/methods/serial.hpp"
 #include "impulse/multipoint/multipoint.hpp"
@@ -27,7 +28,8 @@
 /// each paper section live in a namespace of their own: impulse::one_d (section 1),
 /// impulse::material_2d (section 2), impulse::rigid_2d (section 3), impulse::multipoint
 /// (sections 4 and 5); impulse::scene turns a scene file's bodies and contacts into a solved
-/// collision. impulse::methods goes beyond the paper: impulses that only push, and contacts
-/// resolved one at a time; so does impulse::friction: one contact with Coulomb friction,
-/// followed through the normal impulse, with three laws of restitution.
+/// collision. impulse::methods goes beyond the paper: impulses that only push (with Coulomb
+/// friction too, all contacts at once), and contacts resolved one at a time; so does
+/// impulse::friction: one contact with Coulomb friction, followed through the normal impulse,
+/// with three laws of restitution.
 namespace impulse {}

@@ -909,8 +909,26 @@ SolveOutput solve_output(const Result& result, std::string_view source, Format f
 
 SolveOutput compare_output(const World& world, std::string_view source, Format format,
                            bool colour) {
+  // The methods that can resolve the scene (with friction at several contacts, the paper's
+  // simultaneous method cannot): the others are left out, and the warnings say why. If none can
+  // be compared, resolved() refuses the scene with the first method's reason.
+  std::vector<methods::Method> compared;
+  std::vector<std::string> left_out;
+  const methods::Options options = world.options();
+  for (const methods::Method method : methods::all_methods) {
+    const std::string why = methods::unsupported(method, world.configuration(), options);
+    if (why.empty()) {
+      compared.push_back(method);
+    } else {
+      left_out.push_back(std::string(name_of(method)) + ": not compared: " + why);
+    }
+  }
+  if (compared.size() < 2) {
+    compared.assign(methods::all_methods.begin(), methods::all_methods.end());
+    left_out.clear();
+  }
   const std::vector<Result> results =
-      resolved(world, source, std::span<const methods::Method>(methods::all_methods));
+      resolved(world, source, std::span<const methods::Method>(compared));
   for (const Result& r : results) {
     if (r.status != SolveStatus::success) {
       throw InvalidInput(overflow_message(r, source, true));
@@ -925,6 +943,9 @@ SolveOutput compare_output(const World& world, std::string_view source, Format f
       output.warnings = system_warnings(r, source);
       break;
     }
+  }
+  for (std::string& why : left_out) {
+    output.warnings.push_back(std::move(why));
   }
   for (const Result& r : results) {
     if (r.outcome.finished) {

@@ -114,7 +114,8 @@ bool lexicographically_smaller(const MatrixXd& T, const VectorXd& rhs, Index a, 
   return a < b;
 }
 
-Pivoted pivot(const MatrixXd& A, const VectorXd& B, int max_pivots) {
+// `tie`: ratios (and the lexicographic rows) closer than this, relative, count as equal.
+Pivoted pivot(const MatrixXd& A, const VectorXd& B, int max_pivots, double tie = 1e-11) {
   const Index n = B.size();
   Pivoted result;
   result.z = VectorXd::Zero(n);
@@ -141,7 +142,6 @@ Pivoted pivot(const MatrixXd& A, const VectorXd& B, int max_pivots) {
     basis[static_cast<std::size_t>(i)] = i;
   }
   constexpr double pivot_tolerance = 1e-12;
-  constexpr double tie = 1e-11;
 
   const auto do_pivot = [&](Index r, Index c) {
     const double p = T(r, c);
@@ -442,6 +442,38 @@ ComplementaritySolution lemke(const Eigen::Ref<const Eigen::MatrixXd>& A,
   options.dependent = dependent;
   options.tolerance = tolerance;
   return lemke_with(MatrixXd(A), VectorXd(B), Factor{}, options);
+}
+
+LemkeLcp lemke_lcp(const Eigen::Ref<const Eigen::MatrixXd>& M,
+                   const Eigen::Ref<const Eigen::VectorXd>& q, double tie) {
+  if (!(tie > 0.0 && tie < 1e-3)) {
+    throw InvalidInput("Lemke's tie tolerance must lie in (0, 1e-3), got " + format_number(tie));
+  }
+  require_sizes(M.rows(), M.cols(), q.size());
+  const Index n = q.size();
+  if (n > pivoting_limit) {
+    throw InvalidInput("Lemke's pivoting takes at most " + std::to_string(pivoting_limit) +
+                       " unknowns (its tableau is dense), got " + std::to_string(n));
+  }
+  LemkeLcp result;
+  if (n == 0) {
+    return result;  // nothing to solve: the empty z solves it
+  }
+  if (!all_finite_in(M) || !all_finite_in(q)) {
+    result.end = LemkeEnd::non_finite;
+    result.z = VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
+    result.w = result.z;
+    return result;
+  }
+  // pivot() solves w = A F - B: A = M, B = -q. Nothing in it assumes A symmetric or positive
+  // semi-definite; only what a ray means does.
+  const int max_pivots = static_cast<int>(std::min<Index>(100 * (n + 1), 1000000));
+  const Pivoted p = pivot(M, -q, max_pivots, tie);
+  result.pivots = p.pivots;
+  result.end = p.solved ? LemkeEnd::solution : p.ray ? LemkeEnd::ray : LemkeEnd::pivot_limit;
+  result.z = p.z;
+  result.w = M * p.z + q;
+  return result;
 }
 
 ComplementaritySolution active_set(const Eigen::Ref<const Eigen::MatrixXd>& G,

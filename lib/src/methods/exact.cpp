@@ -63,9 +63,20 @@ bool has_contact_law(const Options& options) {
 
 std::string unsupported(Method method, const multipoint::Configuration& configuration,
                         const Options& options) {
-  if (!has_contact_law(options) || configuration.contacts().size() <= 1 ||
-      method == Method::serial) {
+  const std::size_t n = configuration.contacts().size();
+  if (!has_contact_law(options) || n <= 1 || method == Method::serial) {
     return {};
+  }
+  if (method == Method::complementarity &&
+      options.restitution == friction::RestitutionLaw::newton) {
+    if (static_cast<Eigen::Index>(n) <= friction_pivoting_limit) {
+      return {};
+    }
+    return "the method \"complementarity\" with friction pivots on 4 unknowns per contact, at "
+           "most " +
+           std::to_string(friction_pivoting_limit) + " contacts, got " + std::to_string(n) +
+           "; the serial method (solver.method \"serial\", or --method serial) resolves each "
+           "collision by the exact single-contact rule";
   }
   std::string what;
   for (std::size_t v = 0; v < options.friction.size(); ++v) {
@@ -83,8 +94,9 @@ std::string unsupported(Method method, const multipoint::Configuration& configur
                      ": ";
   text.append(method == Method::simultaneous
                   ? "the paper's simultaneous system has no friction and only Newton's law"
-                  : "the complementarity method with Coulomb friction and other laws than "
-                    "Newton's is not supported yet");
+                  : "the complementarity method applies Newton's law only (it solves all "
+                    "contacts at once, with no end of compression, which " +
+                        law_name(options.restitution) + " needs)");
   text.append(
       "; the serial method (solver.method \"serial\", or --method serial) resolves each "
       "collision by the exact single-contact rule");

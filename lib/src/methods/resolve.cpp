@@ -36,8 +36,11 @@ Outcome resolve(Method method, const multipoint::Configuration& configuration, c
     if (const std::string why = unsupported(method, configuration, options); !why.empty()) {
       throw InvalidInput(why);
     }
-    return configuration.contacts().size() == 1
-               ? exact_single(method, configuration, paper, options)
+    if (configuration.contacts().size() == 1) {
+      return exact_single(method, configuration, paper, options);
+    }
+    return method == Method::complementarity
+               ? complementarity_friction(configuration, paper, options)
                : serial_exact(configuration, paper, options);
   }
   switch (method) {

@@ -128,6 +128,39 @@ struct ComplementaritySolution {
     const Eigen::Ref<const Eigen::MatrixXd>& A, const Eigen::Ref<const Eigen::VectorXd>& B,
     DependentPolicy dependent = DependentPolicy::minimum_norm, double tolerance = 1e-10);
 
+/// @brief How Lemke's method ended on a general problem (lemke_lcp()).
+enum class LemkeEnd {
+  solution,     ///< z0 left the basis: z solves the problem (up to the tableau's rounding)
+  ray,          ///< the entering variable was unbounded: the method stopped without a solution
+  pivot_limit,  ///< out of pivots (not expected: the lexicographic rule rules out cycling)
+  non_finite,   ///< M or q held a NaN or an infinity
+};
+
+/// @brief What Lemke's method found on a general problem @f$ w = M z + q @f$.
+struct LemkeLcp {
+  LemkeEnd end = LemkeEnd::solution;  ///< how it ended; z and w mean something only at solution
+  Eigen::VectorXd z;                  ///< the unknowns of the final basis, all @f$ \ge 0 @f$
+  Eigen::VectorXd w;                  ///< @f$ M z + q @f$ for that z
+  int pivots = 0;                     ///< pivots made
+};
+
+/// @brief Lemke's complementary pivoting on a general linear complementarity problem:
+/// @f$ w = M z + q @f$, @f$ z, w \ge 0 @f$, @f$ z^T w = 0 @f$, with M not necessarily symmetric
+/// or positive semi-definite (the problem of Coulomb friction, friction_complementarity.hpp).
+///
+/// The same pivoting as lemke(): covering vector all ones, the lexicographic ratio test (no
+/// cycling on degenerate problems, such as rows with @f$ q_i = 0 @f$), z0 leaving at the first
+/// tie. For a general M an end on a ray does not prove that no solution exists (it does for a
+/// positive semi-definite or copositive-plus M); the caller must report it, never use z.
+/// @param M the matrix, square, at most pivoting_limit rows (else InvalidInput)
+/// @param q the right-hand side, of M's size (else InvalidInput)
+/// @param tie ratios closer than this (relative) count as tied and go to the lexicographic rule;
+///        lemke() uses 1e-11. A looser tie follows exact arithmetic's path through degenerate
+///        pivots that rounding would otherwise split (in (0, 1e-3), else InvalidInput)
+/// @return how it ended, z, w and the pivots
+[[nodiscard]] LemkeLcp lemke_lcp(const Eigen::Ref<const Eigen::MatrixXd>& M,
+                                 const Eigen::Ref<const Eigen::VectorXd>& q, double tie = 1e-11);
+
 /// @brief The active-set method (Lawson and Hanson's non-negative least squares) on the factor:
 /// the complementarity problem of @f$ A = G^T G @f$, @f$ B = G^T g @f$.
 ///
@@ -245,5 +278,16 @@ struct EnumNames<methods::LcpStatus> {
        {methods::LcpStatus::inaccurate, "inaccurate"},
        {methods::LcpStatus::infeasible, "infeasible"},
        {methods::LcpStatus::non_finite, "non-finite"}}};
+};
+
+/// @brief The names of the ends of Lemke's method on a general problem.
+template <>
+struct EnumNames<methods::LemkeEnd> {
+  /// "solution", "ray", "pivot-limit", "non-finite"
+  static constexpr std::array<Named<methods::LemkeEnd>, 4> table{
+      {{methods::LemkeEnd::solution, "solution"},
+       {methods::LemkeEnd::ray, "ray"},
+       {methods::LemkeEnd::pivot_limit, "pivot-limit"},
+       {methods::LemkeEnd::non_finite, "non-finite"}}};
 };
 }  // namespace impulse

@@ -13,6 +13,7 @@
 #include "impulse/core/system.hpp"
 #include "impulse/friction/contact.hpp"
 #include "impulse/methods/complementarity.hpp"
+#include "impulse/methods/friction_complementarity.hpp"
 #include "impulse/methods/methods.hpp"
 #include "impulse/methods/outcome.hpp"
 #include "impulse/methods/serial.hpp"
@@ -59,10 +60,11 @@ struct Options {
 [[nodiscard]] bool has_contact_law(const Options& options);
 
 /// @brief Why @p method cannot resolve @p configuration with the contact law of @p options, or
-/// empty when it can. One contact: every method (the exact rule). Several contacts: only the
-/// serial method (the exact rule at each collision); the paper's simultaneous system has no
-/// friction and no law but Newton's, and the complementarity method with Coulomb friction is not
-/// built yet.
+/// empty when it can. One contact: every method (the exact rule). Several contacts: the serial
+/// method (the exact rule at each collision, every law); the complementarity method with
+/// Newton's law only (one problem for all contacts has no end of compression, which Poisson's
+/// and the energetic law need) and at most friction_pivoting_limit contacts; not the paper's
+/// simultaneous system, which has no friction and no law but Newton's.
 /// @param method the method
 /// @param configuration the checked bodies and contacts
 /// @param options the methods' options
@@ -81,6 +83,19 @@ struct Options {
 /// @return the outcome
 [[nodiscard]] Outcome exact_single(Method method, const multipoint::Configuration& configuration,
                                    const Paper& paper, const Options& options);
+
+/// @brief Several contacts with Coulomb friction and Newton's restitution, all at once: the
+/// friction complementarity problem (friction_complementarity.hpp) solved by Lemke's method, the
+/// least-norm tangential impulses where the bodies cannot tell them apart. The outcome is
+/// unfinished, with a sentence, when Lemke's method ends on a ray; warned when its answer is
+/// approximate or the collision gained energy at elasticities of at most 2.
+/// @param configuration the checked bodies and contacts
+/// @param paper its system (for the residual of the normal impulses)
+/// @param options μ per contact, the law (Newton's: unsupported() refuses the others), the
+///        complementarity tolerance
+/// @return the outcome
+[[nodiscard]] Outcome complementarity_friction(const multipoint::Configuration& configuration,
+                                               const Paper& paper, const Options& options);
 
 /// @brief Serial collisions with friction: the fastest-approaching contact first, each collision
 /// by the exact single-contact rule (friction::collide), until none approaches.
@@ -119,8 +134,9 @@ struct Options {
                              const Options& options);
 
 /// @brief The one place that picks a method: simultaneous(), complementarity() or serial(); with
-/// a contact law beyond the paper's (has_contact_law()), exact_single() for one contact and
-/// serial_exact() for several (InvalidInput with unsupported()'s sentence for the others).
+/// a contact law beyond the paper's (has_contact_law()), exact_single() for one contact, and for
+/// several serial_exact() or complementarity_friction() (InvalidInput with unsupported()'s
+/// sentence for the others).
 /// @param method the method
 /// @param configuration the checked bodies and contacts
 /// @param paper its system, assembled and solved once
