@@ -362,7 +362,9 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
                             options_.samples};
   std::vector<models::Point> made;
   const std::vector<models::Point>* points_in = nullptr;
-  if (model->method == "ode") {  // the costly ones; the others are cheaper made again than kept
+  // The costly ones (ODE models, and those marked shared); the others are cheaper made again
+  // than kept.
+  if (model->method == "ode" || model->shared) {
     auto cached = points_.find(model);
     if (cached == points_.end()) {
       cached = points_.emplace(model, model->points(*this, settings)).first;

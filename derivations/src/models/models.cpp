@@ -244,7 +244,8 @@ const std::vector<Model>& all() {
        1e-9,
        1e-6,
        false,
-       rod_slip_then_stick},
+       rod_slip_then_stick,
+       true},
       {"search",
        "rods striking rough floors",
        "The rods and floors of the model above, every case (slip throughout, slip then stick, "
@@ -255,7 +256,8 @@ const std::vector<Model>& all() {
        1e-9,
        1e-6,
        false,
-       rods_striking_rough_floors},
+       rods_striking_rough_floors,
+       true},
   };
   return table;
 }
