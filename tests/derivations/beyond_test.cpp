@@ -275,3 +275,25 @@ TEST_CASE("Friction beyond the paper: apart from the paper's checks in every for
              Catch::Matchers::Contains("## Beyond the paper: friction {#check_beyond_the_paper}"));
   CHECK_THAT(md, Catch::Matchers::Contains("{#check-fr-rod-newton}"));
 }
+
+TEST_CASE("Friction beyond the paper: a section is a number or a lower-case name",
+          "[derivations][friction]") {
+  const auto read = [](const std::string& section) {
+    const std::string text =
+        "assume: m > 0\n\nsection: " + section + "\n\nclaim: c-one\n\n$$m + m = 2m$$\n";
+    return check::run({{"beyond/x.md", text}}, {"", 10, 1});
+  };
+  for (const char* good : {"friction", "friction.1", "friction.2.3", "4.1"}) {
+    CAPTURE(good);
+    const check::Report report = read(good);
+    REQUIRE(report.results.size() == 1);
+    CHECK(report.results[0].check.section == good);
+    CHECK(report.results[0].outcome.status == Status::verified);  // m + m = 2m, exactly
+  }
+  for (const char* bad : {"Friction", "friction.", "friction.a", "friction..1", ".1", "4a"}) {
+    CAPTURE(bad);
+    // Placed in its file, in the folder of the files beyond the paper.
+    CHECK_THROWS_WITH(read(bad), Catch::Matchers::StartsWith("derivations/beyond/x.md:3:10: "
+                                                             "expected a section number"));
+  }
+}
