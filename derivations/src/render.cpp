@@ -39,8 +39,8 @@ const std::map<std::string, std::string, std::less<>>& titles() {
       {"friction.1", "A contact with friction: its velocity, linear in the impulse"},
       {"friction.2", "Slip, stick and the end of compression"},
       {"friction.3", "Three laws of restitution: where each ends"},
-      {"friction.4", "The rod of issue 17"},
-      {"friction.5", "Does a law gain energy?"},
+      {"friction.4", "Does a law gain energy?"},
+      {"friction.5", "The rod of issue 17"},
   };
   return t;
 }
