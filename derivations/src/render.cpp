@@ -226,7 +226,13 @@ void markdown_part(std::ostringstream& out, const std::vector<Result>& results,
   for (const Result& r : results) {
     if (r.check.section != current) {
       current = r.check.section;
-      out << "\n" << level << " " << current << " " << title(current) << "\n";
+      out << "\n" << level << " " << current << " " << title(current);
+      // Beyond the paper the section's heading is a Doxygen subsection (it needs an id) around
+      // its checks' subsubsections.
+      if (level != "##") {
+        out << " {#beyond-" << anchor(current).substr(std::string("check-").size()) << "}";
+      }
+      out << "\n";
     }
     out << "\n"
         << level << "# " << r.check.id << (r.check.equation ? " " + *r.check.equation : "") << " {#"
