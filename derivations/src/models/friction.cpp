@@ -84,11 +84,11 @@ State advance(const Rod& rod, const State& s, double h, double k) {
 
 // What the impulse went through, as the increments saw it.
 struct Impact {
-  int direction = 0;                        // the slip's sign at the start (u_t's), +1 or -1
-  std::optional<double> stop;               // the normal impulse where the slip first stopped
-  bool reversed = false;                    // the end slipped again after it had stopped
-  double Pc = 0;                            // the normal impulse where compression ended
-  double work_c = 0;                        // the work of the normal impulse during compression
+  int direction = 0;           // the slip's sign at the start (u_t's), +1 or -1
+  std::optional<double> stop;  // the normal impulse where the slip first stopped
+  bool slipped_again = false;  // the end slipped again after it had stopped (either way)
+  double Pc = 0;               // the normal impulse where compression ended
+  double work_c = 0;           // the work of the normal impulse during compression
   std::array<std::optional<State>, 3> end;  // the states at Newton's, Poisson's, the energetic end
 };
 
@@ -170,7 +170,7 @@ std::optional<Impact> follow(const Rod& rod) {
       } else {  // the cone cannot hold it: the end slips, friction at its bound
         k = needed > 0 ? rod.mu : -rod.mu;
         direction = needed > 0 ? -1 : 1;
-        out.reversed = true;
+        out.slipped_again = true;
       }
     }
     // The first event inside the increment, by bisection on its length.
@@ -271,7 +271,7 @@ std::vector<Point> rod_slip_then_stick(Probe&, const Settings& s) {
     const std::optional<rough_floor::Impact> impact = rough_floor::follow(rod);
     // Only what the increments saw: the slip stopped before compression ended, and the end stuck
     // from there to the last law's end.
-    if (!impact || !impact->stop || *impact->stop >= impact->Pc || impact->reversed) {
+    if (!impact || !impact->stop || *impact->stop >= impact->Pc || impact->slipped_again) {
       continue;
     }
     Point p = rough_floor::rod_point(rod, *impact);
