@@ -292,6 +292,7 @@ TEST_CASE("Friction beyond the paper: a section is a number or a lower-case name
     CHECK(report.results[0].check.section == good);
     CHECK(report.results[0].outcome.status == Status::verified);  // m + m = 2m, exactly
   }
+  CHECK_THROWS_WITH(read(""), Catch::Matchers::Contains("expected a section number"));
   for (const char* bad : {"Friction", "friction.", "friction.a", "friction..1", ".1", "4a"}) {
     CAPTURE(bad);
     // Placed in its file, in the folder of the files beyond the paper.

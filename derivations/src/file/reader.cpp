@@ -133,7 +133,7 @@ void Reader::read_directive(const Directive& d) {
               ? std::string_view(name == std::string_view::npos ? "0" : "")
               : text.substr(name + 1);
       const bool valid =
-          !number.empty() && std::isdigit(static_cast<unsigned char>(number[0])) &&
+          !text.empty() && !number.empty() && std::isdigit(static_cast<unsigned char>(number[0])) &&
           std::isdigit(static_cast<unsigned char>(number.back())) &&
           std::all_of(
               number.begin(), number.end(),
