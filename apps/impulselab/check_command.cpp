@@ -93,6 +93,9 @@ std::string known_sections() {
   for (const auto& c : check::all_checks()) {  // the files were read by run() already
     sections.insert(c.section);
   }
+  for (const auto& c : check::beyond_checks()) {  // beyond the paper: friction, …
+    sections.insert(c.section);
+  }
   std::string list;
   for (const auto& s : sections) {
     list += (list.empty() ? "" : ", ") + s;
@@ -112,7 +115,7 @@ void run_checks(const CheckOptions& options) {
     // A paper file that cannot be read: a defect of this build, placed in its file.
     throw PlacedError(e.what());
   }
-  if (report.results.empty()) {
+  if (report.results.empty() && report.beyond.results.empty()) {
     throw UsageError("--section " + options.section +
                      ": no check is in that section (the "
                      "paper's sections with checks: " +
@@ -122,14 +125,18 @@ void run_checks(const CheckOptions& options) {
   const bool colour = format == check::Format::text && colour_wanted(options.output);
   const std::string text = check::render(report, format, colour);
   write_output(options.output, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
-  if (report.summary.failed > 0) {
+  // A failed check beyond the paper fails the run too.
+  const std::size_t failed = report.summary.failed + report.beyond.summary.failed;
+  if (failed > 0) {
     std::string ids;
-    for (const auto& r : report.results) {
-      if (r.outcome.status == check::Status::failed) {
-        ids += (ids.empty() ? "" : ", ") + r.check.id;
+    for (const auto* results : {&report.results, &report.beyond.results}) {
+      for (const auto& r : *results) {
+        if (r.outcome.status == check::Status::failed) {
+          ids += (ids.empty() ? "" : ", ") + r.check.id;
+        }
       }
     }
-    throw WorkFailed(std::to_string(report.summary.failed) + " check(s) failed: " + ids);
+    throw WorkFailed(std::to_string(failed) + " check(s) failed: " + ids);
   }
 }
 
@@ -151,7 +158,8 @@ void add_check_command(CLI::App& app) {
   verb->add_option("--format,-f", options->format, "text (the default), markdown or json")
       ->check(CLI::IsMember({"text", "markdown", "json"}));
   verb->add_option("--section,-s", options->section,
-                   "only this section of the paper and its subsections, e.g. 4 or 1.3");
+                   "only this section of the paper and its subsections, e.g. 4 or 1.3, or friction "
+                   "(beyond the paper)");
   verb->add_option("--samples,-n", options->samples,
                    "random samples per numeric method (default 10000; for a derivation file, "
                    "random points per step, default 24)")

@@ -35,6 +35,12 @@ const std::map<std::string, std::string, std::less<>>& titles() {
       {"5.1", "Rigid bodies, many contacts, elastic"},
       {"5.2", "Rigid bodies, many contacts, inelastic"},
       {"5.3", "Rigid bodies, many contacts: elasticity"},
+      // Beyond the paper (derivations/beyond/).
+      {"friction.1", "A contact with friction: its velocity, linear in the impulse"},
+      {"friction.2", "Slip, stick and the end of compression"},
+      {"friction.3", "Three laws of restitution: where each ends"},
+      {"friction.4", "Does a law gain energy?"},
+      {"friction.5", "The rod of issue 17"},
   };
   return t;
 }
@@ -68,8 +74,7 @@ std::string pad(std::string text, std::size_t width) {
   return text;
 }
 
-std::string summary_line(const Report& r) {
-  const auto& s = r.summary;
+std::string summary_line(const Summary& s) {
   return std::to_string(s.verified) + " verified, " + std::to_string(s.erratum) + " errata, " +
          std::to_string(s.refuted) + " refuted, " + std::to_string(s.failed) + " failed";
 }
@@ -88,16 +93,12 @@ const char* colour_of(Status status) {
   return "";
 }
 
-std::string render_text(const Report& report, bool colour) {
-  std::ostringstream out;
-  out << "Collision handling: derivation check (seed " << report.options.seed << ", "
-      << report.options.samples << " samples per numeric method";
-  if (!report.options.section.empty()) {
-    out << ", section " << report.options.section;
-  }
-  out << ")\n";
+// The checks of a list grouped by section, then the summary and the errata, refuted and failed
+// checks (the paper's, or those beyond it).
+void text_part(std::ostringstream& out, const std::vector<Result>& results, const Summary& summary,
+               double seconds, const std::string& summary_name, bool colour) {
   std::string current;
-  for (const Result& r : report.results) {
+  for (const Result& r : results) {
     if (r.check.section != current) {
       current = r.check.section;
       out << "\n" << current << "  " << title(current) << "\n";
@@ -112,10 +113,11 @@ std::string render_text(const Report& report, bool colour) {
     }
     out << pad(methods_list(r.outcome.methods), 36) << error_text(r.outcome) << "\n";
   }
-  out << "\nSummary: " << summary_line(report) << " (" << num::brief(report.seconds, 2) << " s)\n";
+  out << "\n"
+      << summary_name << ": " << summary_line(summary) << " (" << num::brief(seconds, 2) << " s)\n";
   for (const Status wanted : {Status::erratum, Status::refuted, Status::failed}) {
     bool heading = false;
-    for (const Result& r : report.results) {
+    for (const Result& r : results) {
       if (r.outcome.status != wanted) {
         continue;
       }
@@ -136,6 +138,41 @@ std::string render_text(const Report& report, bool colour) {
         out << "      counterexample: " << r.outcome.counterexample << "\n";
       }
     }
+  }
+}
+
+// "Beyond the paper: friction": the top-level sections of the checks beyond the paper.
+std::string beyond_title(const Beyond& beyond) {
+  std::string names;
+  for (const Result& r : beyond.results) {
+    const std::string top = r.check.section.substr(0, r.check.section.find('.'));
+    if (names.find(top) == std::string::npos) {
+      names += (names.empty() ? "" : ", ") + top;
+    }
+  }
+  return "Beyond the paper: " + names;
+}
+
+std::string render_text(const Report& report, bool colour) {
+  std::ostringstream out;
+  out << "Collision handling: derivation check (seed " << report.options.seed << ", "
+      << report.options.samples << " samples per numeric method";
+  if (!report.options.section.empty()) {
+    out << ", section " << report.options.section;
+  }
+  out << ")\n";
+  if (!report.results.empty() || report.beyond.results.empty()) {
+    text_part(out, report.results, report.summary, report.seconds, "Summary", colour);
+  }
+  if (!report.beyond.results.empty()) {
+    const std::string heading = beyond_title(report.beyond);
+    out << "\n"
+        << heading << "\n"
+        << std::string(heading.size(), '=') << "\n"
+        << "Our own derivations, checked by the same engine; not counted in the paper's "
+           "summary.\n";
+    text_part(out, report.beyond.results, report.beyond.summary, report.beyond.seconds,
+              "Summary beyond the paper", colour);
   }
   return out.str();
 }
@@ -179,30 +216,32 @@ std::string displayed(const Check& check) {
   return shown_tag.empty() ? shown : shown + " " + shown_tag;
 }
 
-// Markdown for the Doxygen site: math in \f[ \f], each check a heading with an anchor.
-std::string render_markdown(const Report& report) {
-  std::ostringstream out;
-  out << "# Derivation check report {#check_report}\n\n"
-      << "Every numbered equation, derivation step and claim of the paper, checked by "
-         "`impulselab check` (seed "
-      << report.options.seed << ", " << report.options.samples
-      << " samples per numeric method).\n\n"
-      << "**Summary:** " << summary_line(report) << ".\n\n"
-      << "| check | equation | kind | status | methods | max. relative error |\n"
+// The table of a list of checks, then each check under its section's heading (the headings
+// one level deeper beyond the paper).
+void markdown_part(std::ostringstream& out, const std::vector<Result>& results,
+                   const std::string& level) {
+  out << "| check | equation | kind | status | methods | max. relative error |\n"
       << "|---|---|---|---|---|---|\n";
-  for (const Result& r : report.results) {
+  for (const Result& r : results) {
     out << "| \\ref " << anchor(r.check.id) << " \"" << r.check.id << "\" | "
         << r.check.equation.value_or("") << " | " << to_string(r.check.kind) << " | "
         << mark(r.outcome.status) << " | " << methods_list(r.outcome.methods) << " | "
         << error_text(r.outcome) << " |\n";
   }
   std::string current;
-  for (const Result& r : report.results) {
+  for (const Result& r : results) {
     if (r.check.section != current) {
       current = r.check.section;
-      out << "\n## " << current << " " << title(current) << "\n";
+      out << "\n" << level << " " << current << " " << title(current);
+      // Beyond the paper the section's heading is a Doxygen subsection (it needs an id) around
+      // its checks' subsubsections.
+      if (level != "##") {
+        out << " {#beyond-" << anchor(current).substr(std::string("check-").size()) << "}";
+      }
+      out << "\n";
     }
-    out << "\n### " << r.check.id << (r.check.equation ? " " + *r.check.equation : "") << " {#"
+    out << "\n"
+        << level << "# " << r.check.id << (r.check.equation ? " " + *r.check.equation : "") << " {#"
         << anchor(r.check.id) << "}\n\n"
         << "\\f[ " << displayed(r.check) << " \\f]\n\n"
         << "- kind: " << to_string(r.check.kind) << "\n"
@@ -225,21 +264,40 @@ std::string render_markdown(const Report& report) {
       out << "- note: " << r.outcome.note << "\n";
     }
   }
+}
+
+// Markdown for the Doxygen site: math in \f[ \f], each check a heading with an anchor.
+std::string render_markdown(const Report& report) {
+  std::ostringstream out;
+  out << "# Derivation check report {#check_report}\n\n"
+      << "Every numbered equation, derivation step and claim of the paper, checked by "
+         "`impulselab check` (seed "
+      << report.options.seed << ", " << report.options.samples
+      << " samples per numeric method).\n\n"
+      << "**Summary:** " << summary_line(report.summary) << ".\n\n";
+  markdown_part(out, report.results, "##");
+  if (!report.beyond.results.empty()) {
+    out << "\n## " << beyond_title(report.beyond) << " {#check_beyond_the_paper}\n\n"
+        << "Our own derivations beyond the paper (derivations/beyond/), checked by the same "
+           "engine and counted apart from the paper's checks.\n\n"
+        << "**Summary beyond the paper:** " << summary_line(report.beyond.summary) << ".\n\n";
+    markdown_part(out, report.beyond.results, "###");
+  }
   return out.str();
 }
 
-std::string render_json(const Report& report) {
+nlohmann::ordered_json summary_json(const Summary& s) {
+  return {{"verified", s.verified},
+          {"erratum", s.erratum},
+          {"refuted", s.refuted},
+          {"failed", s.failed}};
+}
+
+// The checks of a list, each in the contract's shape.
+nlohmann::ordered_json checks_json(const std::vector<Result>& results) {
   using nlohmann::ordered_json;
-  ordered_json root;
-  root["paper"] = "Collision handling";
-  root["seed"] = report.options.seed;
-  root["samples"] = report.options.samples;
-  root["summary"] = {{"verified", report.summary.verified},
-                     {"erratum", report.summary.erratum},
-                     {"refuted", report.summary.refuted},
-                     {"failed", report.summary.failed}};
   ordered_json checks = ordered_json::array();
-  for (const Result& r : report.results) {
+  for (const Result& r : results) {
     ordered_json c;
     c["id"] = r.check.id;
     c["section"] = r.check.section;
@@ -272,8 +330,27 @@ std::string render_json(const Report& report) {
     c["seconds"] = r.seconds;
     checks.push_back(std::move(c));
   }
-  root["checks"] = std::move(checks);
+  return checks;
+}
+
+std::string render_json(const Report& report) {
+  using nlohmann::ordered_json;
+  ordered_json root;
+  root["paper"] = "Collision handling";
+  root["seed"] = report.options.seed;
+  root["samples"] = report.options.samples;
+  root["summary"] = summary_json(report.summary);
+  root["checks"] = checks_json(report.results);
   root["seconds"] = report.seconds;
+  // Beyond the paper: checks of the same shape, apart from the paper's checks and summary.
+  if (!report.beyond.results.empty()) {
+    ordered_json beyond;
+    beyond["title"] = beyond_title(report.beyond);
+    beyond["summary"] = summary_json(report.beyond.summary);
+    beyond["checks"] = checks_json(report.beyond.results);
+    beyond["seconds"] = report.beyond.seconds;
+    root["beyond_the_paper"] = std::move(beyond);
+  }
   return root.dump(2) + "\n";
 }
 

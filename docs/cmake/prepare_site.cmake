@@ -6,10 +6,11 @@
 #                      methods, and the corrected form (erratum) or the counterexample (refuted)
 #      {{verdict:ID}}  the verdict alone, linked, for a sentence or a table cell
 #      {{statement:ID}}  the check's statement as the checker read it from its paper file
-#                      (derivations/paper/sectionN.md), as a display: the page's copy of the
+#                      (derivations/paper/sectionN.md, or derivations/beyond/NAME.md for the
+#                      checks beyond the paper), as a display: the page's copy of the
 #                      equation is the file's, never a third one
-#      {{errata}}      every erratum and refuted claim of the report, with its correction or
-#                      counterexample
+#      {{errata}}      every erratum and refuted claim of the paper's checks, with its correction
+#                      or counterexample (the checks beyond the paper are not the paper's errata)
 #      {{labs}}        the labs found in tutorials/NN-name/README.md
 #      {{summary}}     the counts of each outcome ("65 verified, 13 errata, ...")
 #      {{derivation:NAME}}  the example derivation tutorials/derivations/NAME.md as written (a
@@ -36,13 +37,14 @@ file(MAKE_DIRECTORY "${pages_out}")
 
 file(READ "${REPORT_JSON}" report)
 get_filename_component(report_dir "${REPORT_JSON}" DIRECTORY)
-file(STRINGS "${report_dir}/check_report.md" report_headings REGEX "^### ")
+file(STRINGS "${report_dir}/check_report.md" report_headings REGEX "^####? ")
 
 # The anchor of each check is the one the markdown report gives its heading ("### eq-3.5 (3.5)
-# {#check-eq-3-5}"), so that a link cannot point beside its entry.
+# {#check-eq-3-5}"; one level deeper beyond the paper), so that a link cannot point beside its
+# entry.
 function(report_anchor id out)
   foreach(heading IN LISTS report_headings)
-    if(heading MATCHES "^### ([^ ]+) .*\\{#([^}]+)\\}$" AND CMAKE_MATCH_1 STREQUAL id)
+    if(heading MATCHES "^####? ([^ ]+) .*\\{#([^}]+)\\}$" AND CMAKE_MATCH_1 STREQUAL id)
       set(${out} "${CMAKE_MATCH_2}" PARENT_SCOPE)
       return()
     endif()
@@ -63,67 +65,81 @@ endfunction()
 
 set(all_ids)
 set(errata_list)
-string(JSON count LENGTH "${report}" checks)
-math(EXPR last "${count} - 1")
-foreach(i RANGE ${last})
-  string(JSON check GET "${report}" checks ${i})
-  string(JSON id GET "${check}" id)
-  string(JSON status GET "${check}" status)
-  string(JSON kind GET "${check}" kind)
-  string(JSON section GET "${check}" section)
-  member("${check}" equation equation)
-  member("${check}" display display)
-  member("${check}" correction correction)
-  member("${check}" counterexample counterexample)
-  member("${check}" explanation explanation)
-  string(JSON method_count LENGTH "${check}" methods)
-  set(methods "")
-  if(method_count GREATER 0)
-    math(EXPR last_method "${method_count} - 1")
-    foreach(m RANGE ${last_method})
-      string(JSON method GET "${check}" methods ${m})
-      if(NOT methods STREQUAL "")
-        string(APPEND methods ", ")
-      endif()
-      string(APPEND methods "${method}")
-    endforeach()
+# The paper's checks, then those beyond the paper ("beyond_the_paper": placeholders too, but not
+# in the paper's errata).
+set(parts paper)
+string(JSON beyond_type ERROR_VARIABLE no_beyond TYPE "${report}" beyond_the_paper)
+if(NOT no_beyond)
+  list(APPEND parts beyond)
+endif()
+foreach(part IN LISTS parts)
+  if(part STREQUAL "paper")
+    set(path checks)
+  else()
+    set(path beyond_the_paper checks)
   endif()
-  report_anchor("${id}" anchor)
-  list(APPEND all_ids "${id}")
+  string(JSON count LENGTH "${report}" ${path})
+  math(EXPR last "${count} - 1")
+  foreach(i RANGE ${last})
+    string(JSON check GET "${report}" ${path} ${i})
+    string(JSON id GET "${check}" id)
+    string(JSON status GET "${check}" status)
+    string(JSON kind GET "${check}" kind)
+    string(JSON section GET "${check}" section)
+    member("${check}" equation equation)
+    member("${check}" display display)
+    member("${check}" correction correction)
+    member("${check}" counterexample counterexample)
+    member("${check}" explanation explanation)
+    string(JSON method_count LENGTH "${check}" methods)
+    set(methods "")
+    if(method_count GREATER 0)
+      math(EXPR last_method "${method_count} - 1")
+      foreach(m RANGE ${last_method})
+        string(JSON method GET "${check}" methods ${m})
+        if(NOT methods STREQUAL "")
+          string(APPEND methods ", ")
+        endif()
+        string(APPEND methods "${method}")
+      endforeach()
+    endif()
+    report_anchor("${id}" anchor)
+    list(APPEND all_ids "${id}")
 
-  set(label "${id}")
-  if(NOT equation STREQUAL "")
-    set(label "${equation}")
-  endif()
-  set(verdict_${id} "<span class=\"verdict ${status}\">\\ref ${anchor} \"${status}\"</span>")
-  # The statement as the checker read it (derivations/paper/sectionN.md), arranged for MathJax by
-  # the checker itself (the report's "display": tag at the end, labels gone, rows gathered).
-  set(statement_${id} "\\f[ ${display} \\f]")
-  string(CONCAT block "<div class=\"check ${status}\">\n<b>Check</b> <code>${id}</code> (${kind}): "
-                     "${verdict_${id}} by ${methods}.")
-  if(NOT correction STREQUAL "")
-    string(APPEND block " What holds instead:\n\\f[ ${correction} \\f]\n")
-  endif()
-  if(NOT counterexample STREQUAL "")
-    string(APPEND block " Counterexample: ${counterexample}\n")
-  endif()
-  string(APPEND block "</div>")
-  set(check_${id} "${block}")
-
-  if(status STREQUAL "erratum" OR status STREQUAL "refuted")
-    string(APPEND errata_list
-      "\n### ${label}, section ${section}: ${status}\n\n"
-      "As printed (check \\ref ${anchor} \"${id}\", kind: ${kind}):\n\n\\f[ ${display} \\f]\n\n"
-      "What goes wrong: ${explanation}\n\n")
+    set(label "${id}")
+    if(NOT equation STREQUAL "")
+      set(label "${equation}")
+    endif()
+    set(verdict_${id} "<span class=\"verdict ${status}\">\\ref ${anchor} \"${status}\"</span>")
+    # The statement as the checker read it (derivations/paper/sectionN.md), arranged for MathJax
+    # by the checker itself (the report's "display": tag at the end, labels gone, rows gathered).
+    set(statement_${id} "\\f[ ${display} \\f]")
+    string(CONCAT block "<div class=\"check ${status}\">\n<b>Check</b> <code>${id}</code> (${kind}): "
+                       "${verdict_${id}} by ${methods}.")
     if(NOT correction STREQUAL "")
-      string(APPEND errata_list "What holds instead:\n\n\\f[ ${correction} \\f]\n")
+      string(APPEND block " What holds instead:\n\\f[ ${correction} \\f]\n")
     endif()
     if(NOT counterexample STREQUAL "")
-      string(APPEND errata_list "Counterexample: ${counterexample}\n")
+      string(APPEND block " Counterexample: ${counterexample}\n")
     endif()
-  elseif(status STREQUAL "failed")
-    message(FATAL_ERROR "prepare_site.cmake: check ${id} failed; the site shows no failed check")
-  endif()
+    string(APPEND block "</div>")
+    set(check_${id} "${block}")
+
+    if(part STREQUAL "paper" AND (status STREQUAL "erratum" OR status STREQUAL "refuted"))
+      string(APPEND errata_list
+        "\n### ${label}, section ${section}: ${status}\n\n"
+        "As printed (check \\ref ${anchor} \"${id}\", kind: ${kind}):\n\n\\f[ ${display} \\f]\n\n"
+        "What goes wrong: ${explanation}\n\n")
+      if(NOT correction STREQUAL "")
+        string(APPEND errata_list "What holds instead:\n\n\\f[ ${correction} \\f]\n")
+      endif()
+      if(NOT counterexample STREQUAL "")
+        string(APPEND errata_list "Counterexample: ${counterexample}\n")
+      endif()
+    elseif(status STREQUAL "failed")
+      message(FATAL_ERROR "prepare_site.cmake: check ${id} failed; the site shows no failed check")
+    endif()
+  endforeach()
 endforeach()
 string(JSON verified GET "${report}" summary verified)
 string(JSON errata GET "${report}" summary erratum)

@@ -71,3 +71,24 @@ TEST_CASE("The same seed gives the same report", "[cli]") {
   }
   CHECK(a == b);
 }
+
+TEST_CASE("check --section friction: the checks beyond the paper, apart", "[cli]") {
+  const t::Run r = t::run("check --section friction --samples 500 --format json");
+  REQUIRE(r.status == 0);
+  const json report = json::parse(r.out);
+  CHECK(report.at("checks").empty());  // none of the paper's
+  const json& beyond = report.at("beyond_the_paper");
+  CHECK(beyond.at("title") == "Beyond the paper: friction");
+  REQUIRE_FALSE(beyond.at("checks").empty());
+  for (const json& c : beyond.at("checks")) {
+    CHECK(c.at("section").get<std::string>().rfind("friction.", 0) == 0);
+  }
+  CHECK(beyond.at("summary").at("failed") == 0);
+  const t::Run text = t::run("check --section friction --samples 500");
+  CHECK_THAT(text.out, Contains("Beyond the paper: friction"));
+  CHECK_THAT(text.out, Contains("Summary beyond the paper: "));
+  // A section of the paper has none of them; an unknown one names friction among the known.
+  CHECK(json::parse(t::run("check --section 1.1 --samples 100 --format json").out)
+            .count("beyond_the_paper") == 0);
+  CHECK_THAT(t::run("check --section 9").err, Contains("friction.1"));
+}

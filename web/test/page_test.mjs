@@ -102,6 +102,7 @@ const units = {
   'contacts[].approach_before': 'velocity', 'contacts[].approach_after': 'velocity',
   'system.B[]': 'velocity', 'system.residual': 'velocity',
   'complementarity.slack[]': 'velocity', 'complementarity.complementarity_residual': 'velocity',
+  'complementarity.slip_after[]': 'velocity', 'impulses[].tangential': 'momentum',
   'bodies[].momentum[]': 'momentum', 'bodies[].momentum': 'momentum',
   'momentum.before[]': 'momentum', 'momentum.before': 'momentum',
   'momentum.after[]': 'momentum', 'momentum.after': 'momentum',
@@ -594,8 +595,8 @@ const groups = {
                           'friction, shared link');
 
     // A frictionless scene of two contacts: μ and the law set and set back leave its address and
-    // its result as they were, byte for byte; with μ = 0.5 the paper's method and complementarity
-    // refuse it with the command line's message, serial collisions solve it.
+    // its result as they were, byte for byte; with μ = 0.5 the paper's method refuses it with the
+    // command line's message, complementarity and serial collisions solve it.
     const box = presetsOfSite().find((preset) => preset.id === 'box-lands-flat');
     const boxHash = '#scene=' + encodeURIComponent(JSON.stringify(box.scene));
     await navigate(p, boxHash);
@@ -609,7 +610,13 @@ const groups = {
     ({state} = await press('method', 'ArrowDown'));
     check(JSON.parse(sceneOfHash(state.hash)).solver.method === 'complementarity', 'box: complementarity chosen');
     checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'box, μ = 0.5, complementarity');
-    check(state.error.includes('complementarity'), 'box, μ = 0.5: complementarity refuses it', state.error);
+    // Landing flat and straight, by symmetry neither corner slips: both stick, no friction acts,
+    // and the normal impulses are the frictionless ones, 0.75 each (A = [[3.4, -1.4], [-1.4, 3.4]],
+    // B = 1.5 on each row: (3.4 - 1.4) F dt = 1.5).
+    const lcp = JSON.parse(state.result || 'null');
+    check(lcp && lcp.impulses.every((i) => Math.abs(i.magnitude - 0.75) < 1e-12 && Math.abs(i.tangential) < 1e-12 &&
+                                           i.slip === 'stick'),
+          'box, μ = 0.5, complementarity: both corners stick with 0.75 each', (state.result || state.error).slice(0, 300));
     ({state, result} = await press('method', 'End'));
     checkAgainstCommandLine(state, commandLineOnText(sceneOfHash(state.hash)), 'box, μ = 0.5, serial');
     check(result && result.impulses.every((i) => typeof i.tangential === 'number' && typeof i.slip === 'string'),

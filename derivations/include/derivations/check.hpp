@@ -75,7 +75,7 @@ struct Check {
   std::optional<std::string> equation;  ///< "(1.1)", or nothing for steps and claims
   Kind kind = Kind::equation;           ///< equation, step or claim
   std::string statement;  ///< the statement as the file writes it (the text the engine reads)
-  std::string file;       ///< the paper file it is in ("section1.md")
+  std::string file;       ///< the file it is in ("section1.md", "beyond/friction.md")
   std::size_t line = 0;   ///< the line of its statement in that file
 };
 
@@ -101,12 +101,21 @@ struct Summary {
   std::size_t failed = 0;    ///< defects
 };
 
+/// @brief The checker's own sections beyond the paper (derivations/beyond/, e.g. friction): our
+/// derivations, checked by the same engine and reported apart from the paper's checks.
+struct Beyond {
+  std::vector<Result> results;  ///< in the files' order
+  Summary summary;              ///< their counts (not in the paper's summary)
+  double seconds = 0.0;         ///< wall time of these checks
+};
+
 /// @brief A whole run.
 struct Report {
   Options options;              ///< how it was run
   std::vector<Result> results;  ///< in the paper's order
   Summary summary;              ///< the counts
   double seconds = 0.0;         ///< wall time of the run
+  Beyond beyond;                ///< the checks beyond the paper that the section filter selects
 };
 
 /// @brief A file of the paper: its name and its text (derivations/paper/sectionN.md).
@@ -118,6 +127,16 @@ struct PaperFile {
 /// @brief The paper's files as this program was built with them (derivations/paper/).
 /// @return the files, in the paper's order
 [[nodiscard]] const std::vector<PaperFile>& paper_files();
+
+/// @brief The checker's own derivation files beyond the paper as this program was built with them
+/// (derivations/beyond/; each named "beyond/NAME.md").
+/// @return the files, in the order of their names
+[[nodiscard]] const std::vector<PaperFile>& beyond_files();
+
+/// @brief Every check of the files beyond the paper, in their order, without evaluating them.
+/// @return the checks
+/// @throws DerivationError (derivation.hpp) when a file cannot be read
+[[nodiscard]] std::vector<Check> beyond_checks();
 
 /// @brief Every check of the paper's files, in the paper's order, without evaluating them.
 /// @return the checks
@@ -137,7 +156,8 @@ struct PaperFile {
 /// @return the check's seed
 [[nodiscard]] std::uint64_t check_seed(std::uint64_t run_seed, std::string_view id);
 
-/// @brief Runs the selected checks of the paper's files (`impulselab check`).
+/// @brief Runs the selected checks of the paper's files (`impulselab check`), and those of the
+/// files beyond the paper into Report::beyond.
 /// @param options section filter, samples, seed
 /// @return the report
 /// @throws DerivationError when a file cannot be read (a malformed file is a defect of the build)

@@ -366,7 +366,9 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
                             options_.samples};
   std::vector<models::Point> made;
   const std::vector<models::Point>* points_in = nullptr;
-  if (model->method == "ode") {  // the costly ones; the others are cheaper made again than kept
+  // The costly ones (ODE models, and those marked shared); the others are cheaper made again
+  // than kept.
+  if (model->method == "ode" || model->shared) {
     auto cached = points_.find(model);
     if (cached == points_.end()) {
       cached = points_.emplace(model, model->points(*this, settings)).first;
@@ -1357,10 +1359,13 @@ Result FileRun::check_claim(const Group& g, Result r) {
 
 // ---- the files ----------------------------------------------------------------------------------
 
-// An error in a paper file, as a compiler prints it: derivations/paper/FILE:LINE:COLUMN: what.
+// An error in a paper file, as a compiler prints it: derivations/paper/FILE:LINE:COLUMN: what
+// (a file beyond the paper is named beyond/FILE, in derivations/beyond/).
 DerivationError placed(const PaperFile& file, Place place, const std::string& what) {
+  const std::string folder =
+      file.name.find('/') == std::string::npos ? "derivations/paper/" : "derivations/";
   return DerivationError(place.line, place.column,
-                         "derivations/paper/" + file.name + ":" + std::to_string(place.line) + ":" +
+                         folder + file.name + ":" + std::to_string(place.line) + ":" +
                              std::to_string(place.column) + ": " + what);
 }
 
@@ -1404,11 +1409,10 @@ void add(Report& report, Result result) {
   report.results.push_back(std::move(result));
 }
 
-}  // namespace
-
-std::vector<Check> all_checks() {
+// The checks of some files, as their files state them.
+std::vector<Check> checks_of(const std::vector<PaperFile>& files) {
   std::vector<Check> checks;
-  for (const PaperFile& file : paper_files()) {
+  for (const PaperFile& file : files) {
     const ReadPaper p = read_paper(file);
     for (const Group& g : p.read.groups) {
       std::string statement = g.statement;
@@ -1422,6 +1426,17 @@ std::vector<Check> all_checks() {
                         p.source->place(g.statement_offset).line});
     }
   }
+  return checks;
+}
+
+}  // namespace
+
+std::vector<Check> beyond_checks() {
+  return checks_of(beyond_files());
+}
+
+std::vector<Check> all_checks() {
+  std::vector<Check> checks = checks_of(paper_files());
   for (auto* section : {section4_checks, section5_checks}) {
     for (CodedCheck& c : section()) {
       checks.push_back(std::move(c.check));
@@ -1481,6 +1496,9 @@ Report run(const Options& options) {
   }
   const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
   report.seconds += took.count();
+  // Beyond the paper: the same engine on our own files, counted apart.
+  Report beyond = run(beyond_files(), options);
+  report.beyond = {std::move(beyond.results), beyond.summary, beyond.seconds};
   return report;
 }
 

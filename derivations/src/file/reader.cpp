@@ -124,16 +124,26 @@ void Reader::read_directive(const Directive& d) {
     case DirectiveKind::section: {
       close_group();
       const std::string_view text = d.content;
+      // The paper's numbers (4, 4.1), or a name of a section beyond the paper in lower-case
+      // letters, alone or numbered below (friction, friction.2).
+      const std::size_t name = text.find_first_not_of("abcdefghijklmnopqrstuvwxyz");
+      const std::string_view number =
+          name == 0 ? text
+          : name == std::string_view::npos || text[name] != '.'
+              ? std::string_view(name == std::string_view::npos ? "0" : "")
+              : text.substr(name + 1);
       const bool valid =
-          !text.empty() && std::isdigit(static_cast<unsigned char>(text[0])) &&
-          std::isdigit(static_cast<unsigned char>(text.back())) &&
+          !text.empty() && !number.empty() && std::isdigit(static_cast<unsigned char>(number[0])) &&
+          std::isdigit(static_cast<unsigned char>(number.back())) &&
           std::all_of(
-              text.begin(), text.end(),
+              number.begin(), number.end(),
               [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == '.'; }) &&
-          text.find("..") == std::string_view::npos;
+          number.find("..") == std::string_view::npos;
       if (!valid) {
-        throw source_.error(d.content_offset,
-                            "expected a section number after section: (e.g. 4 or 4.1)");
+        throw source_.error(
+            d.content_offset,
+            "expected a section number after section: (e.g. 4 or 4.1, or friction.1 beyond the "
+            "paper)");
       }
       section_ = std::string(text);
       break;

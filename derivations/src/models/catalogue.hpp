@@ -35,4 +35,9 @@ std::vector<Point> two_rigid_bodies_elastic(Probe&, const Settings&);
 std::vector<Point> two_rigid_bodies_inelastic(Probe&, const Settings&);
 std::vector<Point> two_rigid_bodies_one_elasticity(Probe&, const Settings&);
 
+// friction.cpp (beyond the paper): a body struck obliquely, a rod striking a rough floor.
+std::vector<Point> point_cloud_struck_obliquely(Probe&, const Settings&);
+std::vector<Point> rod_slip_then_stick(Probe&, const Settings&);
+std::vector<Point> rods_striking_rough_floors(Probe&, const Settings&);
+
 }  // namespace impulse::derivations::models

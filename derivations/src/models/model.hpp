@@ -82,6 +82,9 @@ struct Model {
   /// shape the force); otherwise they must follow from the equations before.
   bool draws_the_rest = false;
   std::vector<Point> (*points)(Probe& probe, const Settings& settings) = nullptr;
+  /// Its points are made once per file and shared by the checks that name it, as an ODE
+  /// model's are (a costly model that does not read the probe).
+  bool shared = false;
 };
 
 /// Every model, in the order of the docs.
