@@ -194,8 +194,13 @@ std::vector<ex> FileRun::symbols_of_name(std::string_view latex) {
   if (const auto found = names_.find(key); found != names_.end()) {
     return found->second;
   }
+  // A differential (a model's "\\mathrm{d}L") is the symbol after the d, marked as one.
+  constexpr std::string_view d = "\\mathrm{d}";
+  const bool differential = latex.starts_with(d) && latex.size() > d.size();
   const Source names{key};
-  const SymbolName name = read_symbol(names, 0, latex, Limits{});
+  SymbolName name = differential ? read_symbol(names, d.size(), latex.substr(d.size()), Limits{})
+                                 : read_symbol(names, 0, latex, Limits{});
+  name.differential = name.differential || differential;
   const Value v = symbols_.value_of(name);
   return names_[key] = v.vector ? std::vector<ex>{v.x, v.y} : std::vector<ex>{v.x};
 }
@@ -1387,6 +1392,20 @@ void add(Report& report, Result result) {
   report.results.push_back(std::move(result));
 }
 
+// Section 5 is part file, part C++ (sections.hpp), and the files' checks come before the C++
+// ones: section 5's checks go last (the paper's last section), in the paper's order.
+template <typename T, typename Id>
+void in_paper_order(std::vector<T>& list, Id id) {
+  const std::vector<std::string>& order = section5_order();
+  const auto rank = [&](const T& x) {
+    return std::find(order.begin(), order.end(), id(x)) - order.begin();
+  };
+  const auto end = static_cast<std::ptrdiff_t>(order.size());
+  const auto fives =
+      std::stable_partition(list.begin(), list.end(), [&](const T& x) { return rank(x) == end; });
+  std::stable_sort(fives, list.end(), [&](const T& a, const T& b) { return rank(a) < rank(b); });
+}
+
 }  // namespace
 
 std::vector<Check> all_checks() {
@@ -1410,6 +1429,7 @@ std::vector<Check> all_checks() {
       checks.push_back(std::move(c.check));
     }
   }
+  in_paper_order(checks, [](const Check& c) -> const std::string& { return c.id; });
   return checks;
 }
 
@@ -1462,6 +1482,7 @@ Report run(const Options& options) {
       add(report, {std::move(c.check), std::move(outcome), took.count()});
     }
   }
+  in_paper_order(report.results, [](const Result& r) -> const std::string& { return r.check.id; });
   const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
   report.seconds += took.count();
   return report;

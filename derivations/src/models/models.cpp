@@ -124,10 +124,11 @@ const std::vector<Model>& all() {
        "point cloud rigid body hit at several points",
        "The body of point masses receiving impulses -n_k F_k dt at three of its points (arms "
        "r_1, r_2, r_3): its angular momentum's change dL summed point by point after Gauss's "
-       "principle, and the velocity of a fourth point (arm r_v) after, split into the centre's "
-       "v'_vt and the rest v'_vr.",
+       "principle, and the velocity of a fourth point (arm r_v) before and after, split into the "
+       "centre's v_vt, v'_vt and the rest v_vr, v'_vr.",
        {"m", "I", "\\vec{p}", "L", "dt", "\\vec{r_k}", "\\vec{n_k}", "F_k", "\\vec{F_k}",
-        "\\mathrm{d}L", "\\vec{r_v}", "\\vec{v_{vt}'}", "\\vec{v_{vr}'}"},
+        "\\mathrm{d}L", "\\vec{r_v}", "\\vec{v_{vt}}", "\\vec{v_{vr}}", "\\vec{v_{vt}'}",
+        "\\vec{v_{vr}'}"},
        1e-9,
        1e-6,
        false,
@@ -136,8 +137,8 @@ const std::vector<Model>& all() {
        "point cloud pinned",
        "Point masses turning together about a pin O: the kinetic energy E, angular momentum L_O "
        "and inertia I_O about O summed point by point, the inertia I about the centre of mass, "
-       "the mass m and the distance d from O to the centre.",
-       {"E", "L_O", "I_O", "I", "m", "d"},
+       "the mass m, the distance d from O to the centre and the rate of turning omega.",
+       {"E", "L_O", "I_O", "I", "m", "d", "\\omega"},
        1e-9,
        1e-6,
        false,
