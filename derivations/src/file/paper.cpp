@@ -194,13 +194,8 @@ std::vector<ex> FileRun::symbols_of_name(std::string_view latex) {
   if (const auto found = names_.find(key); found != names_.end()) {
     return found->second;
   }
-  // A differential (a model's "\\mathrm{d}L") is the symbol after the d, marked as one.
-  constexpr std::string_view d = "\\mathrm{d}";
-  const bool differential = latex.starts_with(d) && latex.size() > d.size();
   const Source names{key};
-  SymbolName name = differential ? read_symbol(names, d.size(), latex.substr(d.size()), Limits{})
-                                 : read_symbol(names, 0, latex, Limits{});
-  name.differential = name.differential || differential;
+  const SymbolName name = read_symbol_or_differential(names, 0, latex, Limits{});
   const Value v = symbols_.value_of(name);
   return names_[key] = v.vector ? std::vector<ex>{v.x, v.y} : std::vector<ex>{v.x};
 }
