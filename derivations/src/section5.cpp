@@ -199,47 +199,6 @@ Outcome dalpha_step(const Context& c) {
       "does."});
 }
 
-Outcome equation_5_1(const Context& c) {
-  // The whole display, as printed: its first line integrates the product-rule integrand of
-  // s5.1-dalpha, d_v F_v(t) (dL t / I + L dt / I) with dL the torque's impulse rate, i.e.
-  // d J f(t) (dL f(t) t + L) / I per unit time for a pulse of shape f; its second line is the
-  // closed form d J (dL / 2I + L / I). Both against the rotational work with the true angular
-  // velocity w(t) = (L + dL g(t)) / I. For a constant force all three agree; for a half-sine pulse
-  // the first line exceeds the work by d J dL (pi^2 - 8) / (16 I) (the integral of t f(t)^2 is
-  // pi^2 / 16 instead of 1/2).
-  num::Random r(c.seed);
-  num::Errors printed, corrected, rectangle;
-  for (std::size_t i = 0; i < c.share(50); ++i) {
-    const double Iv = r.mass(), Lv = Iv * r.uniform(-10, 10);
-    const double lever = r.uniform(-2, 2), Ji = r.uniform(-10, 10), dL = Iv * r.uniform(-10, 10);
-    const double scale = std::abs(lever * Ji) * (std::abs(dL) + std::abs(Lv)) / Iv;
-    const double closed = lever * Ji * (dL / (2 * Iv) + Lv / Iv);
-    for (std::size_t k = 0; k < pulses().size(); ++k) {
-      const Pulse& p = pulses()[k];
-      const double work = over_pulse(
-          [&](double s) { return lever * Ji * p.f(s) * (Lv + dL * p.g(s)) / Iv; }, scale);
-      const double first_line = over_pulse(
-          [&](double s) { return lever * Ji * p.f(s) * (dL * p.f(s) * s + Lv) / Iv; }, scale);
-      (k == 0 ? rectangle : printed).add(first_line, work, scale);
-      printed.add(closed, work, scale);
-      corrected.add(closed, work, scale);
-    }
-  }
-  return judge(EquationVerdict{
-      {numeric(Method::quadrature, printed, num::holds_below,
-               "both lines against the work with the true angular velocity: half-sine, "
-               "triangular and skewed pulses (a constant force gives a worst error of " +
-                   num::brief(rectangle.worst, 2) + ")")},
-      {numeric(Method::quadrature, corrected, num::holds_below,
-               "four pulse shapes, shared by all impulses")},
-      R"(\Delta E_{vr} = \int\limits_{\mathrm{d}t} \sum_{i} \vec{F}_{i} \cdot \vec{n_{v}} \det(\vec{r_{v}}, \vec{n_{v}})\, \omega(t)\, \mathrm{d}t = \det(\vec{r_{v}}, \vec{n_{v}}) \sum_{i} \vec{F}_{i} \mathrm{d}t \cdot \vec{n_{v}} \left(\frac{\sum_{k} \det(\vec{r_{k}}, \vec{F_{k}} \mathrm{d}t)}{2I} + \frac{L}{I} \right),\quad \omega(t) = \frac{L + \int_0^t \tau\,\mathrm{d}t'}{I})",
-      "The first line integrates the product rule of s5.1-dalpha, right for a constant force "
-      "only (for a half-sine pulse it exceeds the work by det(r_v, n_v) J dL (pi^2 - 8) / 16I); "
-      "the closed form it leads to is right for every pulse shape, and is what (5.2) uses.",
-      "The display's label was lost and its third line is printed three times; checked are its "
-      "first line and the closed form, each against the work with the true angular velocity."});
-}
-
 Outcome equation_5_2(const Context& c) {
   // Symbols: P = sum_i F_i n_i . n_v (the pair's, so sum_i F_i dt . n_v = -P), Q = sum_k F_k
   // n_k . n_v and R = sum_k F_k det(r_k, n_k) (all of the body's), d = det(r_v, n_v).
@@ -491,10 +450,6 @@ std::vector<CodedCheck> section5_checks() {
   c.push_back(make_check("s5.1-dalpha", "5.1", std::nullopt, Kind::step,
                          R"(d\alpha = d\omega t + \omega dt = \frac{dLt}{I} + \frac{Ldt}{I})",
                          dalpha_step));
-  c.push_back(make_check(
-      "eq-5.1", "5.1", "(5.1)", Kind::equation,
-      R"(\Delta E_{vr} = \int\limits_{\mathrm{d}t} \sum_{i} \vec{F}_{i} \cdot \vec{n_{v}} \det(\vec{r_{v}}, \vec{n_{v}}) \left(\frac{\mathrm{d}L\,t}{I} + \frac{L\,\mathrm{d}t}{I} \right) = \det(\vec{r_{v}}, \vec{n_{v}}) \sum_{i} \vec{F}_{i} \cdot \vec{n_{v}} \left(\frac{t^{2} \sum_{k} \det(\vec{r_{k}}, \vec{F_{k}})}{2I} \Big|_{0}^{\mathrm{d}t} + \frac{Lt}{I} \Big|_{0}^{\mathrm{d}t} \right))",
-      equation_5_1));
   c.push_back(make_check(
       "eq-5.2", "5.1", "(5.2)", Kind::equation,
       R"(\sum_{k} F_{k} dt \left(\frac{\det(\vec{r_{k}}, \vec{n_{k}}) \det(\vec{r_{v}}, \vec{n_{v}})}{I} + \frac{\vec{n_{k}} \cdot \vec{n_{v}}}{m} \right) = \frac{2L \det(\vec{r_{v}}, \vec{n_{v}})}{I} + \frac{2\vec{p} \cdot \vec{n_{v}}}{m} + \frac{\Delta E_{vo}}{2 \sum_{i} F_{i} dt \, \vec{n_{i}} \cdot \vec{n_{v}}})",

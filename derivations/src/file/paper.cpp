@@ -235,28 +235,6 @@ double FileRun::value(std::string_view symbol, const models::Point& point) {
 
 // ---- a model's points against the file's statements -----------------------------------------
 
-// The force symbols outside integrals shaped by the pulse at the instant t (inside an integral
-// the reader has shaped them already).
-struct ShapeOutsideIntegrals : GiNaC::map_function {
-  explicit ShapeOutsideIntegrals(const GiNaC::exmap& shaped) : shaped_(shaped) {}
-  ex operator()(const ex& e) override {
-    if (GiNaC::is_a<GiNaC::integral>(e)) {
-      return e;
-    }
-    if (GiNaC::is_a<GiNaC::symbol>(e)) {
-      const auto found = shaped_.find(e);
-      return found == shaped_.end() ? e : found->second;
-    }
-    return e.map(*this);
-  }
-  const GiNaC::exmap& shaped_;
-};
-
-ex shaped_outside_integrals(const ex& e, const GiNaC::exmap& shaped) {
-  ShapeOutsideIntegrals shape(shaped);
-  return shape(e);
-}
-
 // One relation at a point: its sides are sides[slot] (left), then the right side or the members,
 // then the size of the terms. Whether it holds, and whether that is sure (not within the rounding
 // band between 1e-9 and 1e-6 of the terms' size).

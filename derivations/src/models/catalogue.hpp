@@ -35,4 +35,8 @@ std::vector<Point> two_rigid_bodies_elastic(Probe&, const Settings&);
 std::vector<Point> two_rigid_bodies_inelastic(Probe&, const Settings&);
 std::vector<Point> two_rigid_bodies_one_elasticity(Probe&, const Settings&);
 
+// Section 5
+// pulses.cpp: pulses of force on a turning body.
+std::vector<Point> pulses_on_a_turning_body(Probe&, const Settings&);
+
 }  // namespace impulse::derivations::models

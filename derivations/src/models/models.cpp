@@ -214,6 +214,20 @@ const std::vector<Model>& all() {
        1e-6,
        false,
        two_rigid_bodies_one_elasticity},
+      // Section 5
+      {"quadrature",
+       "pulses of force on a turning body",
+       "Three mean forces F_1, F_2, F_3 at arms r_1, r_2, r_3 of a body of inertia I and "
+       "angular momentum L, over a contact of duration dt, all shaped by one pulse (constant, "
+       "half-sine, triangular, or peaking early, in turn); the body's turning integrated in time "
+       "(GSL rk8pd) from the torque, and Delta E_vr the work of the first force along n_v on the "
+       "rotational motion of the point at arm r_v, integrated with it.",
+       {"I", "L", "dt", "\\vec{r_1}", "\\vec{r_2}", "\\vec{r_3}", "\\vec{F_1}", "\\vec{F_2}",
+        "\\vec{F_3}", "\\vec{r_v}", "\\vec{n_v}", "\\Delta E_{vr}"},
+       1e-9,
+       1e-6,
+       true,
+       pulses_on_a_turning_body},
   };
   return table;
 }
