@@ -34,7 +34,7 @@ const std::vector<file::PulseShape>& shapes() {
 std::vector<Point> pulses_on_a_turning_body(Probe&, const Settings& s) {
   num::Random r(s.seed);
   std::vector<Point> points;
-  const std::size_t count = std::max<std::size_t>(4, s.share(50));
+  const std::size_t count = std::max<std::size_t>(8, s.share(100));  // 25 of each shape
   for (std::size_t n = 0; n < count; ++n) {
     const file::PulseShape& shape = shapes()[n % shapes().size()];
     // A body (its mass does not matter: only its turning is followed) with inertia I and
