@@ -43,6 +43,9 @@ Outcome evaluate(const CodedCheck& check, const Context& context);
 /// The checks of sections 4 and 5, in the paper's order.
 std::vector<CodedCheck> section4_checks();
 std::vector<CodedCheck> section5_checks();
+/// Section 5's ids in the paper's order: part of it is a file (derivations/paper/section5.md),
+/// the rest still C++, and run() and all_checks() interleave the two in this order.
+const std::vector<std::string>& section5_order();
 
 /// The numeric findings on a system assembled from printed coefficients (sections 4 and 5), over
 /// random scenes (with rigid bodies when `rigid`, and static bodies): solved, it keeps the energy

@@ -3,8 +3,10 @@
 // expressions, the error measure.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <numbers>
 #include <random>
 
+#include "file/time.hpp"
 #include "numeric.hpp"
 #include "symbolic.hpp"
 #include "verdict.hpp"
@@ -163,4 +165,34 @@ TEST_CASE("Quadrature and minimisation against known answers", "[derivations]") 
       },
       {0.0, 1.0}, [](double t, const double* y) { return t <= 0 ? 1.0 : y[0]; }, 0.01, 10, 1e-12);
   CHECK(end.t == Approx(M_PI).epsilon(1e-9));
+}
+
+// The quadrature reading of integrals over a contact (file/time.hpp), with a half-sine pulse
+// f(u) = (pi/2) sin(pi u), of mean 1 on [0, 1].
+TEST_CASE("Integrals over a pulse: a bound variable hides a symbol of its name, nested ones",
+          "[tools]") {
+  namespace file = impulse::derivations::file;
+  const file::PulseShape half_sine{
+      "half-sine",
+      [](double u) { return std::numbers::pi / 2 * std::sin(std::numbers::pi * u); },
+      {}};
+  const GiNaC::symbol t("t"), t2("t'"), F("F");
+  const GiNaC::ex tau = file::pulse_duration();
+  const GiNaC::ex pulse = file::contact_pulse(t / tau);
+  // The integrand's t is the integral's, not the free t listed with the symbols (which once
+  // took its place): the mean force F over tau gives the impulse F tau, whatever t is.
+  const file::TimedExpression impulse(GiNaC::integral(t, 0, tau, F * pulse), {t, F, tau});
+  for (const double free_t : {0.0, 0.3, 5.0}) {
+    const double values[] = {free_t, 2.0, 0.5};
+    CHECK(impulse(values, &half_sine) == Approx(1.0).epsilon(1e-12));  // 2 * 0.5
+  }
+  const GiNaC::ex inner = GiNaC::integral(t2, 0, t, F * file::contact_pulse(t2 / tau));
+  // Nested: the integral of F f(t / tau) times the running impulse (the inner integral, bounded
+  // by the outer t) is the impulse squared over 2 for every pulse, (F tau)^2 / 2.
+  const file::TimedExpression work(GiNaC::integral(t, 0, tau, F * pulse * inner), {t, F, tau});
+  const double at[] = {0.7, 2.0, 0.5};
+  CHECK(work(at, &half_sine) == Approx(0.5).epsilon(1e-12));  // (2 * 0.5)^2 / 2
+  // A force shaped outside integrals only: the inner integral keeps its own shaping.
+  const GiNaC::ex shaped = file::shaped_outside_integrals(F + inner, GiNaC::exmap{{F, F * pulse}});
+  CHECK(shaped.is_equal(F * pulse + inner));
 }

@@ -1953,4 +1953,18 @@ SymbolName read_symbol(const Source& source, std::size_t offset, std::string_vie
   return Parser(source, std::move(tokens), limits).whole_symbol();
 }
 
+SymbolName read_symbol_or_differential(const Source& source, std::size_t offset,
+                                       std::string_view text, const Limits& limits) {
+  constexpr std::string_view d = "\\mathrm{d}";
+  if (!text.starts_with(d) || text.size() == d.size()) {
+    return read_symbol(source, offset, text, limits);
+  }
+  SymbolName name = read_symbol(source, offset + d.size(), text.substr(d.size()), limits);
+  if (name.differential || name.delta) {
+    throw source.error(offset, "expected one symbol after \\mathrm{d}");
+  }
+  name.differential = true;
+  return name;
+}
+
 }  // namespace impulse::derivations::file

@@ -149,4 +149,9 @@ struct ClaimRow {
 [[nodiscard]] SymbolName read_symbol(const Source& source, std::size_t offset,
                                      std::string_view text, const Limits& limits);
 
+/// As read_symbol, and a differential too: "\\mathrm{d}L" is L's differential (a `let:` of
+/// one, a model's value for one). Accepted beyond the contract, for the paper's section 5.
+[[nodiscard]] SymbolName read_symbol_or_differential(const Source& source, std::size_t offset,
+                                                     std::string_view text, const Limits& limits);
+
 }  // namespace impulse::derivations::file

@@ -570,7 +570,7 @@ ex Symbols::integral_value(const Node& n, const std::function<Value(const Node&)
   for (const ex& f : forces_) {
     shaped[f] = f * contact_pulse(variable / pulse_duration());
   }
-  form = form.subs(shaped);
+  form = shaped_outside_integrals(form, shaped);  // a nested integral shapes its own
   const ex coefficient = form.diff(GiNaC::ex_to<GiNaC::symbol>(delta));
   if (coefficient.has(delta) || !GiNaC::normal(form - coefficient * delta).is_zero()) {
     throw error(n.offset, "expected an integrand linear in its differential (… dt)");

@@ -195,7 +195,7 @@ std::vector<ex> FileRun::symbols_of_name(std::string_view latex) {
     return found->second;
   }
   const Source names{key};
-  const SymbolName name = read_symbol(names, 0, latex, Limits{});
+  const SymbolName name = read_symbol_or_differential(names, 0, latex, Limits{});
   const Value v = symbols_.value_of(name);
   return names_[key] = v.vector ? std::vector<ex>{v.x, v.y} : std::vector<ex>{v.x};
 }
@@ -234,28 +234,6 @@ double FileRun::value(std::string_view symbol, const models::Point& point) {
 }
 
 // ---- a model's points against the file's statements -----------------------------------------
-
-// The force symbols outside integrals shaped by the pulse at the instant t (inside an integral
-// the reader has shaped them already).
-struct ShapeOutsideIntegrals : GiNaC::map_function {
-  explicit ShapeOutsideIntegrals(const GiNaC::exmap& shaped) : shaped_(shaped) {}
-  ex operator()(const ex& e) override {
-    if (GiNaC::is_a<GiNaC::integral>(e)) {
-      return e;
-    }
-    if (GiNaC::is_a<GiNaC::symbol>(e)) {
-      const auto found = shaped_.find(e);
-      return found == shaped_.end() ? e : found->second;
-    }
-    return e.map(*this);
-  }
-  const GiNaC::exmap& shaped_;
-};
-
-ex shaped_outside_integrals(const ex& e, const GiNaC::exmap& shaped) {
-  ShapeOutsideIntegrals shape(shaped);
-  return shape(e);
-}
 
 // One relation at a point: its sides are sides[slot] (left), then the right side or the members,
 // then the size of the terms. Whether it holds, and whether that is sure (not within the rounding
@@ -1409,6 +1387,20 @@ void add(Report& report, Result result) {
   report.results.push_back(std::move(result));
 }
 
+// Section 5 is part file, part C++ (sections.hpp), and the files' checks come before the C++
+// ones: section 5's checks go last (the paper's last section), in the paper's order.
+template <typename T, typename Id>
+void in_paper_order(std::vector<T>& list, Id id) {
+  const std::vector<std::string>& order = section5_order();
+  const auto rank = [&](const T& x) {
+    return std::find(order.begin(), order.end(), id(x)) - order.begin();
+  };
+  const auto end = static_cast<std::ptrdiff_t>(order.size());
+  const auto fives =
+      std::stable_partition(list.begin(), list.end(), [&](const T& x) { return rank(x) == end; });
+  std::stable_sort(fives, list.end(), [&](const T& a, const T& b) { return rank(a) < rank(b); });
+}
+
 // The checks of some files, as their files state them.
 std::vector<Check> checks_of(const std::vector<PaperFile>& files) {
   std::vector<Check> checks;
@@ -1442,6 +1434,7 @@ std::vector<Check> all_checks() {
       checks.push_back(std::move(c.check));
     }
   }
+  in_paper_order(checks, [](const Check& c) -> const std::string& { return c.id; });
   return checks;
 }
 
@@ -1494,6 +1487,7 @@ Report run(const Options& options) {
       add(report, {std::move(c.check), std::move(outcome), took.count()});
     }
   }
+  in_paper_order(report.results, [](const Result& r) -> const std::string& { return r.check.id; });
   const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
   report.seconds += took.count();
   // Beyond the paper: the same engine on our own files, counted apart.

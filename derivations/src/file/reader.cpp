@@ -797,7 +797,8 @@ void Reader::let(const Directive& d) {
   if (name_text.empty()) {
     throw source_.error(d.content_offset, "expected the symbol to define before '='");
   }
-  const SymbolName name = read_symbol(source_, d.content_offset, name_text, limits_);
+  const SymbolName name =
+      read_symbol_or_differential(source_, d.content_offset, name_text, limits_);
   std::size_t start = equals + 1;
   while (start < d.content.size() && d.content[start] == ' ') {
     ++start;

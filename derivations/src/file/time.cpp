@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -109,8 +110,11 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
     op.kind = Op::constant;
     op.value = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double();
   } else if (GiNaC::is_a<GiNaC::symbol>(e)) {
-    const auto found =
-        std::find_if(slots.begin(), slots.end(), [&](const GiNaC::ex& s) { return s.is_equal(e); });
+    // The last slot of the symbol: an integral's variable, bound inside its integrand, hides a
+    // symbol of the same name outside it.
+    const auto last = std::find_if(slots.rbegin(), slots.rend(),
+                                   [&](const GiNaC::ex& s) { return s.is_equal(e); });
+    const auto found = last == slots.rend() ? slots.end() : std::prev(last.base());
     if (found == slots.end()) {
       throw std::invalid_argument("a symbol without a value: " +
                                   GiNaC::ex_to<GiNaC::symbol>(e).get_name());
@@ -139,6 +143,7 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
     op.kids.push_back(compile(e.op(2), slots));
     slots.push_back(e.op(0));  // the variable is bound inside the integrand only
     op.kids.push_back(compile(e.op(3), slots));
+    slots[op.index] = GiNaC::symbol();  // and its binding ends there
   } else if (GiNaC::is_a<GiNaC::function>(e)) {
     const auto& f = GiNaC::ex_to<GiNaC::function>(e);
     const unsigned serial = f.get_serial();
@@ -168,6 +173,30 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
   }
   ops_.push_back(std::move(op));
   return ops_.size() - 1;
+}
+
+namespace {
+
+struct ShapeOutsideIntegrals : GiNaC::map_function {
+  explicit ShapeOutsideIntegrals(const GiNaC::exmap& shaped) : shaped_(shaped) {}
+  GiNaC::ex operator()(const GiNaC::ex& e) override {
+    if (GiNaC::is_a<GiNaC::integral>(e)) {
+      return e;
+    }
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+      const auto found = shaped_.find(e);
+      return found == shaped_.end() ? e : found->second;
+    }
+    return e.map(*this);
+  }
+  const GiNaC::exmap& shaped_;
+};
+
+}  // namespace
+
+GiNaC::ex shaped_outside_integrals(const GiNaC::ex& e, const GiNaC::exmap& shaped) {
+  ShapeOutsideIntegrals shape(shaped);
+  return shape(e);
 }
 
 double TimedExpression::operator()(std::span<const double> values, const PulseShape* shape) const {

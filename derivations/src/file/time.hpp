@@ -31,6 +31,10 @@ DECLARE_FUNCTION_1P(contact_pulse)
 /// not of a polynomial.
 [[nodiscard]] GiNaC::ex exact_reading(const GiNaC::ex& e);
 
+/// @p e with the symbols of @p shaped replaced by their values, except inside integrals (a
+/// force inside an integral is shaped at that integral's own variable).
+[[nodiscard]] GiNaC::ex shaped_outside_integrals(const GiNaC::ex& e, const GiNaC::exmap& shaped);
+
 /// A pulse shape for the quadrature reading.
 struct PulseShape {
   std::string name;               ///< "half-sine"

@@ -39,5 +39,10 @@ std::vector<Point> two_rigid_bodies_one_elasticity(Probe&, const Settings&);
 std::vector<Point> point_cloud_struck_obliquely(Probe&, const Settings&);
 std::vector<Point> rod_slip_then_stick(Probe&, const Settings&);
 std::vector<Point> rods_striking_rough_floors(Probe&, const Settings&);
+// Section 5
+// pulses.cpp: pulses of force on a turning body.
+std::vector<Point> pulses_on_a_turning_body(Probe&, const Settings&);
+// library.cpp: the library's rigid body as a reference.
+std::vector<Point> library_rigid_body_hit_at_several_points(Probe&, const Settings&);
 
 }  // namespace impulse::derivations::models

@@ -124,10 +124,11 @@ const std::vector<Model>& all() {
        "point cloud rigid body hit at several points",
        "The body of point masses receiving impulses -n_k F_k dt at three of its points (arms "
        "r_1, r_2, r_3): its angular momentum's change dL summed point by point after Gauss's "
-       "principle, and the velocity of a fourth point (arm r_v) after, split into the centre's "
-       "v'_vt and the rest v'_vr.",
+       "principle, and the velocity of a fourth point (arm r_v) before and after, split into the "
+       "centre's v_vt, v'_vt and the rest v_vr, v'_vr.",
        {"m", "I", "\\vec{p}", "L", "dt", "\\vec{r_k}", "\\vec{n_k}", "F_k", "\\vec{F_k}",
-        "\\mathrm{d}L", "\\vec{r_v}", "\\vec{v_{vt}'}", "\\vec{v_{vr}'}"},
+        "\\mathrm{d}L", "\\vec{r_v}", "\\vec{v_{vt}}", "\\vec{v_{vr}}", "\\vec{v_{vt}'}",
+        "\\vec{v_{vr}'}"},
        1e-9,
        1e-6,
        false,
@@ -136,8 +137,8 @@ const std::vector<Model>& all() {
        "point cloud pinned",
        "Point masses turning together about a pin O: the kinetic energy E, angular momentum L_O "
        "and inertia I_O about O summed point by point, the inertia I about the centre of mass, "
-       "the mass m and the distance d from O to the centre.",
-       {"E", "L_O", "I_O", "I", "m", "d"},
+       "the mass m, the distance d from O to the centre and the rate of turning omega.",
+       {"E", "L_O", "I_O", "I", "m", "d", "\\omega"},
        1e-9,
        1e-6,
        false,
@@ -258,6 +259,33 @@ const std::vector<Model>& all() {
        false,
        rods_striking_rough_floors,
        true},
+      // Section 5
+      {"quadrature",
+       "pulses of force on a turning body",
+       "Three mean forces F_1, F_2, F_3 at arms r_1, r_2, r_3 of a body of inertia I and "
+       "angular momentum L, over a contact of duration dt, all shaped by one pulse (constant, "
+       "half-sine, triangular, or peaking early, in turn); the body's turning integrated in time "
+       "(GSL rk8pd) from the torque, and Delta E_vr the work of the first force along n_v on the "
+       "rotational motion of the point at arm r_v, integrated with it.",
+       {"I", "L", "dt", "\\vec{r_1}", "\\vec{r_2}", "\\vec{r_3}", "\\vec{F_1}", "\\vec{F_2}",
+        "\\vec{F_3}", "\\vec{r_v}", "\\vec{n_v}", "\\Delta E_{vr}"},
+       1e-9,
+       1e-6,
+       true,
+       pulses_on_a_turning_body},
+      {"numeric",
+       "the library's rigid body hit at several points",
+       "A rigid body of impulse::rigid_2d (masses 1e-3 to 1e3, radii of gyration 0.1 to 10) "
+       "receiving impulses -n_k F_k dt at three arms r_k, one at a time by "
+       "rigid_2d::apply_impulse; the velocity of the point at arm r_v before and after by "
+       "rigid_2d::point_velocity, split into the centre's (v_vt, v'_vt) and the rest (v_vr, "
+       "v'_vr).",
+       {"m", "I", "\\vec{p}", "L", "dt", "\\vec{r_k}", "\\vec{n_k}", "F_k", "\\vec{F_k}",
+        "\\vec{r_v}", "\\vec{v_{vt}}", "\\vec{v_{vr}}", "\\vec{v_{vt}'}", "\\vec{v_{vr}'}"},
+       1e-9,
+       1e-6,
+       false,
+       library_rigid_body_hit_at_several_points},
   };
   return table;
 }

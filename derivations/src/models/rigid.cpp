@@ -88,6 +88,7 @@ std::vector<Point> point_cloud_hit_at_several_points(Probe&, const Settings& s) 
     const Vector2d v_after = after.velocity(3);
     p.set("\\vec{r_v}", arm);
     p.set("\\vec{v_{vt}'}", after.V).set("\\vec{v_{vr}'}", v_after - after.V);
+    p.set("\\vec{v_{vt}}", body.V).set("\\vec{v_{vr}}", body.velocity(3) - body.V);
     points.push_back(std::move(p));
   }
   return points;
@@ -124,7 +125,7 @@ std::vector<Point> point_cloud_pinned(Probe&, const Settings& s) {
       I += m[kk] * (x[kk] - centre).squaredNorm();
     }
     Point p;
-    p.set("E", E).set("L_O", L).set("I_O", I_O).set("I", I).set("m", M);
+    p.set("E", E).set("L_O", L).set("I_O", I_O).set("I", I).set("m", M).set("\\omega", w);
     p.set("d", (centre - O).norm());
     points.push_back(std::move(p));
   }
