@@ -14,7 +14,9 @@ namespace impulse::derivations::file {
 using GiNaC::ex;
 using GiNaC::is_a;
 using GiNaC::numeric;
-using Outcome = Implication::Outcome;
+// Not "Outcome": in a unity build this file shares a translation unit with the paper runner,
+// whose Outcome is the check report's.
+using Implied = Implication::Outcome;
 
 std::vector<ex> symbols_of(const ex& e) {
   return symbols_of(std::vector<ex>{e});
@@ -155,7 +157,7 @@ struct Frame {
 };
 
 struct Found {
-  Outcome outcome = Outcome::unknown;
+  Implied outcome = Implied::unknown;
   std::vector<ex> conditions;
   bool conditions_needed = true;
   ex residual;
@@ -202,7 +204,7 @@ class Decider {
     const ex target = numerator(frame.target);
     if (target.is_zero()) {
       Found found;
-      found.outcome = Outcome::holds;
+      found.outcome = Implied::holds;
       return found;
     }
     // The premises over one denominator; those that hold everywhere say nothing.
@@ -235,7 +237,7 @@ class Decider {
       if (factors.empty()) {
         // A non-zero constant, or a product the facts keep from zero: no point satisfies it.
         Found found;
-        found.outcome = Outcome::holds;
+        found.outcome = Implied::holds;
         found.how.push_back("no values satisfy the equations before under the facts");
         return found;
       }
@@ -324,7 +326,7 @@ class Decider {
       // A denominator vanishes on the whole case: no point of it is one where the equations
       // are defined, so it holds nothing against the step.
       Found outside;
-      outside.outcome = Outcome::holds;
+      outside.outcome = Implied::holds;
       outside.how.push_back("where " + text(choice.symbol) + " = " + text(value) +
                             " the equations are not defined");
       return outside;
@@ -332,7 +334,7 @@ class Decider {
     Found found = run(child);
     const std::string solved_for = "solved for " + text(choice.symbol);
     found.how.insert(found.how.begin(), solved_for);
-    if (found.outcome != Outcome::holds && found.outcome != Outcome::holds_if) {
+    if (found.outcome != Implied::holds && found.outcome != Implied::holds_if) {
       return found;
     }
     // The division by the coefficient: needed only if the step fails where it vanishes.
@@ -342,12 +344,12 @@ class Decider {
       zero.premises.push_back(g);
       zero.depth = frame.depth + 1;
       const Found there = run(zero);
-      if (there.outcome == Outcome::holds) {
+      if (there.outcome == Implied::holds) {
         continue;
       }
-      found.outcome = Outcome::holds_if;
+      found.outcome = Implied::holds_if;
       found.conditions.push_back(g);
-      if (there.outcome != Outcome::fails) {
+      if (there.outcome != Implied::fails) {
         found.conditions_needed = false;
       }
     }
@@ -370,12 +372,12 @@ class Decider {
     const Found* first_failure = nullptr;
     for (std::size_t i = 0; i < cases.size(); ++i) {
       const Found& c = cases[i];
-      if (c.outcome == Outcome::fails) {
+      if (c.outcome == Implied::fails) {
         failing.push_back(factors[i]);
         if (!first_failure) {
           first_failure = &c;
         }
-      } else if (c.outcome == Outcome::unknown) {
+      } else if (c.outcome == Implied::unknown) {
         any_unknown = true;
       } else {
         for (const ex& condition : c.conditions) {
@@ -389,12 +391,12 @@ class Decider {
       cases_text += (i == 0 ? "" : i + 1 == factors.size() ? " and " : ", ") + text(factors[i]);
     }
     if (failing.empty() && !any_unknown) {
-      combined.outcome = combined.conditions.empty() ? Outcome::holds : Outcome::holds_if;
+      combined.outcome = combined.conditions.empty() ? Implied::holds : Implied::holds_if;
       combined.how.push_back(cases_text + ": the step holds in each case");
       return combined;
     }
     if (first_failure && !any_unknown && failing.size() < factors.size()) {
-      combined.outcome = Outcome::holds_if;
+      combined.outcome = Implied::holds_if;
       for (const ex& f : failing) {
         combined.conditions.push_back(f);
       }
@@ -410,7 +412,7 @@ class Decider {
       return failure;
     }
     Found unknown_case;
-    unknown_case.outcome = Outcome::unknown;
+    unknown_case.outcome = Implied::unknown;
     unknown_case.residual = frame.target;
     unknown_case.how.push_back(cases_text + ": some case could not be decided");
     return unknown_case;
@@ -423,7 +425,7 @@ class Decider {
     for (const ex& p : premises) {
       if (const auto quotient = divides(p, target)) {
         Found found;
-        found.outcome = Outcome::holds;
+        found.outcome = Implied::holds;
         found.how.push_back(is_a<numeric>(*quotient)
                                 ? "the step is the equation before, rewritten"
                                 : "the step is the equation before times " + text(*quotient));
@@ -435,7 +437,7 @@ class Decider {
       if (const auto quotient = divides(target, p);
           quotient && doubtful_factors(*quotient, facts_).empty()) {
         Found found;
-        found.outcome = Outcome::holds;
+        found.outcome = Implied::holds;
         found.how.push_back("the step is the equation before divided by " + text(*quotient) +
                             ", which is not zero");
         return found;
@@ -480,7 +482,7 @@ class Decider {
           leaf_frame.solved.push_back({u, value, a});
           leaf_frame.target = frame.target.subs(GiNaC::exmap{{u, value}});
           Found found = leaf(leaf_frame, target, /*exact_only=*/false);
-          if (found.outcome == Outcome::fails) {
+          if (found.outcome == Implied::fails) {
             found.residual = frame.target;
             found.how.insert(found.how.begin(),
                              "solved the equation before for " + text(u) + " (a quadratic)");
@@ -496,7 +498,7 @@ class Decider {
 
   Found unknown(const Frame& frame, const std::string& why) const {
     Found found;
-    found.outcome = Outcome::unknown;
+    found.outcome = Implied::unknown;
     found.residual = frame.target;
     found.how.push_back(why);
     return found;
@@ -508,10 +510,10 @@ class Decider {
     found.residual = frame.target;
     found.point = counterexample(frame, exact_only);
     if (found.point) {
-      found.outcome = Outcome::fails;
+      found.outcome = Implied::fails;
       return found;
     }
-    found.outcome = Outcome::unknown;
+    found.outcome = Implied::unknown;
     found.how.push_back("the step does not vanish once the equations before are used (" +
                         text(target) +
                         "), but no values satisfying the facts were found to show it");
@@ -854,13 +856,13 @@ Implication implies(const Problem& original, const Facts& facts, const Budget& b
     found = decider.run(start);
   } catch (const std::exception& e) {
     found = Found{};
-    found.outcome = Outcome::unknown;
+    found.outcome = Implied::unknown;
     found.residual = problem.target;
     found.how.push_back(std::string("the exact method stopped: ") + e.what());
   }
   if (!rewrite.forward.empty()) {
-    if (found.outcome == Outcome::fails) {
-      found.outcome = Outcome::unknown;
+    if (found.outcome == Implied::fails) {
+      found.outcome = Implied::unknown;
       found.point.reset();
       found.how.push_back(
           "with sines and cosines written through tangents of half angles, the "
@@ -892,7 +894,7 @@ Implication implies(const Problem& original, const Facts& facts, const Budget& b
   // What the step divides by that the equations before did not: where it vanishes, the step
   // is not even defined. (As written, before sines and cosines are rewritten: 1 + 3 cos^2 is
   // positive as it stands.)
-  if (result.outcome == Outcome::holds || result.outcome == Outcome::holds_if) {
+  if (result.outcome == Implied::holds || result.outcome == Implied::holds_if) {
     std::vector<ex> before;
     for (const ex& d : original.premise_denominators) {
       for (const ex& f : doubtful_factors(numerator(d), facts)) {
@@ -907,7 +909,7 @@ Implication implies(const Problem& original, const Facts& facts, const Budget& b
           continue;
         }
         result.conditions.push_back(f);
-        result.outcome = Outcome::holds_if;
+        result.outcome = Implied::holds_if;
         if (result.how.find("divides by") == std::string::npos) {
           result.how +=
               std::string(result.how.empty() ? "" : "; ") + "the step divides by " + text(f);
