@@ -84,6 +84,23 @@ const gsl_integration_glfixed_table& legendre() {
   return *table;
 }
 
+// The 24-point Gauss–Legendre rule on [-1, 1], its nodes and weights taken from GSL once.
+struct Legendre {
+  std::array<double, 24> x{};
+  std::array<double, 24> w{};
+};
+
+const Legendre& legendre_on_unit() {
+  static const Legendre rule = [] {
+    Legendre r;
+    for (std::size_t k = 0; k < r.x.size(); ++k) {
+      gsl_integration_glfixed_point(-1.0, 1.0, k, &r.x[k], &r.w[k], &legendre());
+    }
+    return r;
+  }();
+  return rule;
+}
+
 }  // namespace
 
 TimedExpression::TimedExpression(const GiNaC::ex& e, const std::vector<GiNaC::ex>& symbols) {
@@ -314,34 +331,33 @@ double TimedExpression::eval(std::size_t index, std::span<double> values,
       const double a = eval(op.kids[0], values, shape);
       const double b = eval(op.kids[1], values, shape);
       // Pieces between the pulse's kinks (in t: the kinks times the duration), each by a
-      // 24-point Gauss–Legendre rule: smooth pieces are integrated to rounding.
-      std::vector<double> cuts{a, b};
+      // 24-point Gauss–Legendre rule: smooth pieces are integrated to rounding. (No allocation:
+      // an integral inside an integral runs this at every node of the outer one.)
+      std::array<double, 16> cuts{a, b};
+      std::size_t count = 2;
       if (shape != nullptr && duration_slot_ < values.size()) {
         const double duration = values[duration_slot_];
+        const auto cut = [&](double t) {
+          if ((t - a) * (t - b) < 0 && count < cuts.size()) {
+            cuts[count++] = t;
+          }
+        };
         for (const double kink : shape->kinks) {
-          const double t = kink * duration;
-          if ((t - a) * (t - b) < 0) {
-            cuts.push_back(t);
-          }
+          cut(kink * duration);
         }
-        for (const double end : {0.0, duration}) {  // the pulse starts and stops there
-          if ((end - a) * (end - b) < 0) {
-            cuts.push_back(end);
-          }
-        }
+        cut(0.0);  // the pulse starts and stops there
+        cut(duration);
       }
-      std::sort(cuts.begin(), cuts.end());
+      std::sort(cuts.begin(), cuts.begin() + static_cast<std::ptrdiff_t>(count));
+      const Legendre& rule = legendre_on_unit();
       const double saved = values[op.index];
       double total = 0.0;
-      for (std::size_t piece = 0; piece + 1 < cuts.size(); ++piece) {
-        const double lo = cuts[piece];
-        const double hi = cuts[piece + 1];
-        for (std::size_t k = 0; k < legendre().n; ++k) {
-          double x = 0.0;
-          double w = 0.0;
-          gsl_integration_glfixed_point(lo, hi, k, &x, &w, &legendre());
-          values[op.index] = x;
-          total += w * eval(op.kids[2], values, shape);
+      for (std::size_t piece = 0; piece + 1 < count; ++piece) {
+        const double middle = 0.5 * (cuts[piece] + cuts[piece + 1]);
+        const double half = 0.5 * (cuts[piece + 1] - cuts[piece]);
+        for (std::size_t k = 0; k < rule.x.size(); ++k) {
+          values[op.index] = middle + half * rule.x[k];
+          total += half * rule.w[k] * eval(op.kids[2], values, shape);
         }
       }
       values[op.index] = saved;
