@@ -1308,7 +1308,8 @@ class Parser {
         }
         text += name_group(command_token);
         after_command = false;
-      } else if (is_char(s, ',')) {
+      } else if (is_char(s, ',') || is_char(s, '(') || is_char(s, ')')) {
+        // a_{vi(elastic)}: the paper's names of its coefficients carry a word in parentheses
         text += take().text;
         after_command = false;
       } else if (is_char(s, '}')) {

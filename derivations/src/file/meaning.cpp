@@ -207,18 +207,30 @@ void Symbols::declare_force(const SymbolName& name) {
   }
 }
 
+std::size_t index_part(const std::string& sub) {
+  const auto alnum = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+  };
+  const std::size_t open = sub.find('(');
+  const std::size_t plain = open == std::string::npos ? sub.size() : open;
+  if (plain == 0 || plain > 3 ||
+      !std::all_of(sub.begin(), sub.begin() + static_cast<std::ptrdiff_t>(plain), alnum)) {
+    return 0;
+  }
+  if (open != std::string::npos && sub.back() != ')') {
+    return 0;
+  }
+  return plain;
+}
+
 std::vector<std::string> Symbols::indices_in(const Node& node) const {
   std::vector<std::string> found;
   std::function<void(const Node&, const std::set<std::string>&)> walk =
       [&](const Node& n, const std::set<std::string>& bound) {
         if (n.kind == NodeKind::symbol) {
           const std::string& sub = n.symbol.subscript;
-          const bool plain =
-              sub.size() <= 3 && std::all_of(sub.begin(), sub.end(), [](char c) {
-                return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
-              });
-          if (plain) {
-            for (const char c : sub) {
+          if (const std::size_t plain = index_part(sub); plain > 0) {
+            for (const char c : sub.substr(0, plain)) {
               const std::string letter(1, c);
               if (indices_.contains(letter) && !bound.contains(letter) &&
                   std::find(found.begin(), found.end(), letter) == found.end()) {
@@ -291,16 +303,13 @@ Node with_index(const Node& node, const std::string& index, long value) {
   Node copy = node;
   if (copy.kind == NodeKind::symbol) {
     std::string& sub = copy.symbol.subscript;
-    const bool plain =
-        sub.size() <= 3 && std::all_of(sub.begin(), sub.end(), [](char c) {
-          return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
-        });
-    if (plain && sub.find(index[0]) != std::string::npos) {
+    const std::size_t plain = index_part(sub);
+    if (plain > 0 && sub.substr(0, plain).find(index[0]) != std::string::npos) {
       std::string out;
-      for (const char c : sub) {
+      for (const char c : sub.substr(0, plain)) {
         out += c == index[0] ? std::to_string(value) : std::string(1, c);
       }
-      sub = out;
+      sub = out + sub.substr(plain);
     }
     return copy;
   }

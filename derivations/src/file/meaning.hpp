@@ -74,6 +74,10 @@ struct SymbolInfo {
 /// symbols (subscripts of up to three letters and digits: a_{vi} with i = 2 is a_{v2}), except
 /// inside a sum over the same index.
 [[nodiscard]] Node with_index(const Node& node, const std::string& index, long value);
+/// How much of a subscript can hold indices: all of a plain one (one to three letters and
+/// digits), or the plain part before a word in parentheses (a_{vi(elastic)}, the paper's names of
+/// its coefficients); 0 for none.
+[[nodiscard]] std::size_t index_part(const std::string& subscript);
 
 /// The symbols, vectors, definitions and units of one file, as its lines declare them.
 class Symbols {
