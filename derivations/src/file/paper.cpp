@@ -142,6 +142,8 @@ class FileRun : public models::Probe {
 
   Result check(const Group& g);
   double value(std::string_view symbol, const models::Point& point) override;
+  std::function<double(std::span<const double>)> function(
+      std::string_view symbol, const std::vector<std::string>& inputs) override;
 
  private:
   // ---- equations ----
@@ -157,6 +159,7 @@ class FileRun : public models::Probe {
     std::string note;
   };
   Variant run_variant(const Group& g, bool corrected);
+  void define_for_probe(const Group& g, const std::vector<std::size_t>& own);
   std::vector<ex> symbols_of_name(std::string_view latex);
 
   // The model's points, evaluated on a list of equations (each = 0 with the size of its terms).
@@ -230,6 +233,30 @@ double FileRun::value(std::string_view symbol, const models::Point& point) {
     return GiNaC::ex_to<GiNaC::numeric>(f).to_double();
   } catch (const std::exception&) {
     return std::nan("");
+  }
+}
+
+std::function<double(std::span<const double>)> FileRun::function(
+    std::string_view symbol, const std::vector<std::string>& inputs) {
+  const auto nothing = [](std::span<const double>) { return std::nan(""); };
+  try {
+    std::vector<ex> slots;
+    for (const std::string& input : inputs) {
+      const std::vector<ex> named = symbols_of_name(input);
+      slots.insert(slots.end(), named.begin(), named.end());
+    }
+    const ex e = exact_reading(symbols_of_name(symbol)[0].subs(probe_substitutions_));
+    for (const ex& s : symbols_of(std::vector<ex>{e})) {
+      if (std::none_of(slots.begin(), slots.end(), [&](const ex& x) { return x.is_equal(s); })) {
+        return nothing;  // the file does not define it from these inputs
+      }
+    }
+    TimedExpression compiled(e, slots);
+    return [compiled = std::move(compiled)](std::span<const double> values) {
+      return compiled(values, nullptr);
+    };
+  } catch (const std::exception&) {
+    return nothing;
   }
 }
 
@@ -823,6 +850,43 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
   return f;
 }
 
+// A model that assembles from the coefficients of a check (a_vi = ..., b_v = ...) reads them
+// through the probe: each equation of a statement whose left side is a symbol defines it there;
+// the statements of the checks above first, then @p own (the check's statement, or its
+// correction in that variant). The lets in force stand.
+void FileRun::define_for_probe(const Group& g, const std::vector<std::size_t>& own) {
+  const std::vector<Equation>& eqs = read_.equations;
+  GiNaC::exmap defined;
+  const auto define = [&](const std::vector<std::size_t>& equations) {
+    for (const std::size_t i : equations) {
+      const Equation& e = eqs[i];
+      const Value& l = e.lhs.value;
+      const Value& r = e.rhs.value;
+      if (!e.premise || l.block() || r.block() || l.vector != r.vector) {
+        continue;
+      }
+      const std::vector<std::pair<ex, ex>> sides =
+          l.vector ? std::vector<std::pair<ex, ex>>{{l.x, r.x}, {l.y, r.y}}
+                   : std::vector<std::pair<ex, ex>>{{l.x, r.x}};
+      for (const auto& [name, definition] : sides) {
+        if (GiNaC::is_a<GiNaC::symbol>(name)) {
+          defined[name] = definition.subs(e.substitutions);
+        }
+      }
+    }
+  };
+  for (const Group& above : read_.groups) {
+    if (above.id == g.id) {
+      break;
+    }
+    define(above.statement_equations);
+  }
+  define(own);
+  for (const auto& [name, definition] : defined) {
+    probe_substitutions_.emplace(name, definition);
+  }
+}
+
 // ---- an equation or a step --------------------------------------------------------------------
 
 bool passing(Verdict v) {
@@ -970,6 +1034,7 @@ FileRun::Variant FileRun::run_variant(const Group& g, bool corrected) {
     // matching in run_model decides; here, the statement's premises also stand in the pool.
     probe_substitutions_ =
         tested.empty() ? GiNaC::exmap{} : eqs[tested.front().first].substitutions;
+    define_for_probe(g, own);
     for (const ModelUse& use : g.models) {
       // A non-quadrature model reads the equations exactly (forces constant over the contact).
       const models::Model* model = models::find(use.method, use.name);
@@ -1110,8 +1175,30 @@ Result FileRun::check_claim(const Group& g, Result r) {
     }
   };
   // A relation as compares of numbers: a vector equation is one per component.
-  const auto compare = [&](const Relation& rel) {
+  std::function<std::vector<Compare>(const Relation&)> compare;
+  compare = [&](const Relation& rel) {
     std::vector<Compare> out;
+    // A relation whose symbols carry a free index (a_{vi(elastic)} = a_{vi(inelastic)}) stands
+    // for one relation per value, as a row of equations does.
+    std::vector<std::string> free = symbols_.free_indices(rel.left.expression);
+    if (rel.kind != Relation::Kind::in_set && rel.kind != Relation::Kind::in_range) {
+      for (const std::string& letter : symbols_.free_indices(rel.right.expression)) {
+        if (std::find(free.begin(), free.end(), letter) == free.end()) {
+          free.push_back(letter);
+        }
+      }
+    }
+    if (!free.empty()) {
+      for (const long value : symbols_.indices().at(free.front())) {
+        Relation one = rel;
+        one.left.expression = with_index(rel.left.expression, free.front(), value);
+        one.right.expression = with_index(rel.right.expression, free.front(), value);
+        for (Compare& c : compare(one)) {
+          out.push_back(std::move(c));
+        }
+      }
+      return out;
+    }
     const Value left = side_value(rel.left);
     if (left.block()) {
       throw source_.error(rel.offset, "expected numbers or vectors in a claim's relation");
@@ -1229,6 +1316,11 @@ Result FileRun::check_claim(const Group& g, Result r) {
                                : (s == Sign::positive || s == Sign::nonnegative || s == Sign::zero);
         one = shown ? Exact::holds : Exact::none;
       }
+      // A claim that names models is about the values they give (energies after, an equal
+      // impulse found by a search): algebra alone that does not prove it decides nothing.
+      if (one == Exact::fails && !g.models.empty()) {
+        one = Exact::none;
+      }
       if (one == Exact::none) {
         row = row == Exact::holds ? Exact::none : row;
         continue;
@@ -1248,6 +1340,7 @@ Result FileRun::check_claim(const Group& g, Result r) {
   std::vector<ModelFinding> found;
   for (const ModelUse& use : g.models) {
     probe_substitutions_ = lets;
+    define_for_probe(g, {});
     found.push_back(
         run_model(use, {}, premises, g.claim_facts, g, &hypotheses, &conclusions, &exists));
     o.methods.push_back(found.back().method);

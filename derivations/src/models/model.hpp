@@ -15,7 +15,9 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -58,6 +60,11 @@ class Probe {
   /// The value of the file's symbol @p symbol (a scalar, in the paper's notation) at @p point;
   /// NaN when the point does not determine it.
   [[nodiscard]] virtual double value(std::string_view symbol, const Point& point) = 0;
+  /// The file's symbol @p symbol as a function of @p inputs (names in the paper's notation; a
+  /// vector takes two arguments, x then y), compiled once for a model that evaluates it often.
+  /// The function gives NaN when the file does not define the symbol from those inputs alone.
+  [[nodiscard]] virtual std::function<double(std::span<const double>)> function(
+      std::string_view symbol, const std::vector<std::string>& inputs) = 0;
 };
 
 /// How many points a model makes, and from which seed.
