@@ -45,4 +45,19 @@ std::vector<Point> pulses_on_a_turning_body(Probe&, const Settings&);
 // library.cpp: the library's rigid body as a reference.
 std::vector<Point> library_rigid_body_hit_at_several_points(Probe&, const Settings&);
 
+// scenes.cpp: scenes of bodies at several contacts (sections 4 and 5).
+std::vector<Point> two_point_masses_elastic(Probe&, const Settings&);
+std::vector<Point> two_point_masses_inelastic(Probe&, const Settings&);
+std::vector<Point> point_masses_in_scenes_elastic(Probe&, const Settings&);
+std::vector<Point> point_masses_in_scenes_inelastic(Probe&, const Settings&);
+std::vector<Point> point_masses_summed_elastic(Probe&, const Settings&);
+std::vector<Point> point_masses_summed_inelastic(Probe&, const Settings&);
+std::vector<Point> two_rigid_bodies_at_three_contacts_elastic(Probe&, const Settings&);
+std::vector<Point> two_rigid_bodies_at_three_contacts_inelastic(Probe&, const Settings&);
+std::vector<Point> rigid_bodies_summed_elastic(Probe&, const Settings&);
+std::vector<Point> rigid_bodies_summed_inelastic(Probe&, const Settings&);
+std::vector<Point> rigid_bodies_summed_any_elasticity(Probe&, const Settings&);
+std::vector<Point> point_masses_an_elasticity_each(Probe&, const Settings&);
+std::vector<Point> point_mass_against_three_walls(Probe&, const Settings&);
+
 }  // namespace impulse::derivations::models

@@ -286,6 +286,309 @@ const std::vector<Model>& all() {
        1e-6,
        false,
        library_rigid_body_hit_at_several_points},
+
+      {"numeric",
+       "two point masses at three contacts, elastic",
+       "Two point masses (masses 1e-3 to 1e3, any momenta) touching at three points, the normals "
+       "random. The impulses by the law of restitution (the contact Jacobian J, A = J M^-1 J^T, B "
+       "= J (e v), the minimum-norm solution), elasticity 2. A point per contact v of the pair, "
+       "seen from the first body: its impulses F_k (mean forces over dt), its outward normals n_k, "
+       "the velocities after, the work of the pair's impulses at v on either body (forces constant "
+       "over the contact), the kinetic energy of the scene before and after; and every body's "
+       "block a_{Bvi}, b_{Bv} (B its number) of the coefficients the file defines.",
+       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
+        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
+        "E", "E'", "a_{Bvi}", "b_{Bv}"},
+       1e-8,
+       1e-6,
+       false,
+       two_point_masses_elastic},
+      {"numeric",
+       "two point masses at three contacts, inelastic",
+       "Two point masses (masses 1e-3 to 1e3, any momenta) touching at three points, the normals "
+       "random. The impulses by the law of restitution (the contact Jacobian J, A = J M^-1 J^T, B "
+       "= J (e v), the minimum-norm solution), elasticity 1. A point per contact v of the pair, "
+       "seen from the first body: its impulses F_k (mean forces over dt), its outward normals n_k, "
+       "the velocities after, the work of the pair's impulses at v on either body (forces constant "
+       "over the contact), the kinetic energy of the scene before and after; and every body's "
+       "block a_{Bvi}, b_{Bv} (B its number) of the coefficients the file defines.",
+       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
+        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
+        "E", "E'", "a_{Bvi}", "b_{Bv}"},
+       1e-8,
+       1e-6,
+       false,
+       two_point_masses_inelastic},
+      {"numeric",
+       "point masses in scenes, elastic",
+       "Four point masses (the fourth static one time in four): the first touches the second at "
+       "three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
+       "5), the second the third at one. The impulses by the law of restitution (the contact "
+       "Jacobian J, A = J M^-1 J^T, B = J (e v), the minimum-norm solution), elasticity 2. A point "
+       "per contact v of the pair, seen from the first body: its impulses F_k (mean forces over "
+       "dt), its outward normals n_k, the velocities after, the work of the pair's impulses at v "
+       "on either body (forces constant over the contact), the kinetic energy of the scene before "
+       "and after; and every body's block a_{Bvi}, b_{Bv} (B its number) of the coefficients the "
+       "file defines.",
+       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
+        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
+        "E", "E'", "a_{Bvi}", "b_{Bv}"},
+       1e-8,
+       1e-6,
+       false,
+       point_masses_in_scenes_elastic},
+      {"numeric",
+       "point masses in scenes, inelastic",
+       "Four point masses (the fourth static one time in four): the first touches the second at "
+       "three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
+       "5), the second the third at one. The impulses by the law of restitution (the contact "
+       "Jacobian J, A = J M^-1 J^T, B = J (e v), the minimum-norm solution), elasticity 1. A point "
+       "per contact v of the pair, seen from the first body: its impulses F_k (mean forces over "
+       "dt), its outward normals n_k, the velocities after, the work of the pair's impulses at v "
+       "on either body (forces constant over the contact), the kinetic energy of the scene before "
+       "and after; and every body's block a_{Bvi}, b_{Bv} (B its number) of the coefficients the "
+       "file defines.",
+       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
+        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
+        "E", "E'", "a_{Bvi}", "b_{Bv}"},
+       1e-8,
+       1e-6,
+       false,
+       point_masses_in_scenes_inelastic},
+      {"numeric",
+       "point masses in scenes, the elastic coefficients summed",
+       "Four point masses (the fourth static one time in four): the first touches the second at "
+       "three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
+       "5), the second the third at one. The impulses from the file's own coefficients: each "
+       "body's block of a_{vi}, b_v at its contacts (its outward normals), the blocks added over "
+       "the contacts, the system solved (minimum-norm). The file's a_{vi(elastic)} and "
+       "b_{v(elastic)}. A point per contact v of the pair, seen from the first body, as in the "
+       "scenes of two point masses (no blocks).",
+       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
+        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
+        "E", "E'"},
+       1e-8,
+       1e-6,
+       false,
+       point_masses_summed_elastic},
+      {"numeric",
+       "point masses in scenes, the inelastic coefficients summed",
+       "Four point masses (the fourth static one time in four): the first touches the second at "
+       "three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
+       "5), the second the third at one. The impulses from the file's own coefficients: each "
+       "body's block of a_{vi}, b_v at its contacts (its outward normals), the blocks added over "
+       "the contacts, the system solved (minimum-norm). The file's a_{vi(inelastic)} and "
+       "b_{v(inelastic)}. A point per contact v of the pair, seen from the first body, as in the "
+       "scenes of two point masses (no blocks).",
+       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
+        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
+        "E", "E'"},
+       1e-8,
+       1e-6,
+       false,
+       point_masses_summed_inelastic},
+      {"numeric",
+       "two rigid bodies at three contacts, elastic",
+       "Two rigid bodies (radii of gyration fitted to their arms) touching at three points. The "
+       "impulses by the law of restitution (the contact Jacobian J, A = J M^-1 J^T, B = J (e v), "
+       "the minimum-norm solution), elasticity 2. A point per contact v of the pair, seen from the "
+       "first body, with its arms r_k and r_v, the turning part of its point's velocity v'_vr and "
+       "the work on its turning Delta E_vr.",
+       {"m",
+        "I",
+        "\\vec{p}",
+        "L",
+        "m_o",
+        "I_o",
+        "\\vec{p_o}",
+        "L_o",
+        "dt",
+        "F_k",
+        "\\vec{n_k}",
+        "\\vec{r_k}",
+        "\\vec{F_k}",
+        "\\vec{n_v}",
+        "\\vec{r_v}",
+        "\\vec{v_{vt}'}",
+        "\\vec{v_{vr}'}",
+        "\\vec{v_{vo}}",
+        "\\vec{v_{vo}'}",
+        "\\Delta E_{vt}",
+        "\\Delta E_{vr}",
+        "\\Delta E_{vo}",
+        "E",
+        "E'"},
+       1e-8,
+       1e-6,
+       false,
+       two_rigid_bodies_at_three_contacts_elastic},
+      {"numeric",
+       "two rigid bodies at three contacts, inelastic",
+       "Two rigid bodies (radii of gyration fitted to their arms) touching at three points. The "
+       "impulses by the law of restitution (the contact Jacobian J, A = J M^-1 J^T, B = J (e v), "
+       "the minimum-norm solution), elasticity 1. A point per contact v of the pair, seen from the "
+       "first body, with its arms r_k and r_v, the turning part of its point's velocity v'_vr and "
+       "the work on its turning Delta E_vr.",
+       {"m",
+        "I",
+        "\\vec{p}",
+        "L",
+        "m_o",
+        "I_o",
+        "\\vec{p_o}",
+        "L_o",
+        "dt",
+        "F_k",
+        "\\vec{n_k}",
+        "\\vec{r_k}",
+        "\\vec{F_k}",
+        "\\vec{n_v}",
+        "\\vec{r_v}",
+        "\\vec{v_{vt}'}",
+        "\\vec{v_{vr}'}",
+        "\\vec{v_{vo}}",
+        "\\vec{v_{vo}'}",
+        "\\Delta E_{vt}",
+        "\\Delta E_{vr}",
+        "\\Delta E_{vo}",
+        "E",
+        "E'"},
+       1e-8,
+       1e-6,
+       false,
+       two_rigid_bodies_at_three_contacts_inelastic},
+      {"numeric",
+       "rigid bodies in scenes, the elastic coefficients summed",
+       "Four rigid bodies (the fourth static one time in four), touching as the scenes of point "
+       "masses do. The impulses from the file's own coefficients: each body's block of a_{vi}, b_v "
+       "at its contacts (its outward normals), the blocks added over the contacts, the system "
+       "solved (minimum-norm). The file's a_{vk(elastic)} and b_{v(elastic)}. A point per contact "
+       "v of the pair, seen from the first body, with its arms r_k and r_v, the turning part of "
+       "its point's velocity v'_vr and the work on its turning Delta E_vr.",
+       {"m",
+        "I",
+        "\\vec{p}",
+        "L",
+        "m_o",
+        "I_o",
+        "\\vec{p_o}",
+        "L_o",
+        "dt",
+        "F_k",
+        "\\vec{n_k}",
+        "\\vec{r_k}",
+        "\\vec{F_k}",
+        "\\vec{n_v}",
+        "\\vec{r_v}",
+        "\\vec{v_{vt}'}",
+        "\\vec{v_{vr}'}",
+        "\\vec{v_{vo}}",
+        "\\vec{v_{vo}'}",
+        "\\Delta E_{vt}",
+        "\\Delta E_{vr}",
+        "\\Delta E_{vo}",
+        "E",
+        "E'"},
+       1e-8,
+       1e-6,
+       false,
+       rigid_bodies_summed_elastic},
+      {"numeric",
+       "rigid bodies in scenes, the inelastic coefficients summed",
+       "Four rigid bodies (the fourth static one time in four), touching as the scenes of point "
+       "masses do. The impulses from the file's own coefficients: each body's block of a_{vi}, b_v "
+       "at its contacts (its outward normals), the blocks added over the contacts, the system "
+       "solved (minimum-norm). The file's a_{vk(inelastic)} and b_{v(inelastic)}. A point per "
+       "contact v of the pair, seen from the first body, with its arms r_k and r_v, the turning "
+       "part of its point's velocity v'_vr and the work on its turning Delta E_vr.",
+       {"m",
+        "I",
+        "\\vec{p}",
+        "L",
+        "m_o",
+        "I_o",
+        "\\vec{p_o}",
+        "L_o",
+        "dt",
+        "F_k",
+        "\\vec{n_k}",
+        "\\vec{r_k}",
+        "\\vec{F_k}",
+        "\\vec{n_v}",
+        "\\vec{r_v}",
+        "\\vec{v_{vt}'}",
+        "\\vec{v_{vr}'}",
+        "\\vec{v_{vo}}",
+        "\\vec{v_{vo}'}",
+        "\\Delta E_{vt}",
+        "\\Delta E_{vr}",
+        "\\Delta E_{vo}",
+        "E",
+        "E'"},
+       1e-8,
+       1e-6,
+       false,
+       rigid_bodies_summed_inelastic},
+      {"numeric",
+       "rigid bodies in scenes, elasticity times the inelastic coefficients",
+       "Four rigid bodies (the fourth static one time in four), touching as the scenes of point "
+       "masses do. The impulses from the file's own coefficients: each body's block of a_{vi}, b_v "
+       "at its contacts (its outward normals), the blocks added over the contacts, the system "
+       "solved (minimum-norm). The file's a_{vk(inelastic)}, and b_{v(inelastic)} times an "
+       "elasticity: 1, 2 or between, drawn in turn. A point per contact v of the pair, seen from "
+       "the first body, with its arms r_k and r_v, the turning part of its point's velocity v'_vr "
+       "and the work on its turning Delta E_vr.",
+       {"m",
+        "I",
+        "\\vec{p}",
+        "L",
+        "m_o",
+        "I_o",
+        "\\vec{p_o}",
+        "L_o",
+        "dt",
+        "F_k",
+        "\\vec{n_k}",
+        "\\vec{r_k}",
+        "\\vec{F_k}",
+        "\\vec{n_v}",
+        "\\vec{r_v}",
+        "\\vec{v_{vt}'}",
+        "\\vec{v_{vr}'}",
+        "\\vec{v_{vo}}",
+        "\\vec{v_{vo}'}",
+        "\\Delta E_{vt}",
+        "\\Delta E_{vr}",
+        "\\Delta E_{vo}",
+        "E",
+        "E'",
+        "\\mathit{elasticity}"},
+       1e-8,
+       1e-6,
+       false,
+       rigid_bodies_summed_any_elasticity},
+      {"search",
+       "point masses in scenes, an elasticity each",
+       "The scenes of four point masses, each body's block of the file's a_{vi(inelastic)} and "
+       "b_{v(inelastic)} with its b times an elasticity of its own from 0 to 3, summed; rho the "
+       "least-squares residual of the system relative to its terms (scene.hpp's inconsistency).",
+       {"\\rho", "\\mathit{elasticity}_1", "\\mathit{elasticity}_2", "\\mathit{elasticity}_3",
+        "\\mathit{elasticity}_4"},
+       1e-9,
+       1e-6,
+       false,
+       point_masses_an_elasticity_each},
+      {"search",
+       "a point mass against three walls, the nearest equal impulses",
+       "A point mass against three static walls (first mass 1 at (2, 1) into the corner of walls "
+       "with outward normals (1, 0), (0, 1) and the diagonal, then random ones); f the equal "
+       "impulse over dt = 1 nearest (least squares) to solving the system of the law of "
+       "restitution with elasticity 2 (the contact Jacobian). A point per wall v.",
+       {"m", "\\vec{p}", "\\vec{n_k}", "\\vec{n_v}", "f", "dt"},
+       1e-9,
+       1e-6,
+       false,
+       point_mass_against_three_walls},
   };
   return table;
 }

@@ -12,10 +12,11 @@ using Eigen::MatrixXd;
 using Eigen::Vector2d;
 using Eigen::VectorXd;
 
-namespace {
 double cross(const Vector2d& a, const Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
+
+namespace {
 Vector2d perp(const Vector2d& r) {
   return {-r.y(), r.x()};
 }
@@ -62,6 +63,11 @@ Scene random_scene(num::Random& r, bool rigid, bool with_static, int max_bodies,
       ++b;
     s.contacts.push_back({a, b, r.unit_vector(), r.vector(2)});
   }
+  fit_inertias(r, s);
+  return s;
+}
+
+void fit_inertias(num::Random& r, Scene& s) {
   for (std::size_t k = 0; k < s.bodies.size(); ++k) {
     Body& b = s.bodies[k];
     if (!b.rigid())
@@ -75,7 +81,6 @@ Scene random_scene(num::Random& r, bool rigid, bool with_static, int max_bodies,
     b.I = b.m * gyration * gyration;
     b.L = b.I * r.uniform(-10, 10) / reach;
   }
-  return s;
 }
 
 Scene random_pair(num::Random& r, int max_contacts) {

@@ -1,0 +1,433 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Scenes of bodies at several contacts (sections 4 and 5): point masses or rigid bodies, their
+// impulses found either by the law of restitution from the contact Jacobian (scene.hpp: nothing of
+// the paper in it) or from the coefficients the file defines, each body's block summed into the
+// system as the paper's ⊕ does (the file's a and b read through the probe, the system solved by
+// its minimum-norm solution). A point is one contact v of the first body, seen from that body: its
+// impulses numbered 1 to 3 (those exchanged with the other body of contact v, the paper's i) and 4,
+// 5 (with further bodies, the j), the bodies' state, the velocities after, the work the impulses do
+// at contact v, the kinetic energy of the scene before and after; and, for the checks of the
+// summed blocks, each body's block as numbers.
+#include <cmath>
+#include <optional>
+
+#include "models/catalogue.hpp"
+#include "models/scene.hpp"
+
+namespace impulse::derivations::models {
+
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::Vector2d;
+using Eigen::VectorXd;
+
+std::string numbered(const std::string& head, std::size_t k, const std::string& tail = "}") {
+  return head + std::to_string(k) + tail;
+}
+
+// Which scenes, and where their impulses come from.
+struct Family {
+  bool rigid = false;      // rigid bodies (section 5), else point masses (section 4)
+  bool others = false;     // four bodies: the pair, and two more the first body touches
+  double elasticity = 2;   // 2 or 1; 0: drawn (1, 2, or between), scaling the inelastic b
+  bool from_file = false;  // the file's coefficients summed, else the law of restitution
+  bool blocks = false;     // give each body's block of the file's coefficients as numbers
+};
+
+// The first body (0) touches the second (1) at one to three points (the slots 1 to 3); with
+// others, the third (2) at slot 4, the fourth (3, static one time in four) at 5, and the second
+// touches the third at 6. A slot without a contact gives a zero impulse.
+struct Drawn {
+  many::Scene scene;
+  std::vector<std::optional<std::size_t>> slots;  // the contact in each slot
+};
+
+Drawn draw_scene(num::Random& r, const Family& f) {
+  Drawn d;
+  many::Scene& s = d.scene;
+  const std::size_t count = f.others ? 4 : 2;
+  for (std::size_t k = 0; k < count; ++k) {
+    many::Body b;
+    if (k == 3 && r.integer(0, 3) == 0) {
+      b.m = 0;
+    } else {
+      b.m = r.mass();
+      b.p = b.m * r.vector(10);
+      b.position = r.vector(1);
+      b.I = f.rigid ? 1.0 : 0.0;  // set from the arms below
+    }
+    s.bodies.push_back(b);
+  }
+  const auto touch = [&](std::size_t a, std::size_t b) {
+    d.slots.emplace_back(s.contacts.size());
+    s.contacts.push_back({a, b, r.unit_vector(), r.vector(2)});
+  };
+  const int pair = r.integer(1, 3);
+  for (int v = 0; v < 3; ++v) {
+    if (v < pair) {
+      touch(0, 1);
+    } else {
+      d.slots.emplace_back(std::nullopt);
+    }
+  }
+  if (f.others) {
+    touch(0, 2);
+    touch(0, 3);
+    touch(1, 2);
+  }
+  many::fit_inertias(r, s);
+  return d;
+}
+
+// The file's coefficients as compiled functions of the body's quantities at two contacts.
+struct Coefficients {
+  std::function<double(std::span<const double>)> a;
+  std::function<double(std::span<const double>)> b;
+};
+
+Coefficients coefficients(Probe& probe, const Family& f) {
+  // The file writes them with an index (a_{vi(elastic)}); the engine reads one per value of it,
+  // all of one form: the first serves.
+  const std::string kind = f.elasticity == 2 ? "(elastic)}" : "(inelastic)}";
+  if (f.rigid) {
+    return {probe.function("a_{v1" + kind,
+                           {"m", "I", "\\vec{r_1}", "\\vec{n_1}", "\\vec{r_v}", "\\vec{n_v}"}),
+            probe.function("b_{v" + kind, {"m", "I", "L", "\\vec{p}", "\\vec{r_v}", "\\vec{n_v}"})};
+  }
+  return {probe.function("a_{v1" + kind, {"m", "\\vec{n_1}", "\\vec{n_v}"}),
+          probe.function("b_{v" + kind, {"m", "\\vec{p}", "\\vec{n_v}"})};
+}
+
+// A body's contacts with its own outward normals and arms.
+struct Touch {
+  Eigen::Index v;
+  Vector2d n;
+  Vector2d r;
+};
+
+std::vector<Touch> touches(const many::Scene& s, std::size_t body) {
+  std::vector<Touch> out;
+  const many::Body& b = s.bodies[body];
+  for (std::size_t v = 0; v < s.contacts.size(); ++v) {
+    const many::Contact& c = s.contacts[v];
+    if (c.a == body || c.b == body) {
+      out.push_back(
+          {static_cast<Eigen::Index>(v), c.a == body ? c.n : Vector2d(-c.n), c.point - b.position});
+    }
+  }
+  return out;
+}
+
+// One body's block of the file's coefficients, zero outside its own contacts (the ⊕ padding).
+many::System block(const many::Scene& s, std::size_t body, const Coefficients& k) {
+  const auto N = static_cast<Eigen::Index>(s.contacts.size());
+  many::System sys{MatrixXd::Zero(N, N), VectorXd::Zero(N)};
+  const many::Body& b = s.bodies[body];
+  if (b.is_static()) {
+    return sys;
+  }
+  const std::vector<Touch> own = touches(s, body);
+  for (const Touch& v : own) {
+    sys.B(v.v) =
+        b.rigid()
+            ? k.b(std::array{b.m, b.I, b.L, b.p.x(), b.p.y(), v.r.x(), v.r.y(), v.n.x(), v.n.y()})
+            : k.b(std::array{b.m, b.p.x(), b.p.y(), v.n.x(), v.n.y()});
+    for (const Touch& i : own) {
+      sys.A(v.v, i.v) = b.rigid() ? k.a(std::array{b.m, b.I, i.r.x(), i.r.y(), i.n.x(), i.n.y(),
+                                                   v.r.x(), v.r.y(), v.n.x(), v.n.y()})
+                                  : k.a(std::array{b.m, i.n.x(), i.n.y(), v.n.x(), v.n.y()});
+    }
+  }
+  return sys;
+}
+
+// The work of the impulses of the pair at contact v on a body's motion, the forces constant over
+// the contact (the mean velocity along the path is the mean of before and after): along n_v on
+// the translation, and on the turning of the point at arm r_v.
+struct Work {
+  double translational = 0;
+  double rotational = 0;
+};
+
+Work work_at(const many::Scene& s, const VectorXd& F, std::size_t body, std::size_t contact) {
+  const many::Contact& cv = s.contacts[contact];
+  const many::Body& b = s.bodies[body];
+  const std::size_t other = cv.a == body ? cv.b : cv.a;
+  const Vector2d nv = cv.a == body ? cv.n : Vector2d(-cv.n);
+  double pair = 0, all = 0, spin = 0;
+  for (const Touch& t : touches(s, body)) {
+    const many::Contact& c = s.contacts[static_cast<std::size_t>(t.v)];
+    const Vector2d impulse = -t.n * F(t.v);
+    all += impulse.dot(nv);
+    if (c.a == other || c.b == other) {
+      pair += impulse.dot(nv);
+    }
+    spin += many::cross(t.r, impulse);
+  }
+  Work w;
+  if (b.is_static()) {
+    return w;
+  }
+  w.translational = pair * (b.p.dot(nv) + all / 2) / b.m;
+  if (b.rigid()) {
+    w.rotational = many::cross(cv.point - b.position, nv) * pair * (b.L + spin / 2) / b.I;
+  }
+  return w;
+}
+
+std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Family& f) {
+  num::Random r(settings.seed);
+  std::vector<Point> points;
+  const Coefficients inelastic = coefficients(probe, {f.rigid, f.others, 1, true, false});
+  const Coefficients elastic = coefficients(probe, {f.rigid, f.others, 2, true, false});
+  const std::size_t scenes = settings.share(f.others ? 20 : 10);
+  for (std::size_t count = 0; count < scenes; ++count) {
+    const Drawn drawn = draw_scene(r, f);
+    const many::Scene& s = drawn.scene;
+    double e = f.elasticity;
+    if (e == 0) {
+      const int which = r.integer(0, 2);
+      e = which == 0 ? 1.0 : which == 1 ? 2.0 : r.uniform(1.0, 2.0);
+    }
+    // The impulses: the file's blocks summed, or the law of restitution.
+    VectorXd F;
+    const Coefficients& k = f.elasticity == 0 || e == 1 ? inelastic : elastic;
+    if (f.from_file) {
+      const auto N = static_cast<Eigen::Index>(s.contacts.size());
+      many::System sum{MatrixXd::Zero(N, N), VectorXd::Zero(N)};
+      for (std::size_t body = 0; body < s.bodies.size(); ++body) {
+        const many::System own = block(s, body, k);
+        sum.A += own.A;
+        sum.B += own.B;
+      }
+      if (f.elasticity == 0) {
+        sum.B *= e;  // elasticity times the inelastic b
+      }
+      if (!sum.A.allFinite() || !sum.B.allFinite()) {
+        continue;  // the file does not define the coefficients: nothing to test with
+      }
+      F = many::solve(sum.A, sum.B);
+    } else {
+      const many::Model md = many::model(s);
+      F = many::solve(md.A(), md.J * (e * md.velocity));
+    }
+    const many::Scene after = many::after(s, F);
+    if (f.from_file) {
+      // The motion the file's coefficients give: a point at every contact, seen from its first
+      // body.
+      for (const many::Contact& c : s.contacts) {
+        const many::Body& a = s.bodies[c.a];
+        const Vector2d centre_after = after.bodies[c.a].p / a.m;
+        Point p;
+        p.set("E", many::energy(s)).set("E'", many::energy(after));
+        p.set("m", a.m).set("\\vec{p}", a.p).set("\\vec{n_v}", c.n);
+        p.set("\\vec{v_{vt}'}", centre_after);
+        if (f.rigid) {
+          p.set("I", a.I).set("L", a.L).set("\\vec{r_v}", c.point - a.position);
+          p.set("\\vec{v_{vr}'}", Vector2d(after.bodies[c.a].velocity_at(c.point) - centre_after));
+        }
+        p.set("\\vec{v_{vo}'}", after.bodies[c.b].velocity_at(c.point));
+        if (f.elasticity == 0) {
+          p.set("\\mathit{elasticity}", e);
+        }
+        points.push_back(std::move(p));
+      }
+      continue;
+    }
+    const double dt = r.log_uniform(1e-3, 1.0);
+    const many::Body& own = s.bodies[0];
+    const many::Body& other = s.bodies[1];
+    Point common;
+    common.set("dt", dt).set("E", many::energy(s)).set("E'", many::energy(after));
+    common.set("m", own.m).set("\\vec{p}", own.p).set("m_o", other.m).set("\\vec{p_o}", other.p);
+    if (f.rigid) {
+      common.set("I", own.I).set("L", own.L).set("I_o", other.I).set("L_o", other.L);
+    }
+    // The first body's impulses, numbered as the file's indices: 1 to 3 the pair's, 4 and 5
+    // the others' (a slot without a contact: no impulse, any normal and arm).
+    for (std::size_t q = 0; q < (f.others ? 5U : 3U); ++q) {
+      Vector2d n = r.unit_vector();
+      Vector2d arm = r.vector(2);
+      double mean = 0;
+      if (const auto c = drawn.slots[q]) {
+        const many::Contact& contact = s.contacts[*c];
+        n = contact.a == 0 ? contact.n : Vector2d(-contact.n);
+        arm = contact.point - own.position;
+        mean = F(static_cast<Eigen::Index>(*c)) / dt;
+      }
+      common.set(numbered("F_", q + 1, ""), mean)
+          .set(numbered("\\vec{n_", q + 1), n)
+          .set(numbered("\\vec{F_", q + 1), Vector2d(-n * mean));
+      if (f.rigid) {
+        common.set(numbered("\\vec{r_", q + 1), arm);
+      }
+    }
+    if (f.blocks) {
+      // Every body's block over the slots (zero where a slot has no contact).
+      for (std::size_t body = 0; body < s.bodies.size(); ++body) {
+        const many::System b = block(s, body, k);
+        const std::string name = std::to_string(body + 1);
+        for (std::size_t v = 0; v < drawn.slots.size(); ++v) {
+          const auto cv = drawn.slots[v];
+          common.set("b_{" + name + std::to_string(v + 1) + "}",
+                     cv ? b.B(static_cast<Eigen::Index>(*cv)) : 0.0);
+          for (std::size_t i = 0; i < drawn.slots.size(); ++i) {
+            const auto ci = drawn.slots[i];
+            common.set("a_{" + name + std::to_string(v + 1) + std::to_string(i + 1) + "}",
+                       cv && ci
+                           ? b.A(static_cast<Eigen::Index>(*cv), static_cast<Eigen::Index>(*ci))
+                           : 0.0);
+          }
+        }
+      }
+      // The impulse of the slot the first body is not in (the second and third bodies').
+      if (f.others) {
+        common.set("F_6", F(static_cast<Eigen::Index>(*drawn.slots[5])) / dt);
+      }
+    }
+    for (std::size_t v = 0; v < 3; ++v) {
+      if (!drawn.slots[v]) {
+        continue;
+      }
+      const many::Contact& c = s.contacts[*drawn.slots[v]];
+      Point p = common;
+      p.set("\\vec{n_v}", c.n);
+      const Vector2d centre_after = after.bodies[0].p / own.m;
+      const Vector2d point_after = after.bodies[0].velocity_at(c.point);
+      p.set("\\vec{v_{vt}'}", centre_after).set("\\vec{v_{vt}}", Vector2d(own.p / own.m));
+      if (f.rigid) {
+        p.set("\\vec{r_v}", c.point - own.position);
+        p.set("\\vec{v_{vr}}", Vector2d(own.velocity_at(c.point) - own.p / own.m));
+        p.set("\\vec{v_{vr}'}", Vector2d(point_after - centre_after));
+      }
+      p.set("\\vec{v_{vo}}", other.velocity_at(c.point));
+      p.set("\\vec{v_{vo}'}", after.bodies[1].velocity_at(c.point));
+      // The impulse the body receives there: the momentum that contact's impulse alone gives
+      // the body at rest (scene.hpp's after), over dt.
+      const auto at = static_cast<Eigen::Index>(*drawn.slots[v]);
+      VectorXd alone = VectorXd::Zero(F.size());
+      alone(at) = F(at);
+      many::Scene resting = s;
+      resting.bodies[0].p.setZero();
+      p.set("F_v", F(at) / dt)
+          .set("\\vec{F_v}", Vector2d(many::after(resting, alone).bodies[0].p / dt));
+      const Work mine_v = work_at(s, F, 0, *drawn.slots[v]);
+      const Work theirs = work_at(s, F, 1, *drawn.slots[v]);
+      p.set("\\Delta E_{vt}", mine_v.translational);
+      p.set("\\Delta E_{vo}", theirs.translational + theirs.rotational);
+      if (f.rigid) {
+        p.set("\\Delta E_{vr}", mine_v.rotational);
+      }
+      points.push_back(std::move(p));
+    }
+  }
+  return points;
+}
+
+}  // namespace
+
+std::vector<Point> two_point_masses_elastic(Probe& p, const Settings& s) {
+  return scene_points(p, s, {false, false, 2, false, true});
+}
+std::vector<Point> two_point_masses_inelastic(Probe& p, const Settings& s) {
+  return scene_points(p, s, {false, false, 1, false, true});
+}
+std::vector<Point> point_masses_in_scenes_elastic(Probe& p, const Settings& s) {
+  return scene_points(p, s, {false, true, 2, false, true});
+}
+std::vector<Point> point_masses_in_scenes_inelastic(Probe& p, const Settings& s) {
+  return scene_points(p, s, {false, true, 1, false, true});
+}
+std::vector<Point> point_masses_summed_elastic(Probe& p, const Settings& s) {
+  return scene_points(p, s, {false, true, 2, true, false});
+}
+std::vector<Point> point_masses_summed_inelastic(Probe& p, const Settings& s) {
+  return scene_points(p, s, {false, true, 1, true, false});
+}
+std::vector<Point> two_rigid_bodies_at_three_contacts_elastic(Probe& p, const Settings& s) {
+  return scene_points(p, s, {true, false, 2, false, false});
+}
+std::vector<Point> two_rigid_bodies_at_three_contacts_inelastic(Probe& p, const Settings& s) {
+  return scene_points(p, s, {true, false, 1, false, false});
+}
+std::vector<Point> rigid_bodies_summed_elastic(Probe& p, const Settings& s) {
+  return scene_points(p, s, {true, true, 2, true, false});
+}
+std::vector<Point> rigid_bodies_summed_inelastic(Probe& p, const Settings& s) {
+  return scene_points(p, s, {true, true, 1, true, false});
+}
+std::vector<Point> rigid_bodies_summed_any_elasticity(Probe& p, const Settings& s) {
+  return scene_points(p, s, {true, true, 0, true, false});
+}
+
+}  // namespace impulse::derivations::models
+
+namespace impulse::derivations::models {
+
+std::vector<Point> point_masses_an_elasticity_each(Probe& probe, const Settings& settings) {
+  num::Random r(settings.seed);
+  const Coefficients inelastic = coefficients(probe, {false, true, 1, true, false});
+  std::vector<Point> points;
+  for (std::size_t count = 0; count < settings.share(20); ++count) {
+    const many::Scene s = draw_scene(r, {false, true, 1, true, false}).scene;
+    const auto N = static_cast<Eigen::Index>(s.contacts.size());
+    many::System sum{MatrixXd::Zero(N, N), VectorXd::Zero(N)};
+    Point p;
+    for (std::size_t body = 0; body < s.bodies.size(); ++body) {
+      const double e = r.uniform(0.0, 3.0);
+      const many::System own = block(s, body, inelastic);
+      sum.A += own.A;
+      sum.B += e * own.B;
+      p.set(numbered("\\mathit{elasticity}_", body + 1, ""), e);
+    }
+    if (!sum.A.allFinite() || !sum.B.allFinite()) {
+      continue;
+    }
+    p.set("\\rho", many::inconsistency(sum.A, sum.B));
+    points.push_back(std::move(p));
+  }
+  return points;
+}
+
+std::vector<Point> point_mass_against_three_walls(Probe&, const Settings& settings) {
+  num::Random r(settings.seed);
+  std::vector<Point> points;
+  for (std::size_t count = 0; count < settings.share(20); ++count) {
+    // First the corner: mass 1 at (2, 1) against walls with outward normals (1, 0), (0, 1) and
+    // the diagonal; then random ones.
+    many::Scene s;
+    const bool corner = count == 0;
+    s.bodies = {many::Body{corner ? 1.0 : r.mass(), 0, {0, 0}, {0, 0}, 0},
+                many::Body{0, 0, {0, 0}, {0, 0}, 0}};
+    s.bodies[0].p = corner ? Vector2d(2, 1) : Vector2d(s.bodies[0].m * r.vector(10));
+    const double h = std::sqrt(0.5);
+    for (int v = 0; v < 3; ++v) {
+      const Vector2d n = !corner  ? r.unit_vector()
+                         : v == 0 ? Vector2d(1, 0)
+                         : v == 1 ? Vector2d(0, 1)
+                                  : Vector2d(h, h);
+      s.contacts.push_back({0, 1, n, Vector2d::Zero()});
+    }
+    // The system of the law of restitution, elasticity 2, and the equal impulse nearest to
+    // solving it (least squares in f).
+    const many::Model md = many::model(s);
+    const MatrixXd A = md.A();
+    const VectorXd B = md.J * (2 * md.velocity);
+    const VectorXd column = A * VectorXd::Ones(3);
+    const double f = column.dot(B) / column.squaredNorm();
+    Point common;
+    common.set("m", s.bodies[0].m).set("\\vec{p}", s.bodies[0].p).set("f", f).set("dt", 1.0);
+    for (std::size_t q = 0; q < 3; ++q) {
+      common.set(numbered("\\vec{n_", q + 1), s.contacts[q].n);
+    }
+    for (const many::Contact& c : s.contacts) {
+      Point p = common;
+      p.set("\\vec{n_v}", c.n);
+      points.push_back(std::move(p));
+    }
+  }
+  return points;
+}
+
+}  // namespace impulse::derivations::models
