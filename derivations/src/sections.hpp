@@ -47,30 +47,4 @@ std::vector<CodedCheck> section5_checks();
 /// the rest still C++, and run() and all_checks() interleave the two in this order.
 const std::vector<std::string>& section5_order();
 
-/// The numeric findings on a system assembled from printed coefficients (sections 4 and 5), over
-/// random scenes (with rigid bodies when `rigid`, and static bodies): solved, it keeps the energy
-/// (elastic) or equalises every contact (inelastic); it equals A = J M^-1 J^T and B = J (e v)
-/// built from the contact Jacobian; and the library's multipoint::assemble gives the same.
-std::vector<Finding> printed_system_findings(
-    const Context& context, bool rigid, bool elastic,
-    const std::function<many::System(const many::Scene&)>& assemble_printed,
-    const std::string& scenes);
-/// The same on scenes that @p draw produces, @p count of them.
-std::vector<Finding> printed_system_findings(
-    const Context& context, bool elastic,
-    const std::function<many::System(const many::Scene&)>& assemble_printed,
-    const std::function<many::Scene(num::Random&)>& draw, const std::string& scenes,
-    std::size_t count);
-
-/// The paper's per-contact energies of body k at contact v (sections 4.1 and 5.1): with J_i the
-/// impulses exchanged with the other body of contact v, K all of body k's impulses, both cast on
-/// k's own normal at v: translational J_i (K/2 + p_v)/m, rotational d_v J_i (dL/2 + L)/I.
-struct ContactEnergy {
-  double translational = 0;
-  double rotational = 0;
-  double pair_impulse = 0;  ///< J_i, the impulses exchanged with the other body, cast on n_v
-};
-ContactEnergy contact_energy(const many::Scene& scene, const Eigen::VectorXd& F, std::size_t body,
-                             std::size_t contact);
-
 }  // namespace impulse::derivations
