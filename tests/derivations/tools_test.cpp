@@ -6,6 +6,7 @@
 #include <numbers>
 #include <random>
 
+#include "derivations/check.hpp"
 #include "file/time.hpp"
 #include "numeric.hpp"
 #include "symbolic.hpp"
@@ -195,4 +196,22 @@ TEST_CASE("Integrals over a pulse: a bound variable hides a symbol of its name, 
   // A force shaped outside integrals only: the inner integral keeps its own shaping.
   const GiNaC::ex shaped = file::shaped_outside_integrals(F + inner, GiNaC::exmap{{F, F * pulse}});
   CHECK(shaped.is_equal(F * pulse + inner));
+}
+
+// A let: between a check's line and its statement is the check's own (section 5's s5.1-dalpha
+// defines its increments so): the check's equations keep it, the checks after it do not see it.
+TEST_CASE("Paper files: a check's own let: ends with the check", "[tools]") {
+  // The same step twice from the same premise: with the first check's own b = 2 a it follows,
+  // after that check b is a symbol of its own again.
+  const std::string text =
+      "# Own definitions\n\nsection: 4.1\n\n"
+      "check: base step\ngiven:\n\n$$c = 2 a$$\n\n"
+      "check: own step\nlet: b = 2 a\nfrom: base\n\n$$c = b$$\n\n"
+      "check: ended step\nfrom: base\n\n$$c = b$$\n";
+  const check::Report report = check::run({{"section4.md", text}}, {"", 10, 1});
+  REQUIRE(report.results.size() == 3);
+  CHECK(report.results[1].check.id == "own");
+  CHECK(report.results[1].outcome.status == check::Status::verified);
+  CHECK(report.results[2].check.id == "ended");
+  CHECK(report.results[2].outcome.status != check::Status::verified);
 }

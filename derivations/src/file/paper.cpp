@@ -388,6 +388,13 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
                    [&](const ex& s) { return s.is_equal(pulse_duration()); }) == symbols.end()) {
     symbols.push_back(pulse_duration());
   }
+  // A model that shapes the force gives the contact's duration dt, the pulse's time scale, also
+  // to a check whose equations do not write it (a path at the contact's end, S_v = ∫_0^t …).
+  if (model->draws_the_rest && std::find_if(symbols.begin(), symbols.end(), [&](const ex& s) {
+                                 return s.is_equal(dt);
+                               }) == symbols.end()) {
+    symbols.push_back(dt);
+  }
   const auto index_of = [&](const ex& s) -> std::optional<std::size_t> {
     for (std::size_t i = 0; i < symbols.size(); ++i) {
       if (symbols[i].is_equal(s)) {
