@@ -259,16 +259,41 @@ const std::vector<Model>& all() {
        false,
        rods_striking_rough_floors,
        true},
-      // Section 5
+      // Sections 4 and 5 (pulses.cpp)
+      {"quadrature",
+       "pulses of force on a body",
+       "A point mass m of momentum p receiving three mean forces F_1, F_2, F_3 over a contact "
+       "of duration dt, all shaped by one pulse (constant, half-sine, triangular, or peaking "
+       "early, in turn); its motion along the normal n_v integrated in time (GSL rk8pd), and at "
+       "the contact's end t = dt: the path S_v along n_v, the change d p_v of the momentum along "
+       "n_v and Delta E_vt of the kinetic energy of the motion along n_v; v_v the velocity along "
+       "n_v before.",
+       {"m", "\\vec{p}", "dt", "\\vec{F_1}", "\\vec{F_2}", "\\vec{F_3}", "\\vec{n_v}", "t", "S_v",
+        "\\mathrm{d}p_v", "\\Delta E_{vt}", "v_v"},
+       1e-9,
+       1e-6,
+       true,
+       pulses_on_a_body},
+      {"numeric",
+       "pulses of force on a body",
+       "The same points read exactly (every force its mean over the contact), for what holds "
+       "whatever the pulse's shape and is an equation between a differential and the whole "
+       "contact (the mean force, the momentum's change over dt).",
+       {"(as the quadrature one)"},
+       1e-9,
+       1e-6,
+       false,
+       pulses_on_a_body},
       {"quadrature",
        "pulses of force on a turning body",
        "Three mean forces F_1, F_2, F_3 at arms r_1, r_2, r_3 of a body of inertia I and "
        "angular momentum L, over a contact of duration dt, all shaped by one pulse (constant, "
        "half-sine, triangular, or peaking early, in turn); the body's turning integrated in time "
        "(GSL rk8pd) from the torque, and Delta E_vr the work of the first force along n_v on the "
-       "rotational motion of the point at arm r_v, integrated with it.",
+       "rotational motion of the point at arm r_v, integrated with it; the angle alpha turned "
+       "by the contact's end t = dt, and omega the rate of turning before.",
        {"I", "L", "dt", "\\vec{r_1}", "\\vec{r_2}", "\\vec{r_3}", "\\vec{F_1}", "\\vec{F_2}",
-        "\\vec{F_3}", "\\vec{r_v}", "\\vec{n_v}", "\\Delta E_{vr}"},
+        "\\vec{F_3}", "\\vec{r_v}", "\\vec{n_v}", "\\Delta E_{vr}", "t", "\\alpha", "\\omega"},
        1e-9,
        1e-6,
        true,
