@@ -395,6 +395,12 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
                                }) == symbols.end()) {
     symbols.push_back(dt);
   }
+  // An instant's forces are shaped at t, written or not (F_v = dp_v / dt).
+  if (std::any_of(targets.begin(), targets.end(), [](const Target& x) { return x.instant; }) &&
+      std::find_if(symbols.begin(), symbols.end(), [&](const ex& s) { return s.is_equal(t); }) ==
+          symbols.end()) {
+    symbols.push_back(t);
+  }
   const auto index_of = [&](const ex& s) -> std::optional<std::size_t> {
     for (std::size_t i = 0; i < symbols.size(); ++i) {
       if (symbols[i].is_equal(s)) {
@@ -413,6 +419,7 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
     std::vector<std::pair<ex, TimedExpression>> shown;  // those solutions, for the report
     std::vector<std::size_t> solved;
     std::vector<bool> tested;  // per target
+    bool fixes_t = false;      // the point gives t: an instant's reading is at the model's t
     std::vector<TimedExpression> differences, scales;
     std::vector<std::vector<TimedExpression>> denominators;
     std::vector<TimedExpression> sides;  // claims: per relation, left then the others
@@ -561,18 +568,32 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
       return std::none_of(undetermined.begin(), undetermined.end(),
                           [&](std::size_t u) { return e.has(symbols[u]); });
     };
+    // The differentials the point gives, as rates: at an instant, dX is the value times dt.
+    GiNaC::exmap rates;
+    for (const models::Value& v : point.values) {
+      const std::vector<ex> named = symbols_of_name(v.symbol);
+      const SymbolInfo* info = symbols_.info(named[0]);
+      if (!v.vector && info != nullptr && info->name.differential) {
+        rates[named[0]] = named[0] * dt;
+      }
+    }
+    if (const auto ts = index_of(t)) {
+      p.fixes_t = known.contains(*ts);
+    }
     for (const Target& target : targets) {
       ex left = target.left;
       ex right = target.right;
       if (target.instant) {
         // An equation between differentials at the instant t = u τ of the contact: forces
-        // shaped there, both sides divided by the differential of time.
-        GiNaC::exmap shaped;
+        // shaped there, a differential the model gives is its rate at that instant times dt, and
+        // both sides are divided by dt (an equation between rates: dS_v = v_v dt and
+        // F_v = dp_v / dt alike).
+        GiNaC::exmap shaped = rates;
         for (const ex& force : symbols_.forces()) {
           shaped[force] = force * contact_pulse(t / pulse_duration());
         }
-        left = shaped_outside_integrals(left, shaped).diff(GiNaC::ex_to<GiNaC::symbol>(dt));
-        right = shaped_outside_integrals(right, shaped).diff(GiNaC::ex_to<GiNaC::symbol>(dt));
+        left = GiNaC::normal(shaped_outside_integrals(left, shaped) / dt);
+        right = GiNaC::normal(shaped_outside_integrals(right, shaped) / dt);
       }
       if (!p.exact_solution.empty()) {
         left = left.subs(p.exact_solution);
@@ -687,7 +708,9 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
     }
     const bool instant =
         std::any_of(targets.begin(), targets.end(), [](const Target& x) { return x.instant; });
-    if (instant && tau) {
+    if (instant && tau && p.fixes_t && index_of(dt)) {
+      values[*tau] = values[*index_of(dt)];  // the model's instant t of its contact dt
+    } else if (instant && tau) {
       values[*tau] = random.uniform(0.5, 2.0);
       if (const auto ts = index_of(t)) {
         values[*ts] = random.uniform(0.02, 0.98) * values[*tau];

@@ -4,7 +4,9 @@
 // rk8pd), and what it gives: the path, the momentum, the angle, the work. Nothing here is one of
 // the paper's formulas: the velocity comes from integrating the force, the path from integrating
 // the velocity, the work from integrating force times the point's speed along the normal.
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "models/catalogue.hpp"
 #include "models/shapes.hpp"
@@ -19,6 +21,17 @@ using Eigen::Vector2d;
 // 25 points of each shape, in turn.
 std::size_t count_of(const Settings& s) {
   return std::max<std::size_t>(8, s.share(100));
+}
+
+// The states at the increasing times among t (inside the contact), dt / 2 (the triangle's kink)
+// and dt: the state at t and the one at dt.
+std::pair<std::vector<double>, std::vector<double>> at_instant_and_end(const num::OdeRhs& rhs,
+                                                                       std::vector<double> y0,
+                                                                       double t, double dt) {
+  const std::vector<double> times =
+      t < dt / 2 ? std::vector<double>{t, dt / 2, dt} : std::vector<double>{dt / 2, t, dt};
+  const auto states = num::integrate_to(rhs, std::move(y0), times, dt / 64);
+  return {states[t < dt / 2 ? 0 : 1], states.back()};
 }
 
 }  // namespace
@@ -49,13 +62,18 @@ std::vector<Point> pulses_on_a_body(Probe&, const Settings& s) {
       dy[1] = along * shape.f(t / dt);
     };
     const double before = p.dot(nv);
-    const auto end = num::integrate_to(rhs, {0.0, before}, {dt / 2, dt}, dt / 64).back();
+    const double t = r.uniform(0.05, 0.95) * dt;  // an instant of the contact
+    const auto [now, end] = at_instant_and_end(rhs, {0.0, before}, t, dt);
+    std::array<double, 2> rate{};
+    rhs(t, now.data(), rate.data());
     point.set("m", m).set("\\vec{p}", p).set("dt", dt).set("\\vec{n_v}", nv);
-    // At the contact's end t = dt: the path along n_v, the change of the momentum along n_v and
-    // of the kinetic energy of the motion along n_v; the velocity along n_v before.
-    point.set("t", dt).set("S_v", end[0]).set("\\mathrm{d}p_v", end[1] - before);
-    point.set("\\Delta E_{vt}", (end[1] * end[1] - before * before) / (2 * m));
+    // At the instant t: the path along n_v so far, and the rates of the path, the momentum and
+    // the velocity along n_v (their differentials per dt); v_v the velocity along n_v before.
+    point.set("t", t).set("S_v", now[0]).set("\\mathrm{d}S_v", rate[0]);
+    point.set("\\mathrm{d}p_v", rate[1]).set("\\mathrm{d}v_v", rate[1] / m);
     point.set("v_v", before / m);
+    // Over the whole contact: the change of the kinetic energy of the motion along n_v.
+    point.set("\\Delta E_{vt}", (end[1] * end[1] - before * before) / (2 * m));
     point.pulse = &shape;
     points.push_back(std::move(point));
   }
@@ -98,11 +116,18 @@ std::vector<Point> pulses_on_a_turning_body(Probe&, const Settings& s) {
       dy[1] = pair.dot(nv) * f * lever * y[0];
       dy[2] = y[0];
     };
-    const auto end = num::integrate_to(rhs, {L / I, 0.0, 0.0}, {dt / 2, dt}, dt / 64).back();
+    const double t = r.uniform(0.05, 0.95) * dt;  // an instant of the contact
+    const auto [now, end] = at_instant_and_end(rhs, {L / I, 0.0, 0.0}, t, dt);
+    std::array<double, 3> rate{};
+    rhs(t, now.data(), rate.data());
     p.set("I", I).set("L", L).set("dt", dt).set("\\vec{r_v}", rv).set("\\vec{n_v}", nv);
+    // Over the whole contact: the work on the turning.
     p.set("\\Delta E_{vr}", end[1]);
-    // At the contact's end t = dt: the angle turned; the rate of turning before.
-    p.set("t", dt).set("\\alpha", end[2]).set("\\omega", L / I);
+    // At the instant t: the angle turned so far, and the rates of the angle, the rate of turning
+    // and the angular momentum (their differentials per dt); omega the rate of turning before.
+    p.set("t", t).set("\\alpha", now[2]).set("\\omega", L / I);
+    p.set("\\mathrm{d}\\alpha", rate[2]).set("\\mathrm{d}\\omega", rate[0]);
+    p.set("\\mathrm{d}L", I * rate[0]);
     p.pulse = &shape;
     points.push_back(std::move(p));
   }
