@@ -592,8 +592,8 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
         for (const ex& force : symbols_.forces()) {
           shaped[force] = force * contact_pulse(t / pulse_duration());
         }
-        left = GiNaC::normal(shaped_outside_integrals(left, shaped) / dt);
-        right = GiNaC::normal(shaped_outside_integrals(right, shaped) / dt);
+        left = GiNaC::expand(shaped_outside_integrals(left, shaped) / dt);
+        right = GiNaC::expand(shaped_outside_integrals(right, shaped) / dt);
       }
       if (!p.exact_solution.empty()) {
         left = left.subs(p.exact_solution);
