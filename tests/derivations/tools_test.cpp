@@ -215,3 +215,31 @@ TEST_CASE("Paper files: a check's own let: ends with the check", "[tools]") {
   CHECK(report.results[2].check.id == "ended");
   CHECK(report.results[2].outcome.status != check::Status::verified);
 }
+
+// An equation between differentials on a model of pulses is read at the model's instant of the
+// contact, a differential the model gives as its rate there times dt: Newton's law and the
+// path's element hold on the point masses pushed by pulses, a factor 2 or an instant of the
+// checker's own does not.
+TEST_CASE("Paper files: differentials at a pulse model's instant are its rates", "[tools]") {
+  const std::string head =
+      "# Rates\n\narrow: p, F\nindex: i \\in \\{1, 2, 3\\}\nvector: n_v\n"
+      "differentials: S_v, p_v\nforces: \\vec{F_i}\n\nsection: 4.1\n\n"
+      "let: p_v = \\vec{p} \\cdot \\vec{n_v}\n\n";
+  const auto status = [&](const std::string& statement) {
+    const std::string text = head + "check: rate step\nquadrature: pulses of force on a body\n" +
+                             "given:\n\n$$" + statement + "$$\n";
+    const check::Report report = check::run({{"section4.md", text}}, {"", 200, 1});
+    REQUIRE(report.results.size() == 1);
+    return report.results[0].outcome.status;
+  };
+  const std::string element =
+      "\\frac{p_v + \\int_{0}^{t} \\sum_i \\vec{F_i} \\cdot \\vec{n_v} \\, \\mathrm{d}t'}{m} \\, "
+      "\\mathrm{d}t";
+  CHECK(status("\\frac{\\mathrm{d}p_v}{\\mathrm{d}t} = \\sum_i \\vec{F_i} \\cdot \\vec{n_v}") ==
+        check::Status::verified);
+  CHECK(status("\\frac{\\mathrm{d}p_v}{\\mathrm{d}t} = 2 \\sum_i \\vec{F_i} \\cdot \\vec{n_v}") !=
+        check::Status::verified);
+  CHECK(status("\\mathrm{d}S_v = " + element) == check::Status::verified);
+  // The element holds at the model's t only (its rate there); the velocity before is not it.
+  CHECK(status("\\mathrm{d}S_v = \\frac{p_v}{m} \\, \\mathrm{d}t") != check::Status::verified);
+}
