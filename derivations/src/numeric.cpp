@@ -2,11 +2,9 @@
 #include "numeric.hpp"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_min.h>
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -50,42 +48,6 @@ Eigen::Vector2d Random::unit_vector() {
 
 Eigen::Vector2d Random::vector(double scale) {
   return {uniform(-scale, scale), uniform(-scale, scale)};
-}
-
-double relative_error(double a, double b, double scale) {
-  if ((a == 0.0 || b == 0.0) && scale == 0.0 && a != b) {
-    throw std::invalid_argument("relative_error: comparing with zero needs a scale");
-  }
-  const double size = std::max({std::abs(a), std::abs(b), std::abs(scale)});
-  if (size == 0.0) {
-    return 0.0;
-  }
-  return std::abs(a - b) / size;
-}
-
-double integrate(const std::function<double(double)>& f, double a, double b, double scale) {
-  quiet_gsl();
-  constexpr std::size_t limit = 1000;
-  std::unique_ptr<gsl_integration_workspace, void (*)(gsl_integration_workspace*)> workspace(
-      gsl_integration_workspace_alloc(limit), gsl_integration_workspace_free);
-  gsl_function function;
-  function.function = [](double x, void* params) {
-    return (*static_cast<const std::function<double(double)>*>(params))(x);
-  };
-  function.params = const_cast<std::function<double(double)>*>(&f);
-  double result = 0.0;
-  double error = 0.0;
-  const double absolute = 1e-13 * std::abs(scale);
-  const int status = gsl_integration_qag(&function, a, b, absolute, 1e-12, limit, GSL_INTEG_GAUSS61,
-                                         workspace.get(), &result, &error);
-  // Rounding may stop qag short of its tolerance; its own error estimate says how far it got.
-  const bool close_enough =
-      status == GSL_EROUND && error <= 1e-10 * std::max(std::abs(result), std::abs(scale));
-  if (status != GSL_SUCCESS && !close_enough) {
-    throw std::runtime_error(std::string("quadrature failed: ") + gsl_strerror(status) +
-                             " (estimated error " + brief(error) + " of " + brief(result) + ")");
-  }
-  return result;
 }
 
 std::vector<std::vector<double>> integrate_to(const OdeRhs& rhs, std::vector<double> y0,
@@ -216,39 +178,6 @@ OdeResult integrate_until(const OdeRhs& rhs, std::vector<double> y0, const OdeEv
     }
   }
   throw std::runtime_error("ODE integration: the event did not occur before t = " + brief(t_max));
-}
-
-double minimise(const std::function<double(double)>& f, double lower, double upper, double guess) {
-  quiet_gsl();
-  std::unique_ptr<gsl_min_fminimizer, void (*)(gsl_min_fminimizer*)> minimizer(
-      gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent), gsl_min_fminimizer_free);
-  gsl_function function;
-  function.function = [](double x, void* params) {
-    return (*static_cast<const std::function<double(double)>*>(params))(x);
-  };
-  function.params = const_cast<std::function<double(double)>*>(&f);
-  int status = gsl_min_fminimizer_set(minimizer.get(), &function, guess, lower, upper);
-  if (status != GSL_SUCCESS) {
-    throw std::runtime_error(std::string("minimisation failed to start: ") + gsl_strerror(status));
-  }
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    status = gsl_min_fminimizer_iterate(minimizer.get());
-    if (status != GSL_SUCCESS) {
-      throw std::runtime_error(std::string("minimisation failed: ") + gsl_strerror(status));
-    }
-    const double a = gsl_min_fminimizer_x_lower(minimizer.get());
-    const double b = gsl_min_fminimizer_x_upper(minimizer.get());
-    if (gsl_min_test_interval(a, b, 0.0, 1e-10) == GSL_SUCCESS) {
-      break;
-    }
-  }
-  return gsl_min_fminimizer_x_minimum(minimizer.get());
-}
-
-std::string number(double value) {
-  std::array<char, 32> buffer{};
-  const auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return error == std::errc{} ? std::string(buffer.data(), end) : std::string("?");
 }
 
 std::string brief(double value, int digits) {

@@ -39,34 +39,6 @@ class Random {
   std::unique_ptr<gsl_rng, void (*)(gsl_rng*)> rng_;
 };
 
-/// |a - b| / max(|a|, |b|, scale): the relative disagreement of two values whose terms are of
-/// size `scale` (pass the sum of the magnitudes that cancel). Comparing with an exact zero needs
-/// a scale: without one, any non-zero value would be "100% off" (std::invalid_argument).
-double relative_error(double a, double b, double scale = 0.0);
-
-/// The worst relative error over a run of samples.
-struct Errors {
-  double worst = 0.0;
-  std::size_t samples = 0;
-  /// A value that is already a relative error.
-  void add_relative(double error) {
-    worst = std::max(worst, std::isnan(error) ? std::numeric_limits<double>::infinity() : error);
-    ++samples;
-  }
-  /// Two values that should agree, compared relative to their size or `scale`.
-  void add(double a, double b, double scale = 0.0) { add_relative(relative_error(a, b, scale)); }
-};
-
-/// How far "holds" and "fails" are apart for a numeric method.
-inline constexpr double holds_below = 1e-9;  ///< worst relative error of a statement that holds
-inline constexpr double fails_above = 1e-6;  ///< smallest worst error of one that does not
-
-/// ∫_a^b f with GSL's adaptive Gauss–Kronrod (qag, 61 points), to a relative tolerance of 1e-12
-/// or an absolute one of 1e-13 times `scale` (the size of the terms the integral is compared
-/// with: a small result of large cancelling contributions is judged against those). Throws
-/// std::runtime_error with GSL's message if it does not converge.
-double integrate(const std::function<double(double)>& f, double a, double b, double scale = 0.0);
-
 /// An ODE y' = f(t, y) integrated with GSL's rk8pd until an event function g(t, y) crosses
 /// from positive to zero (located by bisection to `event_tolerance` in t).
 struct OdeResult {
@@ -91,12 +63,6 @@ std::vector<std::vector<double>> integrate_to(const OdeRhs& rhs, std::vector<dou
 double gauss_legendre(const std::function<std::vector<double>(const std::vector<double>&)>& values,
                       double a, double b, int pieces);
 
-/// The minimiser of f in [lower, upper] by GSL's Brent method, started at `guess` (which must
-/// lie below both ends), to a relative interval of 1e-10.
-double minimise(const std::function<double(double)>& f, double lower, double upper, double guess);
-
-/// Shortest text that reads back as the same double.
-std::string number(double value);
 /// A few significant digits, for notes ("1.2e-08").
 std::string brief(double value, int digits = 3);
 

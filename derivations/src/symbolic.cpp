@@ -11,103 +11,6 @@ namespace impulse::derivations::sym {
 using GiNaC::ex_to;
 using GiNaC::is_a;
 
-ex simplify(const ex& e) {
-  return GiNaC::normal(GiNaC::expand(e));
-}
-
-bool holds(const Equation& equation) {
-  return simplify(equation.difference()).is_zero();
-}
-
-namespace {
-
-bool declared_nonzero(const ex& e, const Assumptions& assumptions) {
-  for (const ex& s : assumptions.nonzero) {
-    if (s.is_equal(e)) {
-      return true;
-    }
-  }
-  return false;
-}
-
-}  // namespace
-
-bool definitely_positive(const ex& e, const Assumptions& assumptions) {
-  if (is_a<GiNaC::numeric>(e)) {
-    return GiNaC::ex_to<GiNaC::numeric>(e).is_positive();
-  }
-  if (is_a<GiNaC::symbol>(e)) {
-    return e.info(GiNaC::info_flags::positive);
-  }
-  if (is_a<GiNaC::power>(e)) {
-    const ex base = e.op(0);
-    const ex exponent = e.op(1);
-    if (exponent.info(GiNaC::info_flags::even) && base.info(GiNaC::info_flags::real)) {
-      return definitely_nonzero(base, assumptions);
-    }
-    return definitely_positive(base, assumptions);
-  }
-  if (is_a<GiNaC::mul>(e) || is_a<GiNaC::add>(e)) {
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-      if (!definitely_positive(e.op(i), assumptions)) {
-        return false;
-      }
-    }
-    return e.nops() > 0;
-  }
-  return false;
-}
-
-bool definitely_nonzero(const ex& e, const Assumptions& assumptions) {
-  if (is_a<GiNaC::numeric>(e)) {
-    return !e.is_zero();
-  }
-  if (is_a<GiNaC::symbol>(e)) {
-    return e.info(GiNaC::info_flags::positive) || declared_nonzero(e, assumptions);
-  }
-  if (is_a<GiNaC::power>(e)) {
-    return definitely_nonzero(e.op(0), assumptions);
-  }
-  if (is_a<GiNaC::mul>(e)) {
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-      if (!definitely_nonzero(e.op(i), assumptions)) {
-        return false;
-      }
-    }
-    return true;
-  }
-  if (is_a<GiNaC::add>(e)) {
-    // A sum is non-zero here when all its terms are positive, or all negative.
-    return definitely_positive(e, assumptions) || definitely_positive(-e, assumptions) ||
-           definitely_positive(GiNaC::expand(-e), assumptions);
-  }
-  return false;
-}
-
-std::optional<ex> nonzero_multiple(const Equation& step, const Equation& previous,
-                                   const Assumptions& assumptions) {
-  const ex previous_difference = simplify(previous.difference());
-  const ex step_difference = simplify(step.difference());
-  if (previous_difference.is_zero()) {
-    return step_difference.is_zero() ? std::optional<ex>(1) : std::nullopt;
-  }
-  if (step_difference.is_zero()) {
-    return std::nullopt;
-  }
-  const ex ratio = GiNaC::normal(step_difference / previous_difference);
-  const ex parts = GiNaC::numer_denom(ratio);
-  const ex numerator = GiNaC::factor(parts.op(0));
-  const ex denominator = GiNaC::factor(parts.op(1));
-  if (definitely_nonzero(numerator, assumptions) && definitely_nonzero(denominator, assumptions)) {
-    return ratio;
-  }
-  return std::nullopt;
-}
-
-ex solve_for(const Equation& equation, const ex& unknown) {
-  return GiNaC::lsolve(equation.lhs == equation.rhs, unknown);
-}
-
 namespace {
 
 // ---- printing in an order that is the same in every run ------------------------------------
@@ -339,10 +242,6 @@ ex up_to_sign(const ex& e) {
     return sign_and_magnitude(terms_of(e).front()).first ? ex(-e) : e;
   }
   return print_signed(e, Style::latex).negative ? ex(-e) : e;
-}
-
-std::string latex(const Equation& equation) {
-  return latex(equation.lhs) + " = " + latex(equation.rhs);
 }
 
 double Compiled::operator()(std::span<const double> arguments) const {

@@ -14,43 +14,7 @@ namespace impulse::derivations::sym {
 
 using GiNaC::ex;
 
-/// An equation lhs = rhs as printed (GiNaC's relational would evaluate too eagerly).
-struct Equation {
-  ex lhs;
-  ex rhs;
-  [[nodiscard]] ex difference() const { return lhs - rhs; }
-  [[nodiscard]] Equation subs(const GiNaC::exmap& map) const {
-    return {lhs.subs(map), rhs.subs(map)};
-  }
-};
-
-/// What a derivation step may assume: symbols declared non-zero (possymbols are positive by
-/// their type, e.g. masses and moments of inertia).
-struct Assumptions {
-  std::vector<ex> nonzero;
-};
-
-/// Rational simplification to a canonical form; zero means zero.
-[[nodiscard]] ex simplify(const ex& e);
-
-/// The equation holds identically (its difference simplifies to zero).
-[[nodiscard]] bool holds(const Equation& equation);
-
-/// Whether @p e is non-zero for every value the assumptions allow: products and powers of
-/// non-zero factors, and sums whose terms are all positive (products of positive symbols, even
-/// powers of real non-zero symbols and positive numbers).
-[[nodiscard]] bool definitely_nonzero(const ex& e, const Assumptions& assumptions);
-[[nodiscard]] bool definitely_positive(const ex& e, const Assumptions& assumptions);
-
-/// If step.lhs - step.rhs = c (previous.lhs - previous.rhs) with c non-zero under the
-/// assumptions, returns c: the step follows from the previous line (and back).
-[[nodiscard]] std::optional<ex> nonzero_multiple(const Equation& step, const Equation& previous,
-                                                 const Assumptions& assumptions);
-
-/// Solves an equation linear in @p unknown.
-[[nodiscard]] ex solve_for(const Equation& equation, const ex& unknown);
-
-/// LaTeX of an expression or an equation, the terms of sums and the factors of products in the
+/// LaTeX of an expression, the terms of sums and the factors of products in the
 /// order of canonical() (the same in every run; GiNaC's own order is not).
 [[nodiscard]] std::string latex(const ex& e);
 /// The same as plain text: "2*p_1/m_1-F*dt".
@@ -59,7 +23,6 @@ struct Assumptions {
 /// e != 0, whose sign does not matter: "v_2' - v_2", never "-v_2' + v_2" in one run and the other
 /// in the next).
 [[nodiscard]] ex up_to_sign(const ex& e);
-[[nodiscard]] std::string latex(const Equation& equation);
 
 /// An expression compiled to a function of doubles: sums, products, powers and numbers only.
 class Compiled {

@@ -1,119 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The checker's tools: the rules from findings to a verdict, exact algebra, the compiled
-// expressions, the error measure.
+// The checker's tools: the compiled expressions, the ODE integrator, integrals over a pulse, and
+// the readings of a paper file they serve (a check's own let:, differentials at an instant).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 #include <random>
 
+#include "derivations/check.hpp"
 #include "file/time.hpp"
 #include "numeric.hpp"
 #include "symbolic.hpp"
-#include "verdict.hpp"
 
 namespace check = impulse::derivations;
 namespace sym = impulse::derivations::sym;
 namespace num = impulse::derivations::num;
-using check::Finding;
-using check::Method;
-using check::Status;
-
-namespace {
-Finding holds(Method m) {
-  return {m, true, std::nullopt, 1, {}, true};
-}
-Finding fails(Method m) {
-  return {m, false, std::nullopt, 1, {}, true};
-}
-Finding unsure(Method m) {
-  return {m, false, 1e-7, 1, {}, false};
-}
-}  // namespace
-
-TEST_CASE("Equations: verified, erratum or failed by the findings alone", "[derivations]") {
-  using check::EquationVerdict;
-  CHECK(check::judge(
-            EquationVerdict{{holds(Method::symbolic), holds(Method::numeric)}, {}, {}, {}, {}})
-            .status == Status::verified);
-  // An erratum needs every method to reject the print and to accept the correction.
-  CHECK(check::judge(EquationVerdict{{fails(Method::symbolic), fails(Method::numeric)},
-                                     {holds(Method::numeric)},
-                                     "x = 1",
-                                     "why",
-                                     {}})
-            .status == Status::erratum);
-  // Methods that disagree are a defect to look at, not a verdict.
-  CHECK(check::judge(EquationVerdict{{holds(Method::symbolic), fails(Method::numeric)},
-                                     {holds(Method::numeric)},
-                                     "x = 1",
-                                     "why",
-                                     {}})
-            .status == Status::failed);
-  // A correction that does not hold, or is missing, leaves the check failed.
-  CHECK(check::judge(
-            EquationVerdict{{fails(Method::numeric)}, {fails(Method::numeric)}, "x", "why", {}})
-            .status == Status::failed);
-  CHECK(check::judge(EquationVerdict{{fails(Method::numeric)}, {}, {}, {}, {}}).status ==
-        Status::failed);
-  // An error between "holds" and "fails" decides nothing.
-  CHECK(check::judge(EquationVerdict{{unsure(Method::numeric)}, {}, {}, {}, {}}).status ==
-        Status::failed);
-  // No findings at all verify nothing.
-  CHECK(check::judge(EquationVerdict{}).status == Status::failed);
-}
-
-TEST_CASE("Claims: a counterexample refutes unless a proof says otherwise", "[derivations]") {
-  using check::ClaimVerdict;
-  CHECK(check::judge(ClaimVerdict{{holds(Method::search)}, std::nullopt, {}, {}}).status ==
-        Status::verified);
-  CHECK(
-      check::judge(ClaimVerdict{{fails(Method::search), holds(Method::search)}, "x = 1", "why", {}})
-          .status == Status::refuted);
-  CHECK(check::judge(
-            ClaimVerdict{{fails(Method::search), holds(Method::symbolic)}, "x = 1", "why", {}})
-            .status == Status::failed);
-  // A counterexample no finding stands behind is not enough.
-  CHECK(check::judge(ClaimVerdict{{holds(Method::search)}, "x = 1", "why", {}}).status ==
-        Status::failed);
-}
-
-TEST_CASE("Numeric findings: thresholds, and nothing from no samples", "[derivations]") {
-  num::Errors none;
-  CHECK_FALSE(check::numeric(Method::numeric, none).conclusive);
-  num::Errors small;
-  small.add_relative(1e-12);
-  CHECK(check::numeric(Method::numeric, small).holds);
-  num::Errors large;
-  large.add_relative(0.5);
-  const Finding f = check::numeric(Method::numeric, large);
-  CHECK(f.conclusive);
-  CHECK_FALSE(f.holds);
-  num::Errors nan;
-  nan.add_relative(std::nan(""));
-  CHECK_FALSE(check::numeric(Method::numeric, nan).holds);
-  CHECK_FALSE(check::search(0, 0).conclusive);
-  CHECK(check::search(10, 0).holds);
-  CHECK_FALSE(check::search(10, 1).holds);
-}
-
-TEST_CASE("A step follows when it is a non-zero multiple of the line before", "[derivations]") {
-  const GiNaC::realsymbol x("x"), F("F");
-  const GiNaC::possymbol m("m");
-  const sym::Equation previous{x + 1, 3};  // x = 2
-  // Twice the equation, or divided by a positive mass: it follows.
-  CHECK(sym::nonzero_multiple({2 * x + 2, 6}, previous, {}));
-  CHECK(sym::nonzero_multiple({(x + 1) / m, 3 / m}, previous, {}));
-  // Multiplied by F, which may be zero, it follows only if F != 0 is assumed.
-  CHECK_FALSE(sym::nonzero_multiple({F * (x + 1), 3 * F}, previous, {}));
-  CHECK(sym::nonzero_multiple({F * (x + 1), 3 * F}, previous, {{F}}));
-  // Multiplied by 1 + m^2 (positive) it follows; by x - 2 (zero at the solution) it does not.
-  CHECK(sym::nonzero_multiple({(x + 1) * (1 + m * m), 3 * (1 + m * m)}, previous, {}));
-  CHECK_FALSE(sym::nonzero_multiple({(x + 1) * (x - 2), 3 * (x - 2)}, previous, {}));
-  // A different equation does not follow.
-  CHECK_FALSE(sym::nonzero_multiple({x, 3}, previous, {}));
-  CHECK(sym::holds({GiNaC::pow(x + 1, 2), x * x + 2 * x + 1}));
-  CHECK_FALSE(sym::holds({GiNaC::pow(x + 1, 2), x * x + 1}));
-}
 
 TEST_CASE("Compiled expressions agree with GiNaC's own evaluation", "[derivations]") {
   const GiNaC::realsymbol a("a"), b("b"), c("c");
@@ -144,19 +44,7 @@ TEST_CASE("Compiled expressions agree with GiNaC's own evaluation", "[derivation
   CHECK_THROWS_AS(f({1.0, 2.0}), std::invalid_argument);
 }
 
-TEST_CASE("Relative errors need a scale to compare with zero", "[derivations]") {
-  CHECK(num::relative_error(1.0, 1.0 + 1e-12) == Approx(1e-12).epsilon(1e-3));
-  CHECK(num::relative_error(1e-12, 0.0, 1.0) == Approx(1e-12));
-  CHECK(num::relative_error(0.0, 0.0) == 0.0);
-  CHECK_THROWS_AS(num::relative_error(1e-12, 0.0), std::invalid_argument);
-}
-
-TEST_CASE("Quadrature and minimisation against known answers", "[derivations]") {
-  // The integral of sin over [0, pi] is 2; the minimum of (x - 0.3)^2 + 1 is at 0.3.
-  CHECK(num::integrate([](double x) { return std::sin(x); }, 0, M_PI) ==
-        Approx(2.0).epsilon(1e-12));
-  CHECK(num::minimise([](double x) { return (x - 0.3) * (x - 0.3) + 1; }, 0, 1, 0.5) ==
-        Approx(0.3).epsilon(1e-6));
+TEST_CASE("An ODE integrated to an event against a known answer", "[derivations]") {
   // A harmonic oscillator x'' = -x from x = 0, x' = 1 leaves x > 0 at t = pi.
   const auto end = num::integrate_until(
       [](double, const double* y, double* dy) {
@@ -195,4 +83,50 @@ TEST_CASE("Integrals over a pulse: a bound variable hides a symbol of its name, 
   // A force shaped outside integrals only: the inner integral keeps its own shaping.
   const GiNaC::ex shaped = file::shaped_outside_integrals(F + inner, GiNaC::exmap{{F, F * pulse}});
   CHECK(shaped.is_equal(F * pulse + inner));
+}
+
+// A let: between a check's line and its statement is the check's own (section 5's s5.1-dalpha
+// defines its increments so): the check's equations keep it, the checks after it do not see it.
+TEST_CASE("Paper files: a check's own let: ends with the check", "[tools]") {
+  // The same step twice from the same premise: with the first check's own b = 2 a it follows,
+  // after that check b is a symbol of its own again.
+  const std::string text =
+      "# Own definitions\n\nsection: 4.1\n\n"
+      "check: base step\ngiven:\n\n$$c = 2 a$$\n\n"
+      "check: own step\nlet: b = 2 a\nfrom: base\n\n$$c = b$$\n\n"
+      "check: ended step\nfrom: base\n\n$$c = b$$\n";
+  const check::Report report = check::run({{"section4.md", text}}, {"", 10, 1});
+  REQUIRE(report.results.size() == 3);
+  CHECK(report.results[1].check.id == "own");
+  CHECK(report.results[1].outcome.status == check::Status::verified);
+  CHECK(report.results[2].check.id == "ended");
+  CHECK(report.results[2].outcome.status != check::Status::verified);
+}
+
+// An equation between differentials on a model of pulses is read at the model's instant of the
+// contact, a differential the model gives as its rate there times dt: Newton's law and the
+// path's element hold on the point masses pushed by pulses, a factor 2 or an instant of the
+// checker's own does not.
+TEST_CASE("Paper files: differentials at a pulse model's instant are its rates", "[tools]") {
+  const std::string head =
+      "# Rates\n\narrow: p, F\nindex: i \\in \\{1, 2, 3\\}\nvector: n_v\n"
+      "differentials: S_v, p_v\nforces: \\vec{F_i}\n\nsection: 4.1\n\n"
+      "let: p_v = \\vec{p} \\cdot \\vec{n_v}\n\n";
+  const auto status = [&](const std::string& statement) {
+    const std::string text = head + "check: rate step\nquadrature: pulses of force on a body\n" +
+                             "given:\n\n$$" + statement + "$$\n";
+    const check::Report report = check::run({{"section4.md", text}}, {"", 200, 1});
+    REQUIRE(report.results.size() == 1);
+    return report.results[0].outcome.status;
+  };
+  const std::string element =
+      "\\frac{p_v + \\int_{0}^{t} \\sum_i \\vec{F_i} \\cdot \\vec{n_v} \\, \\mathrm{d}t'}{m} \\, "
+      "\\mathrm{d}t";
+  CHECK(status("\\frac{\\mathrm{d}p_v}{\\mathrm{d}t} = \\sum_i \\vec{F_i} \\cdot \\vec{n_v}") ==
+        check::Status::verified);
+  CHECK(status("\\frac{\\mathrm{d}p_v}{\\mathrm{d}t} = 2 \\sum_i \\vec{F_i} \\cdot \\vec{n_v}") !=
+        check::Status::verified);
+  CHECK(status("\\mathrm{d}S_v = " + element) == check::Status::verified);
+  // The element holds at the model's t only (its rate there); the velocity before is not it.
+  CHECK(status("\\mathrm{d}S_v = \\frac{p_v}{m} \\, \\mathrm{d}t") != check::Status::verified);
 }

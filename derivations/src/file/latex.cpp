@@ -492,9 +492,14 @@ class Parser {
     Node n = make(NodeKind::integral, op.offset);
     std::optional<Node> lower;
     std::optional<Node> upper;
+    bool path = false;
     for (int k = 0; k < 2; ++k) {
-      if (is_char(peek(), '_') && !lower) {
+      if (is_char(peek(), '_') && !lower && !path) {
         const Token mark = take();
+        if (path_domain()) {
+          path = true;
+          continue;
+        }
         lower = script(depth + 1, mark);
       } else if (is_char(peek(), '^') && !upper) {
         const Token mark = take();
@@ -505,6 +510,13 @@ class Parser {
       throw error(peek(), "expected the integrand after \\int (ending in its differential, dt)");
     }
     n.children.push_back(term(depth + 1));
+    if (path) {
+      if (upper) {
+        throw error(op,
+                    "expected no upper limit on an integral along a path (\\int_{\\mathcal{A}})");
+      }
+      n.ops += 'p';
+    }
     if (lower) {
       n.children.push_back(std::move(*lower));
       n.ops += 'l';
@@ -515,6 +527,38 @@ class Parser {
     }
     n.end = last_end_;
     return n;
+  }
+
+  // After \int's '_': a path written as a calligraphic letter, \mathcal{A} or {\mathcal{A}}
+  // (the path a point travels during the contact), taken whole; false (nothing taken) otherwise.
+  bool path_domain() {
+    skip_spacing();
+    std::size_t at = position_;
+    const bool braced = is_char(tokens_[at], '{');
+    if (braced) {
+      ++at;
+      while (tokens_[at].kind == Tok::spacing) {
+        ++at;
+      }
+    }
+    if (!is_command(tokens_[at], "\\mathcal")) {
+      return false;
+    }
+    position_ = at;
+    const Token command = take();
+    if (!is_char(peek(), '{')) {
+      throw error(peek(), "expected {a letter} after \\mathcal");
+    }
+    const Token open = take();
+    if (peek().kind != Tok::letter) {
+      throw error(peek(), "expected one letter naming the path in \\mathcal{}");
+    }
+    take();
+    expect_char('}', open, "path after \\mathcal");
+    if (braced) {
+      expect_char('}', command, "limit of \\int");
+    }
+    return true;
   }
 
   ReadError error_at(std::size_t offset, const std::string& message) const {

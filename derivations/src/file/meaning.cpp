@@ -569,6 +569,11 @@ ex Symbols::integral_value(const Node& n, const std::function<Value(const Node&)
       differential = std::pair{symbol, info.name.primes};
     }
   }
+  if (!differential && n.ops.find('p') != std::string::npos) {
+    throw error(n.offset,
+                "expected the element of the path (\\mathrm{d}S) defined through dt by a let: "
+                "before an integral along a path");
+  }
   if (!differential) {
     throw error(n.offset, "expected the integrand to hold its differential (dt, or dt' for t')");
   }
@@ -586,6 +591,11 @@ ex Symbols::integral_value(const Node& n, const std::function<Value(const Node&)
   }
   const bool lower_written = n.ops.find('l') != std::string::npos;
   const bool upper_written = n.ops.find('u') != std::string::npos;
+  if (n.ops.find('p') != std::string::npos) {
+    // Along the path the point travels during the contact, \int_{\mathcal{A}} … dS_v: its
+    // element, once the definitions are in, holds dt; the path is travelled from 0 to dt.
+    return GiNaC::integral(variable, 0, scalar(SymbolName{"dt", "", 0, false}), coefficient);
+  }
   if (!lower_written) {
     throw error(n.offset,
                 "expected the limits of the integral: \\int_0^{dt} or \\int_{dt} (over the "

@@ -12,6 +12,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "file/latex.hpp"
@@ -135,6 +136,8 @@ class Symbols {
   /// The definitions in force, as substitutions of GiNaC symbols (fully substituted: a
   /// definition that uses an earlier one carries its value).
   [[nodiscard]] const GiNaC::exmap& substitutions() const { return substitutions_; }
+  /// Puts back definitions saved with substitutions() (a check's own let: ends with it).
+  void restore_substitutions(GiNaC::exmap saved) { substitutions_ = std::move(saved); }
   /// What a GiNaC symbol of this file stands for.
   [[nodiscard]] const SymbolInfo* info(const GiNaC::ex& symbol) const;
   /// The GiNaC symbol a scalar name stands for (a component of a vector when it is one), or 0

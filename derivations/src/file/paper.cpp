@@ -21,7 +21,6 @@
 #include "impulse/core/error.hpp"
 #include "models/model.hpp"
 #include "numeric.hpp"
-#include "sections.hpp"
 #include "symbolic.hpp"
 
 namespace impulse::derivations {
@@ -415,6 +414,19 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
                    [&](const ex& s) { return s.is_equal(pulse_duration()); }) == symbols.end()) {
     symbols.push_back(pulse_duration());
   }
+  // A model that shapes the force gives the contact's duration dt, the pulse's time scale, also
+  // to a check whose equations do not write it (a path at the contact's end, S_v = ∫_0^t …).
+  if (model->draws_the_rest && std::find_if(symbols.begin(), symbols.end(), [&](const ex& s) {
+                                 return s.is_equal(dt);
+                               }) == symbols.end()) {
+    symbols.push_back(dt);
+  }
+  // An instant's forces are shaped at t, written or not (F_v = dp_v / dt).
+  if (std::any_of(targets.begin(), targets.end(), [](const Target& x) { return x.instant; }) &&
+      std::find_if(symbols.begin(), symbols.end(), [&](const ex& s) { return s.is_equal(t); }) ==
+          symbols.end()) {
+    symbols.push_back(t);
+  }
   const auto index_of = [&](const ex& s) -> std::optional<std::size_t> {
     for (std::size_t i = 0; i < symbols.size(); ++i) {
       if (symbols[i].is_equal(s)) {
@@ -433,6 +445,7 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
     std::vector<std::pair<ex, TimedExpression>> shown;  // those solutions, for the report
     std::vector<std::size_t> solved;
     std::vector<bool> tested;  // per target
+    bool fixes_t = false;      // the point gives t: an instant's reading is at the model's t
     std::vector<TimedExpression> differences, scales;
     std::vector<std::vector<TimedExpression>> denominators;
     std::vector<TimedExpression> sides;  // claims: per relation, left then the others
@@ -581,18 +594,32 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
       return std::none_of(undetermined.begin(), undetermined.end(),
                           [&](std::size_t u) { return e.has(symbols[u]); });
     };
+    // The differentials the point gives, as rates: at an instant, dX is the value times dt.
+    GiNaC::exmap rates;
+    for (const models::Value& v : point.values) {
+      const std::vector<ex> named = symbols_of_name(v.symbol);
+      const SymbolInfo* info = symbols_.info(named[0]);
+      if (!v.vector && info != nullptr && info->name.differential) {
+        rates[named[0]] = named[0] * dt;
+      }
+    }
+    if (const auto ts = index_of(t)) {
+      p.fixes_t = known.contains(*ts);
+    }
     for (const Target& target : targets) {
       ex left = target.left;
       ex right = target.right;
       if (target.instant) {
         // An equation between differentials at the instant t = u τ of the contact: forces
-        // shaped there, both sides divided by the differential of time.
-        GiNaC::exmap shaped;
+        // shaped there, a differential the model gives is its rate at that instant times dt, and
+        // both sides are divided by dt (an equation between rates: dS_v = v_v dt and
+        // F_v = dp_v / dt alike).
+        GiNaC::exmap shaped = rates;
         for (const ex& force : symbols_.forces()) {
           shaped[force] = force * contact_pulse(t / pulse_duration());
         }
-        left = shaped_outside_integrals(left, shaped).diff(GiNaC::ex_to<GiNaC::symbol>(dt));
-        right = shaped_outside_integrals(right, shaped).diff(GiNaC::ex_to<GiNaC::symbol>(dt));
+        left = GiNaC::expand(shaped_outside_integrals(left, shaped) / dt);
+        right = GiNaC::expand(shaped_outside_integrals(right, shaped) / dt);
       }
       if (!p.exact_solution.empty()) {
         left = left.subs(p.exact_solution);
@@ -707,7 +734,9 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
     }
     const bool instant =
         std::any_of(targets.begin(), targets.end(), [](const Target& x) { return x.instant; });
-    if (instant && tau) {
+    if (instant && tau && p.fixes_t && index_of(dt)) {
+      values[*tau] = values[*index_of(dt)];  // the model's instant t of its contact dt
+    } else if (instant && tau) {
       values[*tau] = random.uniform(0.5, 2.0);
       if (const auto ts = index_of(t)) {
         values[*ts] = random.uniform(0.02, 0.98) * values[*tau];
@@ -1480,20 +1509,6 @@ void add(Report& report, Result result) {
   report.results.push_back(std::move(result));
 }
 
-// Section 5 is part file, part C++ (sections.hpp), and the files' checks come before the C++
-// ones: section 5's checks go last (the paper's last section), in the paper's order.
-template <typename T, typename Id>
-void in_paper_order(std::vector<T>& list, Id id) {
-  const std::vector<std::string>& order = section5_order();
-  const auto rank = [&](const T& x) {
-    return std::find(order.begin(), order.end(), id(x)) - order.begin();
-  };
-  const auto end = static_cast<std::ptrdiff_t>(order.size());
-  const auto fives =
-      std::stable_partition(list.begin(), list.end(), [&](const T& x) { return rank(x) == end; });
-  std::stable_sort(fives, list.end(), [&](const T& a, const T& b) { return rank(a) < rank(b); });
-}
-
 // The checks of some files, as their files state them.
 std::vector<Check> checks_of(const std::vector<PaperFile>& files) {
   std::vector<Check> checks;
@@ -1521,14 +1536,7 @@ std::vector<Check> beyond_checks() {
 }
 
 std::vector<Check> all_checks() {
-  std::vector<Check> checks = checks_of(paper_files());
-  for (auto* section : {section4_checks, section5_checks}) {
-    for (CodedCheck& c : section()) {
-      checks.push_back(std::move(c.check));
-    }
-  }
-  in_paper_order(checks, [](const Check& c) -> const std::string& { return c.id; });
-  return checks;
+  return checks_of(paper_files());
 }
 
 Report run(const std::vector<PaperFile>& files, const Options& options, std::string_view only) {
@@ -1566,23 +1574,6 @@ Report run(const std::vector<PaperFile>& files, const Options& options, std::str
 
 Report run(const Options& options) {
   Report report = run(paper_files(), options);
-  // Sections 4 and 5, not yet files: their C++ checks after the files' (the paper's order).
-  const auto start = std::chrono::steady_clock::now();
-  for (auto* section : {section4_checks, section5_checks}) {
-    for (CodedCheck& c : section()) {
-      if (!in_section(c.check.section, options.section)) {
-        continue;
-      }
-      const Context context{options.samples, check_seed(options.seed, c.check.id)};
-      const auto begin = std::chrono::steady_clock::now();
-      Outcome outcome = evaluate(c, context);
-      const std::chrono::duration<double> took = std::chrono::steady_clock::now() - begin;
-      add(report, {std::move(c.check), std::move(outcome), took.count()});
-    }
-  }
-  in_paper_order(report.results, [](const Result& r) -> const std::string& { return r.check.id; });
-  const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-  report.seconds += took.count();
   // Beyond the paper: the same engine on our own files, counted apart.
   Report beyond = run(beyond_files(), options);
   report.beyond = {std::move(beyond.results), beyond.summary, beyond.seconds};

@@ -400,6 +400,10 @@ void Reader::close_group() {
   }
   group_open_ = false;
   awaiting_ = Awaiting::nothing;
+  if (outer_definitions_) {
+    symbols_.restore_substitutions(std::move(*outer_definitions_));
+    outer_definitions_.reset();
+  }
 }
 
 void Reader::note_used(const Node& node) {
@@ -799,6 +803,9 @@ void Reader::let(const Directive& d) {
   }
   const SymbolName name =
       read_symbol_or_differential(source_, d.content_offset, name_text, limits_);
+  if (group_open_ && awaiting_ == Awaiting::statement && !outer_definitions_) {
+    outer_definitions_ = symbols_.substitutions();
+  }
   std::size_t start = equals + 1;
   while (start < d.content.size() && d.content[start] == ' ') {
     ++start;

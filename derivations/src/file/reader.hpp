@@ -133,6 +133,9 @@ class Reader {
   std::string section_;
   bool group_open_ = false;
   enum class Awaiting { nothing, statement, correction } awaiting_ = Awaiting::nothing;
+  // The definitions before a check's own let: (one between its check: line and its statement),
+  // put back when the check ends.
+  std::optional<GiNaC::exmap> outer_definitions_;
   bool statement_given_ = false;
   std::optional<std::size_t> evidence_;  // evidence: stands here, for the next block
   std::optional<std::size_t> test_;      // test: stands here, for the next block

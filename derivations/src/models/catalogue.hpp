@@ -39,8 +39,8 @@ std::vector<Point> two_rigid_bodies_one_elasticity(Probe&, const Settings&);
 std::vector<Point> point_cloud_struck_obliquely(Probe&, const Settings&);
 std::vector<Point> rod_slip_then_stick(Probe&, const Settings&);
 std::vector<Point> rods_striking_rough_floors(Probe&, const Settings&);
-// Section 5
-// pulses.cpp: pulses of force on a turning body.
+// pulses.cpp: pulses of force on a body (section 4) and on a turning body (section 5).
+std::vector<Point> pulses_on_a_body(Probe&, const Settings&);
 std::vector<Point> pulses_on_a_turning_body(Probe&, const Settings&);
 // library.cpp: the library's rigid body as a reference.
 std::vector<Point> library_rigid_body_hit_at_several_points(Probe&, const Settings&);
