@@ -705,6 +705,23 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
     return *last_prepared;
   };
 
+  // The symbols a claim's relations use.
+  std::vector<ex> relation_sides;
+  for (const auto* list : {hypotheses, conclusions}) {
+    for (const auto& row : list != nullptr ? *list : std::vector<std::vector<Compare>>{}) {
+      for (const Compare& c : row) {
+        relation_sides.push_back(c.left);
+        relation_sides.push_back(c.right);
+        relation_sides.insert(relation_sides.end(), c.members.begin(), c.members.end());
+      }
+    }
+  }
+  const std::vector<ex> in_relations = symbols_of(relation_sides);
+  const auto claimed = [&](const ex& s) {
+    return std::any_of(in_relations.begin(), in_relations.end(),
+                       [&](const ex& x) { return x.is_equal(s); });
+  };
+
   std::vector<double> values(symbols.size(), 0.0);
   for (const models::Point& point : points) {
     Prepared& p = prepare(point);
@@ -837,13 +854,18 @@ ModelFinding FileRun::run_model(const ModelUse& use, const std::vector<Target>& 
         }
         // What the equations before gave, by name (their own order follows GiNaC's hashes,
         // which change from run to run).
+        // Only those the claim's relations use: the others say nothing of the case.
         std::vector<std::string> solved;
         for (const std::size_t s : p.solved) {
-          solved.push_back(symbol_text(symbols_, symbols[s]) + " = " + shown_number(values[s]));
+          if (claimed(symbols[s])) {
+            solved.push_back(symbol_text(symbols_, symbols[s]) + " = " + shown_number(values[s]));
+          }
         }
         for (const auto& [u, solution] : p.shown) {
-          solved.push_back(symbol_text(symbols_, u) + " = " +
-                           shown_number(solution(values, nullptr)));
+          if (claimed(u)) {
+            solved.push_back(symbol_text(symbols_, u) + " = " +
+                             shown_number(solution(values, nullptr)));
+          }
         }
         std::sort(solved.begin(), solved.end());
         for (const std::string& s : solved) {

@@ -649,7 +649,11 @@ void Reader::read_block(const Block& block) {
       }
       tags_[*row.label] = last_links;
     }
-    previous_ = given ? block_premises_ : last_links;
+    // A test is what a check's models test, not a line of the derivation: what comes after
+    // does not follow from it.
+    if (role != Role::test) {
+      previous_ = given ? block_premises_ : last_links;
+    }
   }
   also_.reset();
   if (!group_open_) {
