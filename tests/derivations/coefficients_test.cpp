@@ -116,3 +116,26 @@ $$\vec{v_{vt}'} \cdot \vec{n_v} = \vec{v_{vo}'} \cdot \vec{n_v}$$
                           "explanation: they stick.");
   CHECK(lost.results[0].outcome.status == Status::refuted);
 }
+
+TEST_CASE("A test: display is what the models test, not a premise of what follows",
+          "[derivations][coefficients]") {
+  // E' = E is a test of the check above; the claim after it, with nothing of its own to go on,
+  // must not be proven from it.
+  const std::string text = preamble + R"(check: s-e step
+model: point masses in scenes, the elastic coefficients summed
+given:
+
+$$a_{vi(elastic)} = \frac{\vec{n_i} \cdot \vec{n_v}}{m} \\ b_{v(elastic)} = \frac{2\vec{p} \cdot \vec{n_v}}{m}$$
+
+test:
+
+$$E' = E$$
+
+claim: c
+
+$$E' = E$$
+)";
+  const auto report = check::run({{"test-premise.md", text}}, {"", 200, 3}, "c");
+  REQUIRE(report.results.size() == 1);
+  CHECK(report.results[0].outcome.status != Status::verified);
+}
