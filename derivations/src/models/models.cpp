@@ -5,6 +5,116 @@
 
 namespace impulse::derivations::models {
 
+namespace {
+
+// The scene models of sections 4 and 5 (scenes.cpp): what they are and the values they give.
+constexpr std::string_view two_bodies_law =
+    "Two point masses (masses 1e-3 to 1e3, any momenta) touching at one to three points, the "
+    "normals random; their impulses by the law of restitution (the contact Jacobian J, A = J M^-1 "
+    "J^T, B = J (e v), the minimum-norm solution), elasticity 2 or 1 as named. A point per contact "
+    "v, seen from the first body: its impulses F_k (mean forces over dt; a slot without a contact "
+    "has none) and outward normals n_k, the impulse it receives at v, the velocities before and "
+    "after, the work of the pair's impulses at v on either body (forces constant over the "
+    "contact), the kinetic energy before and after; and every body's block a_{Bqs}, b_{Bq} (B its "
+    "number) of the coefficients the file defines (its (4.5) or (4.8)).";
+constexpr std::string_view scenes_law =
+    "Four point masses (the fourth static one time in four): the first touches the second at one "
+    "to three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
+    "5), the second the third at one (6); impulses and points as for two point masses.";
+constexpr std::string_view scenes_summed =
+    "The scenes of four point masses, their impulses from the file's own coefficients: each "
+    "body's block of its a_{vi(elastic)} and b_{v(elastic)} (or inelastic, as named) at its own "
+    "contacts and normals, the blocks added, the system solved (minimum-norm). A point per "
+    "contact of the scene, seen from its first body: the velocities after, the kinetic energy of "
+    "the scene before and after.";
+constexpr std::string_view two_rigid_law =
+    "Two rigid bodies (radii of gyration fitted to their arms) touching at one to three points, as "
+    "the two point masses are, with their arms r_k and r_v, the turning part of a point's "
+    "velocity v_vr and the work on the turning Delta E_vr.";
+constexpr std::string_view rigid_scenes_summed =
+    "Four rigid bodies (the fourth static one time in four) touching as the point masses do, their "
+    "impulses from the file's a_{vk(elastic)} and b_{v(elastic)} (or inelastic, as named), summed "
+    "and solved; a point per contact of the scene, seen from its first body.";
+constexpr std::string_view rigid_scenes_elasticity =
+    "As the rigid bodies with the inelastic coefficients summed, b_{v(inelastic)} times an "
+    "elasticity: 1, 2 or between, drawn in turn.";
+const std::vector<std::string_view> by_the_law{"m",
+                                               "\\vec{p}",
+                                               "m_o",
+                                               "\\vec{p_o}",
+                                               "dt",
+                                               "F_k",
+                                               "\\vec{n_k}",
+                                               "\\vec{F_k}",
+                                               "\\vec{n_v}",
+                                               "F_v",
+                                               "\\vec{F_v}",
+                                               "\\vec{v_{vt}}",
+                                               "\\vec{v_{vt}'}",
+                                               "\\vec{v_{vo}}",
+                                               "\\vec{v_{vo}'}",
+                                               "\\Delta E_{vt}",
+                                               "\\Delta E_{vo}",
+                                               "E",
+                                               "E'",
+                                               "a_{Bqs}",
+                                               "b_{Bq}"};
+const std::vector<std::string_view> rigid_by_the_law{"m",
+                                                     "I",
+                                                     "\\vec{p}",
+                                                     "L",
+                                                     "m_o",
+                                                     "I_o",
+                                                     "\\vec{p_o}",
+                                                     "L_o",
+                                                     "dt",
+                                                     "F_k",
+                                                     "\\vec{n_k}",
+                                                     "\\vec{r_k}",
+                                                     "\\vec{F_k}",
+                                                     "\\vec{n_v}",
+                                                     "\\vec{r_v}",
+                                                     "F_v",
+                                                     "\\vec{F_v}",
+                                                     "\\vec{v_{vt}}",
+                                                     "\\vec{v_{vr}}",
+                                                     "\\vec{v_{vt}'}",
+                                                     "\\vec{v_{vr}'}",
+                                                     "\\vec{v_{vo}}",
+                                                     "\\vec{v_{vo}'}",
+                                                     "\\Delta E_{vt}",
+                                                     "\\Delta E_{vr}",
+                                                     "\\Delta E_{vo}",
+                                                     "E",
+                                                     "E'"};
+const std::vector<std::string_view> summed{
+    "m", "\\vec{p}", "\\vec{n_v}", "\\vec{v_{vt}'}", "\\vec{v_{vo}'}", "E", "E'"};
+const std::vector<std::string_view> rigid_summed{"m",
+                                                 "I",
+                                                 "\\vec{p}",
+                                                 "L",
+                                                 "\\vec{n_v}",
+                                                 "\\vec{r_v}",
+                                                 "\\vec{v_{vt}'}",
+                                                 "\\vec{v_{vr}'}",
+                                                 "\\vec{v_{vo}'}",
+                                                 "E",
+                                                 "E'"};
+const std::vector<std::string_view> rigid_summed_elasticity{"m",
+                                                            "I",
+                                                            "\\vec{p}",
+                                                            "L",
+                                                            "\\vec{n_v}",
+                                                            "\\vec{r_v}",
+                                                            "\\vec{v_{vt}'}",
+                                                            "\\vec{v_{vr}'}",
+                                                            "\\vec{v_{vo}'}",
+                                                            "E",
+                                                            "E'",
+                                                            "\\mathit{elasticity}"};
+
+}  // namespace
+
 const std::vector<Model>& all() {
   static const std::vector<Model> table{
       {"ode",
@@ -305,286 +415,29 @@ const std::vector<Model>& all() {
        1e-6,
        false,
        library_rigid_body_hit_at_several_points},
-
-      {"numeric",
-       "two point masses at three contacts, elastic",
-       "Two point masses (masses 1e-3 to 1e3, any momenta) touching at three points, the normals "
-       "random. The impulses by the law of restitution (the contact Jacobian J, A = J M^-1 J^T, B "
-       "= J (e v), the minimum-norm solution), elasticity 2. A point per contact v of the pair, "
-       "seen from the first body: its impulses F_k (mean forces over dt), its outward normals n_k, "
-       "the velocities after, the work of the pair's impulses at v on either body (forces constant "
-       "over the contact), the kinetic energy of the scene before and after; and every body's "
-       "block a_{Bvi}, b_{Bv} (B its number) of the coefficients the file defines.",
-       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
-        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
-        "E", "E'", "a_{Bvi}", "b_{Bv}"},
-       1e-8,
-       1e-6,
-       false,
-       two_point_masses_elastic},
-      {"numeric",
-       "two point masses at three contacts, inelastic",
-       "Two point masses (masses 1e-3 to 1e3, any momenta) touching at three points, the normals "
-       "random. The impulses by the law of restitution (the contact Jacobian J, A = J M^-1 J^T, B "
-       "= J (e v), the minimum-norm solution), elasticity 1. A point per contact v of the pair, "
-       "seen from the first body: its impulses F_k (mean forces over dt), its outward normals n_k, "
-       "the velocities after, the work of the pair's impulses at v on either body (forces constant "
-       "over the contact), the kinetic energy of the scene before and after; and every body's "
-       "block a_{Bvi}, b_{Bv} (B its number) of the coefficients the file defines.",
-       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
-        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
-        "E", "E'", "a_{Bvi}", "b_{Bv}"},
-       1e-8,
-       1e-6,
-       false,
-       two_point_masses_inelastic},
-      {"numeric",
-       "point masses in scenes, elastic",
-       "Four point masses (the fourth static one time in four): the first touches the second at "
-       "three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
-       "5), the second the third at one. The impulses by the law of restitution (the contact "
-       "Jacobian J, A = J M^-1 J^T, B = J (e v), the minimum-norm solution), elasticity 2. A point "
-       "per contact v of the pair, seen from the first body: its impulses F_k (mean forces over "
-       "dt), its outward normals n_k, the velocities after, the work of the pair's impulses at v "
-       "on either body (forces constant over the contact), the kinetic energy of the scene before "
-       "and after; and every body's block a_{Bvi}, b_{Bv} (B its number) of the coefficients the "
-       "file defines.",
-       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
-        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
-        "E", "E'", "a_{Bvi}", "b_{Bv}"},
-       1e-8,
-       1e-6,
-       false,
+      // Sections 4 and 5 (scenes.cpp)
+      {"numeric", "two point masses at one to three contacts, elastic", two_bodies_law, by_the_law,
+       1e-8, 1e-6, false, two_point_masses_elastic},
+      {"numeric", "two point masses at one to three contacts, inelastic", two_bodies_law,
+       by_the_law, 1e-8, 1e-6, false, two_point_masses_inelastic},
+      {"numeric", "point masses in scenes, elastic", scenes_law, by_the_law, 1e-8, 1e-6, false,
        point_masses_in_scenes_elastic},
-      {"numeric",
-       "point masses in scenes, inelastic",
-       "Four point masses (the fourth static one time in four): the first touches the second at "
-       "three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
-       "5), the second the third at one. The impulses by the law of restitution (the contact "
-       "Jacobian J, A = J M^-1 J^T, B = J (e v), the minimum-norm solution), elasticity 1. A point "
-       "per contact v of the pair, seen from the first body: its impulses F_k (mean forces over "
-       "dt), its outward normals n_k, the velocities after, the work of the pair's impulses at v "
-       "on either body (forces constant over the contact), the kinetic energy of the scene before "
-       "and after; and every body's block a_{Bvi}, b_{Bv} (B its number) of the coefficients the "
-       "file defines.",
-       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
-        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
-        "E", "E'", "a_{Bvi}", "b_{Bv}"},
-       1e-8,
-       1e-6,
-       false,
+      {"numeric", "point masses in scenes, inelastic", scenes_law, by_the_law, 1e-8, 1e-6, false,
        point_masses_in_scenes_inelastic},
-      {"numeric",
-       "point masses in scenes, the elastic coefficients summed",
-       "Four point masses (the fourth static one time in four): the first touches the second at "
-       "three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
-       "5), the second the third at one. The impulses from the file's own coefficients: each "
-       "body's block of a_{vi}, b_v at its contacts (its outward normals), the blocks added over "
-       "the contacts, the system solved (minimum-norm). The file's a_{vi(elastic)} and "
-       "b_{v(elastic)}. A point per contact v of the pair, seen from the first body, as in the "
-       "scenes of two point masses (no blocks).",
-       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
-        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
-        "E", "E'"},
-       1e-8,
-       1e-6,
-       false,
-       point_masses_summed_elastic},
-      {"numeric",
-       "point masses in scenes, the inelastic coefficients summed",
-       "Four point masses (the fourth static one time in four): the first touches the second at "
-       "three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
-       "5), the second the third at one. The impulses from the file's own coefficients: each "
-       "body's block of a_{vi}, b_v at its contacts (its outward normals), the blocks added over "
-       "the contacts, the system solved (minimum-norm). The file's a_{vi(inelastic)} and "
-       "b_{v(inelastic)}. A point per contact v of the pair, seen from the first body, as in the "
-       "scenes of two point masses (no blocks).",
-       {"m", "\\vec{p}", "m_o", "\\vec{p_o}", "dt", "F_k", "\\vec{n_k}", "\\vec{F_k}", "\\vec{n_v}",
-        "\\vec{v_{vt}'}", "\\vec{v_{vo}}", "\\vec{v_{vo}'}", "\\Delta E_{vt}", "\\Delta E_{vo}",
-        "E", "E'"},
-       1e-8,
-       1e-6,
-       false,
-       point_masses_summed_inelastic},
-      {"numeric",
-       "two rigid bodies at three contacts, elastic",
-       "Two rigid bodies (radii of gyration fitted to their arms) touching at three points. The "
-       "impulses by the law of restitution (the contact Jacobian J, A = J M^-1 J^T, B = J (e v), "
-       "the minimum-norm solution), elasticity 2. A point per contact v of the pair, seen from the "
-       "first body, with its arms r_k and r_v, the turning part of its point's velocity v'_vr and "
-       "the work on its turning Delta E_vr.",
-       {"m",
-        "I",
-        "\\vec{p}",
-        "L",
-        "m_o",
-        "I_o",
-        "\\vec{p_o}",
-        "L_o",
-        "dt",
-        "F_k",
-        "\\vec{n_k}",
-        "\\vec{r_k}",
-        "\\vec{F_k}",
-        "\\vec{n_v}",
-        "\\vec{r_v}",
-        "\\vec{v_{vt}'}",
-        "\\vec{v_{vr}'}",
-        "\\vec{v_{vo}}",
-        "\\vec{v_{vo}'}",
-        "\\Delta E_{vt}",
-        "\\Delta E_{vr}",
-        "\\Delta E_{vo}",
-        "E",
-        "E'"},
-       1e-8,
-       1e-6,
-       false,
-       two_rigid_bodies_at_three_contacts_elastic},
-      {"numeric",
-       "two rigid bodies at three contacts, inelastic",
-       "Two rigid bodies (radii of gyration fitted to their arms) touching at three points. The "
-       "impulses by the law of restitution (the contact Jacobian J, A = J M^-1 J^T, B = J (e v), "
-       "the minimum-norm solution), elasticity 1. A point per contact v of the pair, seen from the "
-       "first body, with its arms r_k and r_v, the turning part of its point's velocity v'_vr and "
-       "the work on its turning Delta E_vr.",
-       {"m",
-        "I",
-        "\\vec{p}",
-        "L",
-        "m_o",
-        "I_o",
-        "\\vec{p_o}",
-        "L_o",
-        "dt",
-        "F_k",
-        "\\vec{n_k}",
-        "\\vec{r_k}",
-        "\\vec{F_k}",
-        "\\vec{n_v}",
-        "\\vec{r_v}",
-        "\\vec{v_{vt}'}",
-        "\\vec{v_{vr}'}",
-        "\\vec{v_{vo}}",
-        "\\vec{v_{vo}'}",
-        "\\Delta E_{vt}",
-        "\\Delta E_{vr}",
-        "\\Delta E_{vo}",
-        "E",
-        "E'"},
-       1e-8,
-       1e-6,
-       false,
-       two_rigid_bodies_at_three_contacts_inelastic},
-      {"numeric",
-       "rigid bodies in scenes, the elastic coefficients summed",
-       "Four rigid bodies (the fourth static one time in four), touching as the scenes of point "
-       "masses do. The impulses from the file's own coefficients: each body's block of a_{vi}, b_v "
-       "at its contacts (its outward normals), the blocks added over the contacts, the system "
-       "solved (minimum-norm). The file's a_{vk(elastic)} and b_{v(elastic)}. A point per contact "
-       "v of the pair, seen from the first body, with its arms r_k and r_v, the turning part of "
-       "its point's velocity v'_vr and the work on its turning Delta E_vr.",
-       {"m",
-        "I",
-        "\\vec{p}",
-        "L",
-        "m_o",
-        "I_o",
-        "\\vec{p_o}",
-        "L_o",
-        "dt",
-        "F_k",
-        "\\vec{n_k}",
-        "\\vec{r_k}",
-        "\\vec{F_k}",
-        "\\vec{n_v}",
-        "\\vec{r_v}",
-        "\\vec{v_{vt}'}",
-        "\\vec{v_{vr}'}",
-        "\\vec{v_{vo}}",
-        "\\vec{v_{vo}'}",
-        "\\Delta E_{vt}",
-        "\\Delta E_{vr}",
-        "\\Delta E_{vo}",
-        "E",
-        "E'"},
-       1e-8,
-       1e-6,
-       false,
-       rigid_bodies_summed_elastic},
-      {"numeric",
-       "rigid bodies in scenes, the inelastic coefficients summed",
-       "Four rigid bodies (the fourth static one time in four), touching as the scenes of point "
-       "masses do. The impulses from the file's own coefficients: each body's block of a_{vi}, b_v "
-       "at its contacts (its outward normals), the blocks added over the contacts, the system "
-       "solved (minimum-norm). The file's a_{vk(inelastic)} and b_{v(inelastic)}. A point per "
-       "contact v of the pair, seen from the first body, with its arms r_k and r_v, the turning "
-       "part of its point's velocity v'_vr and the work on its turning Delta E_vr.",
-       {"m",
-        "I",
-        "\\vec{p}",
-        "L",
-        "m_o",
-        "I_o",
-        "\\vec{p_o}",
-        "L_o",
-        "dt",
-        "F_k",
-        "\\vec{n_k}",
-        "\\vec{r_k}",
-        "\\vec{F_k}",
-        "\\vec{n_v}",
-        "\\vec{r_v}",
-        "\\vec{v_{vt}'}",
-        "\\vec{v_{vr}'}",
-        "\\vec{v_{vo}}",
-        "\\vec{v_{vo}'}",
-        "\\Delta E_{vt}",
-        "\\Delta E_{vr}",
-        "\\Delta E_{vo}",
-        "E",
-        "E'"},
-       1e-8,
-       1e-6,
-       false,
-       rigid_bodies_summed_inelastic},
-      {"numeric",
-       "rigid bodies in scenes, elasticity times the inelastic coefficients",
-       "Four rigid bodies (the fourth static one time in four), touching as the scenes of point "
-       "masses do. The impulses from the file's own coefficients: each body's block of a_{vi}, b_v "
-       "at its contacts (its outward normals), the blocks added over the contacts, the system "
-       "solved (minimum-norm). The file's a_{vk(inelastic)}, and b_{v(inelastic)} times an "
-       "elasticity: 1, 2 or between, drawn in turn. A point per contact v of the pair, seen from "
-       "the first body, with its arms r_k and r_v, the turning part of its point's velocity v'_vr "
-       "and the work on its turning Delta E_vr.",
-       {"m",
-        "I",
-        "\\vec{p}",
-        "L",
-        "m_o",
-        "I_o",
-        "\\vec{p_o}",
-        "L_o",
-        "dt",
-        "F_k",
-        "\\vec{n_k}",
-        "\\vec{r_k}",
-        "\\vec{F_k}",
-        "\\vec{n_v}",
-        "\\vec{r_v}",
-        "\\vec{v_{vt}'}",
-        "\\vec{v_{vr}'}",
-        "\\vec{v_{vo}}",
-        "\\vec{v_{vo}'}",
-        "\\Delta E_{vt}",
-        "\\Delta E_{vr}",
-        "\\Delta E_{vo}",
-        "E",
-        "E'",
-        "\\mathit{elasticity}"},
-       1e-8,
-       1e-6,
-       false,
+      {"numeric", "point masses in scenes, the elastic coefficients summed", scenes_summed, summed,
+       1e-8, 1e-6, false, point_masses_summed_elastic},
+      {"numeric", "point masses in scenes, the inelastic coefficients summed", scenes_summed,
+       summed, 1e-8, 1e-6, false, point_masses_summed_inelastic},
+      {"numeric", "two rigid bodies at one to three contacts, elastic", two_rigid_law,
+       rigid_by_the_law, 1e-8, 1e-6, false, two_rigid_bodies_at_three_contacts_elastic},
+      {"numeric", "two rigid bodies at one to three contacts, inelastic", two_rigid_law,
+       rigid_by_the_law, 1e-8, 1e-6, false, two_rigid_bodies_at_three_contacts_inelastic},
+      {"numeric", "rigid bodies in scenes, the elastic coefficients summed", rigid_scenes_summed,
+       rigid_summed, 1e-8, 1e-6, false, rigid_bodies_summed_elastic},
+      {"numeric", "rigid bodies in scenes, the inelastic coefficients summed", rigid_scenes_summed,
+       rigid_summed, 1e-8, 1e-6, false, rigid_bodies_summed_inelastic},
+      {"numeric", "rigid bodies in scenes, elasticity times the inelastic coefficients",
+       rigid_scenes_elasticity, rigid_summed_elasticity, 1e-8, 1e-6, false,
        rigid_bodies_summed_any_elasticity},
       {"search",
        "point masses in scenes, an elasticity each",
