@@ -8,6 +8,7 @@
 // 5 (with further bodies, the j), the bodies' state, the velocities after, the work the impulses do
 // at contact v, the kinetic energy of the scene before and after; and, for the checks of the
 // summed blocks, each body's block as numbers.
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -59,9 +60,22 @@ Drawn draw_scene(num::Random& r, const Family& f) {
     }
     s.bodies.push_back(b);
   }
+  // Two contacts of one pair have normals at least 6 degrees apart: nearly parallel ones make the
+  // system nearly singular, and its solution then rounding (every point of such a scene would
+  // measure the solver, not the statement).
   const auto touch = [&](std::size_t a, std::size_t b) {
+    Vector2d n = r.unit_vector();
+    const auto too_close = [&](const Vector2d& m) {
+      return std::any_of(s.contacts.begin(), s.contacts.end(), [&](const many::Contact& c) {
+        return ((c.a == a && c.b == b) || (c.a == b && c.b == a)) &&
+               std::abs(many::cross(c.n, m)) < 0.1;
+      });
+    };
+    while (too_close(n)) {
+      n = r.unit_vector();
+    }
     d.slots.emplace_back(s.contacts.size());
-    s.contacts.push_back({a, b, r.unit_vector(), r.vector(2)});
+    s.contacts.push_back({a, b, n, r.vector(2)});
   };
   const int pair = r.integer(1, 3);
   for (int v = 0; v < 3; ++v) {
@@ -190,8 +204,18 @@ std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Fa
       const int which = r.integer(0, 2);
       e = which == 0 ? 1.0 : which == 1 ? 2.0 : r.uniform(1.0, 2.0);
     }
-    // The impulses: the file's blocks summed, or the law of restitution.
-    VectorXd F;
+    // The law of restitution's system. A scene where it is ill-conditioned (impulses that
+    // push against each other, 1e4 times larger than the speeds call for: nearly parallel
+    // normals between bodies of very different masses) is left out, as rounding would decide
+    // there, not the file's statements.
+    const many::Model md = many::model(s);
+    const MatrixXd A = md.A();
+    const VectorXd B = md.J * (e * md.velocity);
+    VectorXd F = many::solve(A, B);
+    if (A.norm() * F.norm() > 1e4 * B.norm()) {
+      continue;
+    }
+    // The impulses: the file's blocks summed, or the law's.
     const Coefficients& k = f.elasticity == 0 || e == 1 ? inelastic : elastic;
     if (f.from_file) {
       const auto N = static_cast<Eigen::Index>(s.contacts.size());
@@ -208,9 +232,6 @@ std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Fa
         continue;  // the file does not define the coefficients: nothing to test with
       }
       F = many::solve(sum.A, sum.B);
-    } else {
-      const many::Model md = many::model(s);
-      F = many::solve(md.A(), md.J * (e * md.velocity));
     }
     const many::Scene after = many::after(s, F);
     if (f.from_file) {
@@ -264,9 +285,14 @@ std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Fa
       }
     }
     if (f.blocks) {
-      // Every body's block over the slots (zero where a slot has no contact).
+      // Every body's block over the slots (zero where a slot has no contact), and the blocks
+      // added.
+      const auto N = static_cast<Eigen::Index>(s.contacts.size());
+      many::System sum{MatrixXd::Zero(N, N), VectorXd::Zero(N)};
       for (std::size_t body = 0; body < s.bodies.size(); ++body) {
         const many::System b = block(s, body, k);
+        sum.A += b.A;
+        sum.B += b.B;
         const std::string name = std::to_string(body + 1);
         for (std::size_t v = 0; v < drawn.slots.size(); ++v) {
           const auto cv = drawn.slots[v];
@@ -285,6 +311,15 @@ std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Fa
       if (f.others) {
         common.set("F_6", F(static_cast<Eigen::Index>(*drawn.slots[5])) / dt);
       }
+      // The summed system solved: its impulses G_q over dt, slot by slot (NaN when the file
+      // does not define the coefficients), beside the law's motion p', p_o'.
+      const bool defined = sum.A.allFinite() && sum.B.allFinite();
+      const VectorXd G = defined ? many::solve(sum.A, sum.B) : VectorXd::Constant(N, std::nan(""));
+      for (std::size_t q = 0; q < drawn.slots.size(); ++q) {
+        const auto c = drawn.slots[q];
+        common.set(numbered("G_", q + 1, ""), c ? G(static_cast<Eigen::Index>(*c)) / dt : 0.0);
+      }
+      common.set("\\vec{p'}", after.bodies[0].p).set("\\vec{p_o'}", after.bodies[1].p);
     }
     for (std::size_t v = 0; v < 3; ++v) {
       if (!drawn.slots[v]) {
@@ -370,7 +405,7 @@ std::vector<Point> point_masses_an_elasticity_each(Probe& probe, const Settings&
   const Coefficients inelastic = coefficients(probe, {false, true, 1, true, false});
   std::vector<Point> points;
   for (std::size_t count = 0; count < settings.share(20); ++count) {
-    const many::Scene s = draw_scene(r, {false, true, 1, true, false}).scene;
+    const many::Scene s = draw_scene(r, {false, true, 1, true, false}).scene;  // any conditioning
     const auto N = static_cast<Eigen::Index>(s.contacts.size());
     many::System sum{MatrixXd::Zero(N, N), VectorXd::Zero(N)};
     Point p;
