@@ -10,13 +10,16 @@ namespace {
 // The scene models of sections 4 and 5 (scenes.cpp): what they are and the values they give.
 constexpr std::string_view two_bodies_law =
     "Two point masses (masses 1e-3 to 1e3, any momenta) touching at one to three points, the "
-    "normals random; their impulses by the law of restitution (the contact Jacobian J, A = J M^-1 "
+    "normals of the pair at least 6 degrees apart; their impulses by the law of restitution (the "
+    "contact Jacobian J, A = J M^-1 "
     "J^T, B = J (e v), the minimum-norm solution), elasticity 2 or 1 as named. A point per contact "
     "v, seen from the first body: its impulses F_k (mean forces over dt; a slot without a contact "
     "has none) and outward normals n_k, the impulse it receives at v, the velocities before and "
     "after, the work of the pair's impulses at v on either body (forces constant over the "
     "contact), the kinetic energy before and after; and every body's block a_{Bqs}, b_{Bq} (B its "
-    "number) of the coefficients the file defines (its (4.5) or (4.8)).";
+    "number) of the coefficients the file defines (its (4.5) or (4.8)), with the impulses G_q "
+    "dt of their sum solved, and the law's momenta after, p' and p_o'. A scene whose system is "
+    "ill-conditioned (impulses 1e4 times what the speeds call for) is left out.";
 constexpr std::string_view scenes_law =
     "Four point masses (the fourth static one time in four): the first touches the second at one "
     "to three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
