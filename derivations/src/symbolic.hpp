@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Exact algebra for the checks (GiNaC), and a compiler from an expression to a fast double
-// function so that the numeric methods evaluate the very transcription the symbolic ones check.
+// Printers of GiNaC expressions that give the same text in every run, and a compiler from an
+// expression to a fast double function so that the numeric methods evaluate the very expression
+// the exact ones read.
 #pragma once
 
 #include <ginac/ginac.h>
 
-#include <optional>
 #include <span>
 #include <string>
 #include <vector>

@@ -140,7 +140,6 @@ class FileRun : public models::Probe {
       : source_(source), read_(read), symbols_(symbols), options_(options) {}
 
   Result check(const Group& g);
-  double value(std::string_view symbol, const models::Point& point) override;
   std::function<double(std::span<const double>)> function(
       std::string_view symbol, const std::vector<std::string>& inputs) override;
 
@@ -182,7 +181,7 @@ class FileRun : public models::Probe {
   ReadFile& read_;
   Symbols& symbols_;
   const Options& options_;
-  // Probe::value: the definitions in force at the check, and its facts.
+  // Probe::function: the definitions in force at the check, and the statements' (define_for_probe).
   GiNaC::exmap probe_substitutions_;
   std::map<std::string, std::vector<ex>> names_;  // a model's names, read once
   // An ODE model's points, made once per file and shared by the checks that name it: a model
@@ -200,39 +199,6 @@ std::vector<ex> FileRun::symbols_of_name(std::string_view latex) {
   const SymbolName name = read_symbol_or_differential(names, 0, latex, Limits{});
   const Value v = symbols_.value_of(name);
   return names_[key] = v.vector ? std::vector<ex>{v.x, v.y} : std::vector<ex>{v.x};
-}
-
-// The values of a point as an exmap of the file's symbols.
-GiNaC::exmap point_map(FileRun& run, const models::Point& point,
-                       const std::function<std::vector<ex>(std::string_view)>& lookup) {
-  (void)run;
-  GiNaC::exmap values;
-  for (const models::Value& v : point.values) {
-    const std::vector<ex> symbols = lookup(v.symbol);
-    if (symbols.size() == 2) {
-      values[symbols[0]] = GiNaC::numeric(v.x);
-      values[symbols[1]] = GiNaC::numeric(v.y);
-    } else {
-      values[symbols[0]] = GiNaC::numeric(v.x);
-    }
-  }
-  return values;
-}
-
-double FileRun::value(std::string_view symbol, const models::Point& point) {
-  try {
-    const std::vector<ex> target = symbols_of_name(symbol);
-    const GiNaC::exmap values =
-        point_map(*this, point, [&](std::string_view s) { return symbols_of_name(s); });
-    const ex e = exact_reading(target[0].subs(probe_substitutions_)).subs(values);
-    const ex f = GiNaC::evalf(e);
-    if (!GiNaC::is_a<GiNaC::numeric>(f) || !GiNaC::ex_to<GiNaC::numeric>(f).is_real()) {
-      return std::nan("");
-    }
-    return GiNaC::ex_to<GiNaC::numeric>(f).to_double();
-  } catch (const std::exception&) {
-    return std::nan("");
-  }
 }
 
 std::function<double(std::span<const double>)> FileRun::function(

@@ -51,15 +51,11 @@ struct Point {
   }
 };
 
-/// The engine's side: the file's expressions evaluated at a point (the definitions of the file
-/// substituted), for models that compute from what the file says (a system assembled from its
-/// coefficients, say).
+/// The engine's side: the file's definitions as functions, for models that compute from what the
+/// file says (a system assembled from its coefficients, say).
 class Probe {
  public:
   virtual ~Probe() = default;
-  /// The value of the file's symbol @p symbol (a scalar, in the paper's notation) at @p point;
-  /// NaN when the point does not determine it.
-  [[nodiscard]] virtual double value(std::string_view symbol, const Point& point) = 0;
   /// The file's symbol @p symbol as a function of @p inputs (names in the paper's notation; a
   /// vector takes two arguments, x then y), compiled once for a model that evaluates it often.
   /// The function gives NaN when the file does not define the symbol from those inputs alone.

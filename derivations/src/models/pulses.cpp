@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Pulses of force on a body (section 4) and on a turning body (section 5): forces that rise and
-// fall over the contact in a given shape (shapes.hpp), the body's motion integrated in time (GSL
+// fall over the contact in a given shape, the body's motion integrated in time (GSL
 // rk8pd), and what it gives: the path, the momentum, the angle, the work. Nothing here is one of
 // the paper's formulas: the velocity comes from integrating the force, the path from integrating
 // the velocity, the work from integrating force times the point's speed along the normal.
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 #include "models/catalogue.hpp"
-#include "models/shapes.hpp"
 #include "numeric.hpp"
 
 namespace impulse::derivations::models {
@@ -17,6 +17,20 @@ namespace impulse::derivations::models {
 namespace {
 
 using Eigen::Vector2d;
+
+// The shapes a contact force takes over its duration, on [0, 1], each of mean 1: a constant force,
+// a half-sine, a triangle and a pulse that peaks early, in that order.
+const std::vector<file::PulseShape>& pulse_shapes() {
+  static const std::vector<file::PulseShape> all{
+      {"constant", [](double) { return 1.0; }, {}},
+      {"half-sine",
+       [](double u) { return std::numbers::pi / 2 * std::sin(std::numbers::pi * u); },
+       {}},
+      {"triangle", [](double u) { return u < 0.5 ? 4 * u : 4 * (1 - u); }, {0.5}},
+      {"skewed", [](double u) { return 12 * u * (1 - u) * (1 - u); }, {}},
+  };
+  return all;
+}
 
 // 25 points of each shape, in turn.
 std::size_t count_of(const Settings& s) {

@@ -4,8 +4,6 @@
 #include <Eigen/QR>
 #include <algorithm>
 
-#include "impulse/multipoint/multipoint.hpp"
-
 namespace impulse::derivations::many {
 
 using Eigen::MatrixXd;
@@ -40,33 +38,6 @@ double Body::energy() const {
   return p.squaredNorm() / (2 * m) + (rigid() ? L * L / (2 * I) : 0.0);
 }
 
-Scene random_scene(num::Random& r, bool rigid, bool with_static, int max_bodies, int max_contacts) {
-  Scene s;
-  const int count = r.integer(2, max_bodies);
-  for (int i = 0; i < count; ++i) {
-    Body b;
-    if (with_static && r.integer(0, 4) == 0) {
-      b.m = 0;
-    } else {
-      b.m = r.mass();
-      b.p = b.m * r.vector(10);
-      b.position = r.vector(1);
-      b.I = rigid && r.coin() ? 1.0 : 0.0;  // set from the arms below
-    }
-    s.bodies.push_back(b);
-  }
-  const int contacts = r.integer(1, max_contacts);
-  for (int v = 0; v < contacts; ++v) {
-    const auto a = static_cast<std::size_t>(r.integer(0, count - 1));
-    auto b = static_cast<std::size_t>(r.integer(0, count - 2));
-    if (b >= a)
-      ++b;
-    s.contacts.push_back({a, b, r.unit_vector(), r.vector(2)});
-  }
-  fit_inertias(r, s);
-  return s;
-}
-
 void fit_inertias(num::Random& r, Scene& s) {
   for (std::size_t k = 0; k < s.bodies.size(); ++k) {
     Body& b = s.bodies[k];
@@ -81,21 +52,6 @@ void fit_inertias(num::Random& r, Scene& s) {
     b.I = b.m * gyration * gyration;
     b.L = b.I * r.uniform(-10, 10) / reach;
   }
-}
-
-Scene random_pair(num::Random& r, int max_contacts) {
-  Scene s;
-  for (int i = 0; i < 2; ++i) {
-    Body b;
-    b.m = r.mass();
-    b.p = b.m * r.vector(10);
-    s.bodies.push_back(b);
-  }
-  const int contacts = r.integer(1, max_contacts);
-  for (int v = 0; v < contacts; ++v) {
-    s.contacts.push_back({0, 1, r.unit_vector(), r.vector(2)});
-  }
-  return s;
 }
 
 Scene after(const Scene& scene, const VectorXd& F) {
@@ -121,34 +77,6 @@ double energy(const Scene& scene) {
   for (const Body& b : scene.bodies)
     E += b.energy();
   return E;
-}
-
-Vector2d momentum(const Scene& scene) {
-  Vector2d P = Vector2d::Zero();
-  for (const Body& b : scene.bodies) {
-    if (!b.is_static())
-      P += b.p;
-  }
-  return P;
-}
-
-VectorXd approach(const Scene& scene) {
-  VectorXd u(static_cast<Eigen::Index>(scene.contacts.size()));
-  for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
-    const Contact& c = scene.contacts[v];
-    u(static_cast<Eigen::Index>(v)) = scene.bodies[c.a].velocity_at(c.point).dot(c.n) -
-                                      scene.bodies[c.b].velocity_at(c.point).dot(c.n);
-  }
-  return u;
-}
-
-double speed_scale(const Scene& scene) {
-  double s = 0;
-  for (const Contact& c : scene.contacts) {
-    s = std::max({s, scene.bodies[c.a].velocity_at(c.point).norm(),
-                  scene.bodies[c.b].velocity_at(c.point).norm()});
-  }
-  return s;
 }
 
 Model model(const Scene& scene) {
@@ -210,39 +138,6 @@ double inconsistency(const MatrixXd& A, const VectorXd& B) {
   const VectorXd x = solve(A, B);
   const double scale = A.norm() * x.norm() + B.norm();
   return scale == 0 ? 0.0 : (A * x - B).norm() / scale;
-}
-
-double matrix_error(const MatrixXd& a, const MatrixXd& b) {
-  const double scale = std::max(a.norm(), b.norm());
-  return scale == 0 ? 0.0 : (a - b).norm() / scale;
-}
-
-double energy_scale(double E, const MatrixXd& A, const VectorXd& F) {
-  return E + 0.5 * F.cwiseAbs().dot(A.cwiseAbs() * F.cwiseAbs());
-}
-
-double approach_scale(const Scene& scene, const MatrixXd& A, const VectorXd& F) {
-  const double terms = F.size() == 0 ? 0.0 : (A.cwiseAbs() * F.cwiseAbs()).maxCoeff();
-  return std::max(speed_scale(scene), terms);
-}
-
-ContactSystem library_system(const Scene& scene, double elasticity) {
-  std::vector<multipoint::Body> bodies;
-  for (const Body& b : scene.bodies) {
-    if (b.is_static()) {
-      bodies.emplace_back(multipoint::StaticBody{});
-    } else if (b.rigid()) {
-      bodies.emplace_back(rigid_2d::RigidBody{b.m, b.I, b.position, b.p, b.L});
-    } else {
-      bodies.emplace_back(material_2d::PointMass{b.m, b.p});
-    }
-  }
-  std::vector<multipoint::Contact> contacts;
-  for (const Contact& c : scene.contacts) {
-    contacts.push_back({c.a, c.b, c.n, c.point});
-  }
-  return multipoint::assemble(
-      bodies, std::vector<Elasticity>(bodies.size(), Elasticity(elasticity)), contacts);
 }
 
 }  // namespace impulse::derivations::many

@@ -9,7 +9,6 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "impulse/core/system.hpp"
 #include "numeric.hpp"
 
 namespace impulse::derivations::many {
@@ -37,29 +36,16 @@ struct Scene {
   std::vector<Contact> contacts;
 };
 
-/// Random bodies (point masses, or rigid bodies too) and contacts between random pairs. Rigid
-/// bodies' radii of gyration follow their contact arms (contact points are on the body).
-Scene random_scene(num::Random& r, bool rigid, bool with_static, int max_bodies, int max_contacts);
-
 /// det(a, b): the moment of b at arm a.
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 /// Each rigid body's inertia and angular momentum fitted to its contacts: its radius of gyration
 /// 0.4 to 1 times its farthest contact arm (at least 0.1), its turning speed at that arm up to 10.
 void fit_inertias(num::Random& r, Scene& s);
-/// Two point masses touching at 1 to `max_contacts` points with random normals.
-Scene random_pair(num::Random& r, int max_contacts);
-
 /// The bodies after the impulses: -n F_v on body a, +n F_v on body b of each contact v.
 Scene after(const Scene& scene, const Eigen::VectorXd& F);
 
+/// The kinetic energy of the scene.
 double energy(const Scene& scene);
-Eigen::Vector2d momentum(const Scene& scene);
-
-/// Each contact's approach speed: a's point velocity along n plus b's along -n.
-Eigen::VectorXd approach(const Scene& scene);
-
-/// The largest speed of a contact point (the scale of the approach speeds).
-double speed_scale(const Scene& scene);
 
 /// J (contacts x degrees of freedom) with approach = J v, and the inverse masses: the system
 /// A = J M^-1 J^T of the definitions, and B = J (e v) for elasticity e.
@@ -77,26 +63,10 @@ Eigen::VectorXd solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& B);
 /// Whether B lies in the range of A: the least-squares residual relative to |A||x| + |B|.
 double inconsistency(const Eigen::MatrixXd& A, const Eigen::VectorXd& B);
 
-/// A system A F = B as the checks assemble it from printed coefficients.
+/// A system A F = B as a model assembles it from a file's coefficients.
 struct System {
   Eigen::MatrixXd A;
   Eigen::VectorXd B;
 };
-
-/// |a - b| / max(|a|, |b|) in the Frobenius norm (0 for two zero matrices).
-double matrix_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
-
-/// The size of the terms whose sum is the kinetic energy after, E - F . u + F^T A F / 2: the
-/// impulses of a nearly dependent system are far larger than the momenta and push against each
-/// other, and the energy after is then a small difference of large terms.
-double energy_scale(double E, const Eigen::MatrixXd& A, const Eigen::VectorXd& F);
-
-/// The size of the terms whose sum is a contact's approach speed after: the speeds before, and
-/// the largest sum_k |A_vk F_k| of the change the impulses bring.
-double approach_scale(const Scene& scene, const Eigen::MatrixXd& A, const Eigen::VectorXd& F);
-
-/// The same scene assembled by the library (multipoint::assemble), every body at `elasticity`:
-/// what the checks compare the printed coefficients' system with.
-ContactSystem library_system(const Scene& scene, double elasticity);
 
 }  // namespace impulse::derivations::many

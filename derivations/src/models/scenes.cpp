@@ -100,11 +100,11 @@ struct Coefficients {
   std::function<double(std::span<const double>)> b;
 };
 
-Coefficients coefficients(Probe& probe, const Family& f) {
+Coefficients coefficients(Probe& probe, bool rigid, bool elastic) {
   // The file writes them with an index (a_{vi(elastic)}); the engine reads one per value of it,
   // all of one form: the first serves.
-  const std::string kind = f.elasticity == 2 ? "(elastic)}" : "(inelastic)}";
-  if (f.rigid) {
+  const std::string kind = elastic ? "(elastic)}" : "(inelastic)}";
+  if (rigid) {
     return {probe.function("a_{v1" + kind,
                            {"m", "I", "\\vec{r_1}", "\\vec{n_1}", "\\vec{r_v}", "\\vec{n_v}"}),
             probe.function("b_{v" + kind, {"m", "I", "L", "\\vec{p}", "\\vec{r_v}", "\\vec{n_v}"})};
@@ -156,6 +156,26 @@ many::System block(const many::Scene& s, std::size_t body, const Coefficients& k
   return sys;
 }
 
+// Every body's block, and their sum (the paper's ⊕) with each body's b times its weight (an
+// elasticity; 1 when none is given). NaN entries when the file does not define the coefficients.
+std::vector<many::System> blocks(const many::Scene& s, const Coefficients& k) {
+  std::vector<many::System> all;
+  for (std::size_t body = 0; body < s.bodies.size(); ++body) {
+    all.push_back(block(s, body, k));
+  }
+  return all;
+}
+
+many::System added(const std::vector<many::System>& each, const std::vector<double>& weights = {}) {
+  many::System sum{MatrixXd::Zero(each[0].A.rows(), each[0].A.cols()),
+                   VectorXd::Zero(each[0].B.size())};
+  for (std::size_t body = 0; body < each.size(); ++body) {
+    sum.A += each[body].A;
+    sum.B += (weights.empty() ? 1.0 : weights[body]) * each[body].B;
+  }
+  return sum;
+}
+
 // The work of the impulses of the pair at contact v on a body's motion, the forces constant over
 // the contact (the mean velocity along the path is the mean of before and after): along n_v on
 // the translation, and on the turning of the point at arm r_v.
@@ -193,8 +213,8 @@ Work work_at(const many::Scene& s, const VectorXd& F, std::size_t body, std::siz
 std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Family& f) {
   num::Random r(settings.seed);
   std::vector<Point> points;
-  const Coefficients inelastic = coefficients(probe, {f.rigid, f.others, 1, true, false});
-  const Coefficients elastic = coefficients(probe, {f.rigid, f.others, 2, true, false});
+  const Coefficients inelastic = coefficients(probe, f.rigid, false);
+  const Coefficients elastic = coefficients(probe, f.rigid, true);
   const std::size_t scenes = settings.share(f.others ? 20 : 10);
   for (std::size_t count = 0; count < scenes; ++count) {
     const Drawn drawn = draw_scene(r, f);
@@ -218,13 +238,7 @@ std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Fa
     // The impulses: the file's blocks summed, or the law's.
     const Coefficients& k = f.elasticity == 0 || e == 1 ? inelastic : elastic;
     if (f.from_file) {
-      const auto N = static_cast<Eigen::Index>(s.contacts.size());
-      many::System sum{MatrixXd::Zero(N, N), VectorXd::Zero(N)};
-      for (std::size_t body = 0; body < s.bodies.size(); ++body) {
-        const many::System own = block(s, body, k);
-        sum.A += own.A;
-        sum.B += own.B;
-      }
+      many::System sum = added(blocks(s, k));
       if (f.elasticity == 0) {
         sum.B *= e;  // elasticity times the inelastic b
       }
@@ -287,12 +301,9 @@ std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Fa
     if (f.blocks) {
       // Every body's block over the slots (zero where a slot has no contact), and the blocks
       // added.
-      const auto N = static_cast<Eigen::Index>(s.contacts.size());
-      many::System sum{MatrixXd::Zero(N, N), VectorXd::Zero(N)};
-      for (std::size_t body = 0; body < s.bodies.size(); ++body) {
-        const many::System b = block(s, body, k);
-        sum.A += b.A;
-        sum.B += b.B;
+      const std::vector<many::System> each = blocks(s, k);
+      for (std::size_t body = 0; body < each.size(); ++body) {
+        const many::System& b = each[body];
         const std::string name = std::to_string(body + 1);
         for (std::size_t v = 0; v < drawn.slots.size(); ++v) {
           const auto cv = drawn.slots[v];
@@ -313,14 +324,17 @@ std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Fa
       }
       // The summed system solved: its impulses G_q over dt, slot by slot (NaN when the file
       // does not define the coefficients), beside the law's motion p', p_o'.
+      const many::System sum = added(each);
       const bool defined = sum.A.allFinite() && sum.B.allFinite();
-      const VectorXd G = defined ? many::solve(sum.A, sum.B) : VectorXd::Constant(N, std::nan(""));
+      const VectorXd G =
+          defined ? many::solve(sum.A, sum.B) : VectorXd::Constant(sum.B.size(), std::nan(""));
       for (std::size_t q = 0; q < drawn.slots.size(); ++q) {
         const auto c = drawn.slots[q];
         common.set(numbered("G_", q + 1, ""), c ? G(static_cast<Eigen::Index>(*c)) / dt : 0.0);
       }
       common.set("\\vec{p'}", after.bodies[0].p).set("\\vec{p_o'}", after.bodies[1].p);
     }
+    const Vector2d centre_after = after.bodies[0].p / own.m;
     for (std::size_t v = 0; v < 3; ++v) {
       if (!drawn.slots[v]) {
         continue;
@@ -328,7 +342,6 @@ std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Fa
       const many::Contact& c = s.contacts[*drawn.slots[v]];
       Point p = common;
       p.set("\\vec{n_v}", c.n);
-      const Vector2d centre_after = after.bodies[0].p / own.m;
       const Vector2d point_after = after.bodies[0].velocity_at(c.point);
       p.set("\\vec{v_{vt}'}", centre_after).set("\\vec{v_{vt}}", Vector2d(own.p / own.m));
       if (f.rigid) {
@@ -396,26 +409,19 @@ std::vector<Point> rigid_bodies_summed_any_elasticity(Probe& p, const Settings& 
   return scene_points(p, s, {true, true, 0, true, false});
 }
 
-}  // namespace impulse::derivations::models
-
-namespace impulse::derivations::models {
-
 std::vector<Point> point_masses_an_elasticity_each(Probe& probe, const Settings& settings) {
   num::Random r(settings.seed);
-  const Coefficients inelastic = coefficients(probe, {false, true, 1, true, false});
+  const Coefficients inelastic = coefficients(probe, false, false);
   std::vector<Point> points;
   for (std::size_t count = 0; count < settings.share(20); ++count) {
     const many::Scene s = draw_scene(r, {false, true, 1, true, false}).scene;  // any conditioning
-    const auto N = static_cast<Eigen::Index>(s.contacts.size());
-    many::System sum{MatrixXd::Zero(N, N), VectorXd::Zero(N)};
     Point p;
+    std::vector<double> elasticities;
     for (std::size_t body = 0; body < s.bodies.size(); ++body) {
-      const double e = r.uniform(0.0, 3.0);
-      const many::System own = block(s, body, inelastic);
-      sum.A += own.A;
-      sum.B += e * own.B;
-      p.set(numbered("\\mathit{elasticity}_", body + 1, ""), e);
+      elasticities.push_back(r.uniform(0.0, 3.0));
+      p.set(numbered("\\mathit{elasticity}_", body + 1, ""), elasticities.back());
     }
+    const many::System sum = added(blocks(s, inelastic), elasticities);
     if (!sum.A.allFinite() || !sum.B.allFinite()) {
       continue;
     }
