@@ -500,10 +500,13 @@ class Space:
                 self.equalities.append(sp.expand(ea - eb))
                 continue
             self.relations.append((sp.expand(ea - eb), op))
+        self.unit_vectors, self.unit_equalities = [], []
         for f in ctx.facts:
             if f.startswith("unit "):
                 v = self.ns[f.split()[1]]
                 self.equalities.append(v[0] ** 2 + v[1] ** 2 - 1)
+                self.unit_equalities.append(v[0] ** 2 + v[1] ** 2 - 1)
+                self.unit_vectors.append((v[0], v[1]))
         for sym in list(self.ns.values()):
             if isinstance(sym, sp.Symbol):
                 self.intervals[sym] = self.symbol_interval(sym)
@@ -961,10 +964,36 @@ class Undecided(Exception):
     pass
 
 
+def numeric_nonzero(e):
+    """True when e is clearly not zero at a random point (the symbols' signs respected)."""
+    syms = sorted(e.free_symbols, key=str)
+    rng = random.Random(hash(str(e)) & 0xffff)
+    for _ in range(2):
+        vals = {}
+        for x in syms:
+            v = sp.Float(rng.uniform(0.3, 2.7), 30)
+            if x.is_negative or x.is_nonpositive:
+                v = -v
+            vals[x] = v
+        try:
+            x = sp.N(e.xreplace(vals), 30)
+        except Exception:
+            return False
+        if x.has(sp.zoo, sp.nan, sp.oo) or not x.is_number:
+            continue
+        if abs(x) > 1e-12 * (1 + max([abs(sp.N(a.xreplace(vals), 30)) for a in
+                                      sp.Add.make_args(sp.expand(e))] or [0])):
+            return True
+        return False
+    return False
+
+
 def is_zero(e):
     e = sp.sympify(e)
     if e == 0:
         return True
+    if not e.has(sp.Integral, sp.Sum, sp.Derivative, AppliedUndef) and numeric_nonzero(e):
+        return False
     for f in (lambda x: sp.cancel(sp.together(sp.expand(x))),
               sp.simplify,
               lambda x: sp.simplify(sp.expand_trig(x)),
@@ -975,6 +1004,25 @@ def is_zero(e):
         except Exception:
             pass
     return False
+
+
+def sum_of_squares(n):
+    """[x, y] when n is a x^(2i) + b y^(2j) + ... with positive a, b (zero only if x = y = 0)."""
+    try:
+        p = sp.Poly(n, *sorted(n.free_symbols, key=str))
+    except sp.PolynomialError:
+        return None
+    out = []
+    if len(p.terms()) < 2:
+        return None
+    for monom, c in p.terms():
+        nonzero = [k for k, x in enumerate(monom) if x]
+        if not (c > 0) or len(nonzero) != 1 or monom[nonzero[0]] % 2:
+            return None
+        out.append(p.gens[nonzero[0]])
+    if not all(g.is_real for g in out):
+        return None
+    return out
 
 
 def num_den(e):
@@ -1016,7 +1064,11 @@ def solve_system(eqs, space, hints, depth=0, budget=None):
             continue
         if n.is_number:
             return []  # inconsistent
-        work.append(n)
+        squares = sum_of_squares(n)
+        if squares:
+            work.extend(squares)  # a sum of squares of reals vanishes with each of them
+        else:
+            work.append(n)
     if not work:
         return [Leaf({}, [], depth, [], [])]
     best = None
@@ -1074,20 +1126,28 @@ def solve_system(eqs, space, hints, depth=0, budget=None):
             for f, _ in factors:
                 if f.is_number or nonzero_by_facts(f, space):
                     continue
-                for leaf in solve_system(work + [f], space, hints, depth + 1, budget):
+                reduced = [w for k, w in enumerate(work) if k != i] + [
+                    f, sp.expand(p.as_expr() - coef * s)]
+                for leaf in solve_system(reduced, space, hints, depth + 1, budget):
                     leaf.cases = [f] + leaf.cases
                     leaves.append(leaf)
         return leaves
     # quadratic
     a = p.coeff_monomial(s ** 2)
-    sols = sp.solve(p.as_expr(), s)
+    sols = list(sp.roots(p, s, multiple=True))
+    if len(sols) != 2:
+        raise Undecided("no roots of %s" % p)
+    if sols[0] == sols[1]:
+        sols = sols[:1]
     leaves = branch_on(work, i, s, sols, space, hints, depth, budget, p)
     if not a.is_number and coefficient_status(a, space) == 2 and depth < 3:
         _, factors = sp.factor_list(a)
         for f, _ in factors:
             if f.is_number or nonzero_by_facts(f, space):
                 continue
-            for leaf in solve_system(work + [f], space, hints, depth + 1, budget):
+            reduced = [w for k, w in enumerate(work) if k != i] + [
+                f, sp.expand(p.as_expr() - a * s ** 2)]
+            for leaf in solve_system(reduced, space, hints, depth + 1, budget):
                 leaf.cases = [f] + leaf.cases
                 leaves.append(leaf)
     return leaves
@@ -1318,7 +1378,7 @@ def implies(premise_meanings, space, target, hints, rng, seconds=60):
         for c in m.components:
             pre.append(apply_functions(c, substitutions))
         pdivs += [apply_functions(d, substitutions) for d in m.divs]
-    pre += list(space.equalities)
+    pre += [q for q in space.equalities if q not in space.unit_equalities]
     tcomp = [apply_functions(c, substitutions) for c in target.components]
     tdivs = [apply_functions(d, substitutions) for d in target.divs]
     troots = [apply_functions(d, substitutions) for d in target.roots]
@@ -1331,10 +1391,23 @@ def implies(premise_meanings, space, target, hints, rng, seconds=60):
     for atom, sym in table.items():
         space.intervals[sym] = interval(atom, space)
     budget = [200]
-    leaves = solve_system(pre, space, hints, 0, budget)
-    results = []
-    for leaf in leaves:
-        results.append(judge_leaf(leaf, space, pdivs, tcomp, tdivs, troots, rng))
+    leaves, results = [], []
+    # A unit vector n is [(1 - s^2)/(1 + s^2), 2s/(1 + s^2)] for a number s, or [-1, 0].
+    unit_cases = [{}]
+    for k, (nx, ny) in enumerate(space.unit_vectors):
+        sk = sp.Symbol("s_%s" % str(nx)[:-2], real=True)
+        space.intervals[sk] = Interval.real()
+        unit_cases = [{**c, nx: (1 - sk ** 2) / (1 + sk ** 2), ny: 2 * sk / (1 + sk ** 2)}
+                      for c in unit_cases] + [{**c, nx: sp.Integer(-1), ny: sp.Integer(0)}
+                                              for c in unit_cases]
+    for case in unit_cases:
+        def on(xs):
+            return [sp.sympify(x).xreplace(case) if case else x for x in xs]
+        pre_c, pdivs_c, tcomp_c = on(pre), on(pdivs), on(tcomp)
+        tdivs_c, troots_c = on(tdivs), on(troots)
+        for leaf in solve_system(pre_c, space, hints, 0, budget):
+            leaves.append(leaf)
+            results.append(judge_leaf(leaf, space, pdivs_c, tcomp_c, tdivs_c, troots_c, rng))
     feasible = [(leaf, r) for leaf, r in zip(leaves, results) if r[0] != "empty"]
     if any(r[0] == "unknown" for _, r in feasible):
         bad = [r for _, r in feasible if r[0] == "unknown"]
