@@ -801,6 +801,14 @@ def interval(expr, space):
         return Interval(Bound(-1, False), Bound(1, False))
     if isinstance(expr, sp.exp):
         return Interval(Bound(0, True), Bound(sp.oo, True))
+    if isinstance(expr, sp.log):
+        a = interval(expr.args[0], space)
+        if a.positive():
+            lo = Bound(-sp.oo, True) if a.lo.value == 0 else Bound(sp.log(a.lo.value), a.lo.strict)
+            hi = Bound(sp.oo, True) if a.hi.value.is_infinite else Bound(sp.log(a.hi.value),
+                                                                         a.hi.strict)
+            return Interval(lo, hi)
+        return Interval.real()
     if isinstance(expr, sp.Abs):
         a = interval(expr.args[0], space)
         if a.excludes_zero():
@@ -920,6 +928,20 @@ def prepare(e):
 def split_sums(e):
     if not isinstance(e, sp.Basic) or e.is_Atom:
         return e
+    if isinstance(e, sp.Sum) and len(e.args) == 2:
+        f, (i, a, b) = e.args[0], e.args[1]
+        k = sp.Symbol("k_", integer=True, positive=True)
+        if i != k:
+            return split_sums(sp.Sum(f.xreplace({i: k}), (k, a, b)))
+        # a sum to N - c is the sum to N less its last c terms; one from c + 1, the first c
+        # terms less
+        off = sp.expand(b - sp.Symbol("N_", integer=True))
+        for x in b.free_symbols:
+            c = sp.expand(b - x)
+            if c.is_Integer and c < 0:
+                return split_sums(sp.Sum(f, (k, a, x)) - sum(f.subs(k, x - j) for j in range(-c)))
+        if a.is_Integer and a > 1 and b.free_symbols:
+            return split_sums(sp.Sum(f, (k, 1, b)) - sum(f.subs(k, j) for j in range(1, a)))
     if isinstance(e, sp.Sum):
         f = sp.expand(split_sums(e.args[0]))
         limits = e.args[1:]
@@ -997,7 +1019,8 @@ def is_zero(e):
     for f in (lambda x: sp.cancel(sp.together(sp.expand(x))),
               sp.simplify,
               lambda x: sp.simplify(sp.expand_trig(x)),
-              lambda x: sp.simplify(sp.powsimp(sp.expand(x), force=False))):
+              lambda x: sp.simplify(sp.powsimp(sp.expand(x), force=False)),
+              lambda x: sp.simplify(sp.expand_log(sp.expand(x), force=True))):
         try:
             if f(e) == 0:
                 return True
@@ -1378,6 +1401,7 @@ def implies(premise_meanings, space, target, hints, rng, seconds=60):
         for c in m.components:
             pre.append(apply_functions(c, substitutions))
         pdivs += [apply_functions(d, substitutions) for d in m.divs]
+    pre += identity_derivatives(pre, space)
     pre += [q for q in space.equalities if q not in space.unit_equalities]
     tcomp = [apply_functions(c, substitutions) for c in target.components]
     tdivs = [apply_functions(d, substitutions) for d in target.divs]
@@ -1596,6 +1620,25 @@ def function_definitions(meanings, space):
                     subs[a.func] = sp.Lambda(t, sol[0])
                     break
     return subs
+
+
+def identity_derivatives(components, space):
+    """An equation between declared functions at a free symbol t holds for every t: its
+    derivatives in t hold too (x(t) = x_0 + v_0 t gives x'(t) = v_0)."""
+    out = []
+    for c in components:
+        ts = set()
+        for a in c.atoms(AppliedUndef):
+            if str(a.func) in space.ctx.functions:
+                ts |= {x for x in a.args if isinstance(x, sp.Symbol)}
+        for d in c.atoms(sp.Derivative):
+            ts |= {v for v, _ in d.variable_count}
+        for t in ts:
+            if t not in c.free_symbols:
+                continue
+            d1 = sp.diff(c, t)
+            out += [d1, sp.diff(d1, t)]
+    return [prepare(x) for x in out if x != 0]
 
 
 def apply_functions(e, subs):
