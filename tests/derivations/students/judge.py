@@ -838,13 +838,18 @@ def nonzero_by_facts(q, space):
         if interval(f, space).excludes_zero():
             return True
     qe = sp.expand(q)
+    if qe.is_number:
+        return qe != 0
     for expr, op in space.relations:
         if op in (">", "<", "!="):
             ratio = sp.cancel(qe / expr)
             if ratio.is_number and ratio != 0:
                 return True
     # a product: every factor kept from zero
-    _, factors = sp.factor_list(qe)
+    try:
+        _, factors = sp.factor_list(qe)
+    except sp.PolynomialError:
+        return False
     if len(factors) > 1 or (factors and factors[0][1] > 1):
         return all(nonzero_by_facts(f, space) for f, _ in factors)
     return False
@@ -881,6 +886,15 @@ def divisors(expr):
             walk(a)
 
     walk(expr)
+    bound = set()
+    if isinstance(expr, sp.Basic):
+        for a in expr.atoms(sp.Integral, sp.Sum, sp.Subs, sp.Product):
+            if isinstance(a, sp.Subs):
+                bound |= set(a.variables)
+            else:
+                bound |= {l[0] for l in a.limits}
+    out = [q for q in out if not (sp.sympify(q).free_symbols & bound)]
+    roots = [q for q in roots if not (sp.sympify(q).free_symbols & bound)]
     return out, roots
 
 
