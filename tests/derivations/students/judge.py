@@ -529,7 +529,10 @@ class Space:
             # expr op 0 with expr = c*sym + d (c, d numbers)
             if expr.free_symbols != {sym}:
                 continue
-            p = sp.Poly(expr, sym)
+            try:
+                p = sp.Poly(expr, sym)
+            except sp.PolynomialError:
+                continue
             if p.degree() != 1:
                 continue
             c, d = p.all_coeffs()
@@ -1811,7 +1814,16 @@ def decide(equations, k, seed, verbose=False):
     if r[0] == "fails":
         return ("does-not-follow", [], "%s at %s" % (r[1], show_point(r[3])))
     if r[0] == "holds-if":
-        return ("follows-if", base_symbols(r[2], eq.context),
+        conds = []
+        for c in r[2]:
+            n, _ = num_den(sp.sympify(c))
+            try:
+                _, factors = sp.factor_list(n)
+            except sp.PolynomialError:
+                factors = [(n, 1)]
+            kept = [f for f, _ in factors if not nonzero_by_facts(f, space)]
+            conds += kept or [n]
+        return ("follows-if", base_symbols(conds, eq.context),
                 "condition %s; fails at %s" % (r[2], show_point(r[3])))
     # the converse: every equation before from the step
     for j, m in zip(eq.premises, pre):
