@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -38,7 +39,7 @@ struct Pin {
 };
 
 inline bool is_verdict(const std::string& word) {
-  return std::any_of(all_verdicts.begin(), all_verdicts.end(),
+  return std::any_of(std::begin(all_verdicts), std::end(all_verdicts),
                      [&](Verdict v) { return word == to_string(v); });
 }
 

@@ -51,8 +51,8 @@ std::vector<Slip> read_slips() {
   while (std::getline(in, row)) {
     const auto cells = split(row, '\t');
     REQUIRE(cells.size() == 7);
-    slips.push_back({cells[0], std::stoul(cells[1]), std::stoul(cells[2]), cells[3], cells[4],
-                     cells[5]});
+    slips.push_back(
+        {cells[0], std::stoul(cells[1]), std::stoul(cells[2]), cells[3], cells[4], cells[5]});
   }
   return slips;
 }

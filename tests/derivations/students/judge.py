@@ -1037,7 +1037,10 @@ def is_zero(e):
               sp.simplify,
               lambda x: sp.simplify(sp.expand_trig(x)),
               lambda x: sp.simplify(sp.powsimp(sp.expand(x), force=False)),
-              lambda x: sp.simplify(sp.expand_log(sp.expand(x), force=True))):
+              lambda x: sp.simplify(sp.expand_log(sp.expand(x), force=True)),
+              lambda x: sp.simplify(x.replace(
+                  lambda a: isinstance(a, sp.Pow) and a.exp.is_Rational and a.exp.q == 2,
+                  lambda a: sp.Pow(sp.factor(a.base), a.exp)))):
         try:
             if f(e) == 0:
                 return True
