@@ -25,6 +25,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "derivations/derivation.hpp"
@@ -105,6 +106,26 @@ inline std::vector<fs::path> files_in(const fs::path& folder) {
   }
   std::sort(files.begin(), files.end());
   return files;
+}
+
+// The rows of a table of tab-separated cells after its header line (slips.tsv, manifest.tsv);
+// every row must have `columns` cells.
+inline std::vector<std::vector<std::string>> read_tsv(const fs::path& path, std::size_t columns) {
+  std::ifstream in(path);
+  std::vector<std::vector<std::string>> rows;
+  std::string row;
+  std::getline(in, row);  // the header
+  while (std::getline(in, row)) {
+    std::vector<std::string> cells;
+    std::istringstream cols(row);
+    for (std::string cell; std::getline(cols, cell, '\t');) {
+      cells.push_back(cell);
+    }
+    INFO(path.filename().string() << ": " << row);
+    REQUIRE(cells.size() == columns);
+    rows.push_back(std::move(cells));
+  }
+  return rows;
 }
 
 // Checks one file against its pins; returns whether it pins a slip.

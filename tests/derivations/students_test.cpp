@@ -8,7 +8,6 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -44,13 +43,8 @@ struct Slip {
 };
 
 std::vector<Slip> read_slips() {
-  std::ifstream in(students / "slips.tsv");
   std::vector<Slip> slips;
-  std::string row;
-  std::getline(in, row);  // the header
-  while (std::getline(in, row)) {
-    const auto cells = split(row, '\t');
-    REQUIRE(cells.size() == 7);
+  for (const auto& cells : pins::read_tsv(students / "slips.tsv", 7)) {
     slips.push_back(
         {cells[0], std::stoul(cells[1]), std::stoul(cells[2]), cells[3], cells[4], cells[5]});
   }
@@ -82,10 +76,25 @@ TEST_CASE("Students' corpus: no file is refused", "[derivations][students]") {
 }
 
 TEST_CASE("Students' corpus: every verdict as SymPy decided it", "[derivations][students]") {
+  // One section per file: a file the checker refuses fails its section, and the others still run.
+  for (const fs::path& path : pins::files_in(students)) {
+    DYNAMIC_SECTION(path.filename().string()) {
+      (void)pins::check_pins(path);
+    }
+  }
+}
+
+TEST_CASE("Students' corpus: 64 files, half of them with a slip", "[derivations][students]") {
   const auto files = pins::files_in(students);
   std::size_t with_slip = 0;
   for (const fs::path& path : files) {
-    with_slip += pins::check_pins(path) ? std::size_t{1} : std::size_t{0};
+    bool slip = false;
+    for (const auto& [line, pin] : pins::pins_of(pins::read(path))) {
+      for (const std::string& v : pin.verdicts) {
+        slip = slip || pins::is_slip(v);
+      }
+    }
+    with_slip += slip ? std::size_t{1} : std::size_t{0};
   }
   // The goal of the issue: at least 60 files (64 written), at least half with one slip.
   CHECK(files.size() >= 64);

@@ -8,9 +8,7 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,17 +30,8 @@ struct Entry {
 };
 
 std::vector<Entry> manifest() {
-  std::ifstream in(corpus / "manifest.tsv");
   std::vector<Entry> out;
-  std::string row;
-  std::getline(in, row);  // the header
-  while (std::getline(in, row)) {
-    std::vector<std::string> cells;
-    std::istringstream cols(row);
-    for (std::string cell; std::getline(cols, cell, '\t');) {
-      cells.push_back(cell);
-    }
-    REQUIRE(cells.size() == 4);
+  for (const auto& cells : pins::read_tsv(corpus / "manifest.tsv", 4)) {
     out.push_back({cells[0], cells[1], cells[2], cells[3]});
   }
   return out;

@@ -1164,17 +1164,7 @@ def solve_system(eqs, space, hints, depth=0, budget=None):
             leaf2 = Leaf(subs, nz, leaf.depth, leaf.cases, leaf.branch)
             leaf2.roots = leaf.roots
             leaves.append(leaf2)
-        if not coef.is_number and coefficient_status(coef, space) == 2 and depth < 3:
-            _, factors = sp.factor_list(coef)
-            for f, _ in factors:
-                if f.is_number or nonzero_by_facts(f, space):
-                    continue
-                reduced = [w for k, w in enumerate(work) if k != i] + [
-                    f, sp.expand(p.as_expr() - coef * s)]
-                for leaf in solve_system(reduced, space, hints, depth + 1, budget):
-                    leaf.cases = [f] + leaf.cases
-                    leaves.append(leaf)
-        return leaves
+        return leaves + leading_vanishes(work, i, p, coef * s, space, hints, depth, budget)
     # quadratic
     a = p.coeff_monomial(s ** 2)
     sols = list(sp.roots(p, s, multiple=True))
@@ -1183,16 +1173,25 @@ def solve_system(eqs, space, hints, depth=0, budget=None):
     if sols[0] == sols[1]:
         sols = sols[:1]
     leaves = branch_on(work, i, s, sols, space, hints, depth, budget, p)
-    if not a.is_number and coefficient_status(a, space) == 2 and depth < 3:
-        _, factors = sp.factor_list(a)
-        for f, _ in factors:
-            if f.is_number or nonzero_by_facts(f, space):
-                continue
-            reduced = [w for k, w in enumerate(work) if k != i] + [
-                f, sp.expand(p.as_expr() - a * s ** 2)]
-            for leaf in solve_system(reduced, space, hints, depth + 1, budget):
-                leaf.cases = [f] + leaf.cases
-                leaves.append(leaf)
+    return leaves + leading_vanishes(work, i, p, a * s ** 2, space, hints, depth, budget)
+
+
+def leading_vanishes(work, i, p, leading, space, hints, depth, budget):
+    """The cases where the coefficient of the leading term of equation i vanishes (a factor of
+    it at a time): there the equation is what is left without that term."""
+    coef = sp.cancel(leading / p.gens[0] ** sp.Poly(leading, p.gens[0]).degree())
+    if coef.is_number or coefficient_status(coef, space) != 2 or depth >= 3:
+        return []
+    leaves = []
+    _, factors = sp.factor_list(coef)
+    for f, _ in factors:
+        if f.is_number or nonzero_by_facts(f, space):
+            continue
+        reduced = [w for k, w in enumerate(work) if k != i] + [
+            f, sp.expand(p.as_expr() - leading)]
+        for leaf in solve_system(reduced, space, hints, depth + 1, budget):
+            leaf.cases = [f] + leaf.cases
+            leaves.append(leaf)
     return leaves
 
 
