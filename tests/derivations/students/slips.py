@@ -10,7 +10,7 @@ way in the step's LaTeX line and in its SymPy transcription:
   subscript       a subscript 1 becomes 2 or the other way round (m_1 / m1)
   prime           a prime dropped (v_1' / v1p becomes v_1 / v1)
   square          a square lost (^2 / **2)
-  factor          a number changed, n to n + 1 (not in a subscript or an exponent)
+  factor          a number changed, n to n + 1 or 2n (not in a subscript or an exponent)
   term            a term of a side dropped
 
 A change is made only where the two texts agree on what it touches: the same sequence of
@@ -245,6 +245,9 @@ def mutations(ltx, ok, spy, names):
                 continue
             out.append(("factor", ltx[:l0] + str(n + 1) + ltx[l1:], spy[:s0] + str(n + 1) +
                         spy[s1:]))
+            if n >= 2:
+                out.append(("factor", ltx[:l0] + str(2 * n) + ltx[l1:], spy[:s0] + str(2 * n) +
+                            spy[s1:]))
     # term
     lt, st = latex_terms(ltx, ok), sympy_terms(spy)
     if lt and [c for _, c in lt] == [c for _, c in st]:
@@ -318,7 +321,7 @@ def judge_mutation(equations, k, lhs, rhs, seed):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--seed", type=int, default=23)
-    ap.add_argument("--per-step", type=int, default=7)
+    ap.add_argument("--per-step", type=int, default=20)
     ap.add_argument("--output", default=OUT)
     args = ap.parse_args()
     rng = random.Random(args.seed)
