@@ -4,6 +4,7 @@
 #include <map>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 
 #include "derivations/check.hpp"
 #include "numeric.hpp"
@@ -364,8 +365,10 @@ std::string render(const Report& report, Format format, bool colour) {
       return render_markdown(report);
     case Format::json:
       return render_json(report);
+    case Format::csv:
+      break;  // rows of derivation files only (render_rows)
   }
-  return {};
+  throw std::invalid_argument("the paper's report is text, markdown or json");
 }
 
 }  // namespace impulse::derivations
