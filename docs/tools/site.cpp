@@ -23,7 +23,8 @@
 //   {{labs}}          the labs (tutorials/NN-name/README.md)
 //   {{summary}}       the counts of each outcome
 //   {{derivation:P}}  the derivation file tutorials/P.md as written, then its report as
-//                     `impulselab check --format markdown` wrote it during the build
+//                     `impulselab check --format markdown` wrote it during the build ({{file:P}}
+//                     and {{report:P}} give each alone; P without a folder is derivations/P)
 //   {{code:(N)}}      the lines of the library's sources whose comment carries the label (N),
 //                     linked to Doxygen's listing of the file
 // Every check of the report must appear on some page, and every id on a page must be in the report.
@@ -163,14 +164,26 @@ std::string page_of_section(const std::string& section) {
              : top;
 }
 
-// The prose paragraph a check's directive follows (skipping the directives between them), as
-// Doxygen Markdown: its $…$ as \f$…\f$. Raw LaTeX outside $…$ would reach the reader as such.
+// The prose paragraph a check's directive follows, as Doxygen Markdown (its $…$ as \f$…\f$).
+// Between them may stand directives and the displays of `given:`; any other display, a heading or
+// another check ends the search. Raw LaTeX outside $…$ would reach the reader as such: an error.
 std::string words_before(const std::vector<std::string>& lines, std::size_t directive,
                          const std::string& place) {
-  static const std::regex is_directive(R"(^[a-z][a-z ]*:( |$))");
-  std::size_t k = directive;
+  static const std::regex is_directive(
+      R"(^(let|check|claim|given|from|model|section|explanation|search|correction|ode|evidence|)"
+      R"(assume|index|test|quadrature|column|matrix|vector|arrow|also|forces|differentials|itself|)"
+      R"(units):( |$))");
+  static const std::regex is_check(R"(^(check|claim):)");
+  const auto previous_nonblank = [&](std::size_t k) {
+    while (k-- > 0) {
+      if (!lines[k].empty()) {
+        return k;
+      }
+    }
+    return lines.size();
+  };
   std::vector<std::string> paragraph;
-  bool in_directives = true;
+  std::size_t k = directive;
   while (k-- > 0) {
     const std::string& line = lines[k];
     if (line.empty()) {
@@ -179,8 +192,22 @@ std::string words_before(const std::vector<std::string>& lines, std::size_t dire
       }
       continue;
     }
+    const bool display_end = line.size() >= 2 && line.compare(line.size() - 2, 2, "$$") == 0;
+    if (paragraph.empty() && (line.starts_with("$$") || display_end)) {
+      // A display: skipped when it is given (a premise of the check), else the end.
+      std::size_t start = k;
+      while (start > 0 && !lines[start].starts_with("$$")) {
+        --start;
+      }
+      const std::size_t before = previous_nonblank(start);
+      if (before < lines.size() && lines[before] == "given:") {
+        k = before;
+        continue;
+      }
+      break;
+    }
     if (std::regex_search(line, is_directive)) {
-      if (!paragraph.empty()) {
+      if (!paragraph.empty() || std::regex_search(line, is_check)) {
         break;
       }
       continue;
@@ -188,10 +215,8 @@ std::string words_before(const std::vector<std::string>& lines, std::size_t dire
     if (line.starts_with("$$") || line.starts_with("#") || line.starts_with("<!--")) {
       break;
     }
-    in_directives = false;
     paragraph.insert(paragraph.begin(), line);
   }
-  (void)in_directives;
   std::string text;
   for (const std::string& line : paragraph) {
     text += (text.empty() ? "" : " ") + line;
@@ -311,7 +336,7 @@ Report read_report(const fs::path& report_dir, const fs::path& source_dir) {
         s.file = shown;
         s.listing = prefix + file.stem().string();
         s.line = k + 1;
-        if (m[1].str() == "claim") {
+        if (m[1].str() == "claim" && std::string(folder) == "paper") {
           s.words = words_before(lines, k, shown + ":" + std::to_string(k + 1));
         }
       }
@@ -679,14 +704,12 @@ struct Context {
   std::set<std::string> used;
 };
 
-std::string derivation_example(Context& context, const std::string& path,
-                               const std::string& place) {
+// An example derivation file tutorials/P.md as written (\verbatim: a <pre>, in which neither
+// Doxygen's commands nor MathJax's $$ are read), and its report as the build wrote it.
+std::string derivation_file(Context& context, const std::string& path, const std::string& place) {
   const fs::path file = context.source_dir / "tutorials" / (path + ".md");
-  const fs::path checked =
-      context.derivation_reports / (fs::path(path).filename().string() + ".md");
-  if (!fs::exists(file) || !fs::exists(checked)) {
-    throw Failure(place + ": {{derivation:" + path + "}}: no file tutorials/" + path +
-                  ".md or no report of it in " + context.derivation_reports.string());
+  if (!fs::exists(file)) {
+    throw Failure(place + ": no file tutorials/" + path + ".md");
   }
   std::string source = read(file);
   if (const std::size_t pins = source.find("<!-- expect"); pins != std::string::npos) {
@@ -695,11 +718,24 @@ std::string derivation_example(Context& context, const std::string& path,
   while (!source.empty() && (source.back() == '\n' || source.back() == ' ')) {
     source.pop_back();
   }
+  return "The file `tutorials/" + path + ".md`:\n\n\\verbatim\n" + source + "\n\\endverbatim\n";
+}
+
+std::string derivation_report(Context& context, const std::string& path, const std::string& place) {
+  const fs::path checked =
+      context.derivation_reports / (fs::path(path).filename().string() + ".md");
+  if (!fs::exists(checked)) {
+    throw Failure(place + ": no report of tutorials/" + path + ".md in " +
+                  context.derivation_reports.string());
+  }
   static const std::regex inline_math(R"(\$([^$]+)\$)");
-  const std::string report = std::regex_replace(read(checked), inline_math, "\\f$$$1\\f$$");
-  // \verbatim (a <pre>): neither Doxygen's commands nor MathJax's $$ are read inside it.
-  return "The file `tutorials/" + path + ".md`:\n\n\\verbatim\n" + source +
-         "\n\\endverbatim\n\nWhat `impulselab check` reports for it:\n\n" + report + "\n";
+  return std::regex_replace(read(checked), inline_math, "\\f$$$1\\f$$") + "\n";
+}
+
+std::string derivation_example(Context& context, const std::string& path,
+                               const std::string& place) {
+  return derivation_file(context, path, place) + "\nWhat `impulselab check` reports for it:\n\n" +
+         derivation_report(context, path, place);
 }
 
 std::string fill(Context& context, const std::string& text, const std::string& place) {
@@ -736,16 +772,18 @@ std::string fill(Context& context, const std::string& text, const std::string& p
              std::to_string(s.at("erratum").get<int>()) + " errata, " +
              std::to_string(s.at("refuted").get<int>()) + " refuted, " +
              std::to_string(s.at("failed").get<int>()) + " failed";
-    } else if (what == "derivation" && !id.empty()) {
-      out += derivation_example(
-          context, id.find('/') == std::string::npos ? "derivations/" + id : id, place);
+    } else if ((what == "derivation" || what == "file" || what == "report") && !id.empty()) {
+      const std::string path = id.find('/') == std::string::npos ? "derivations/" + id : id;
+      out += what == "derivation" ? derivation_example(context, path, place)
+             : what == "file"     ? derivation_file(context, path, place)
+                                  : derivation_report(context, path, place);
     } else if (what == "code" && id.size() > 2 && id.front() == '(' && id.back() == ')') {
       out += code_links(context.code, id.substr(1, id.size() - 2), place);
     } else {
       throw Failure(place + ": " + m.str() +
                     " names no check of the report (or no placeholder: {{check:ID}}, "
                     "{{verdict:ID}}, {{statement:ID}}, {{errata}}, {{labs}}, {{summary}}, "
-                    "{{derivation:PATH}}, {{code:(N)}})");
+                    "{{derivation:PATH}}, {{file:PATH}}, {{report:PATH}}, {{code:(N)}})");
     }
   }
   return out + text.substr(at);
@@ -1105,6 +1143,12 @@ std::vector<Record> records_of(const std::string& file, const std::string& html)
   title = squeezed(title);
   if (title.starts_with("ImpulseLab: ")) {
     title = title.substr(std::string("ImpulseLab: ").size());
+  }
+  if (!doxygen) {
+    // An interactive page: named as the menu names it ("collide.html" → "Collide").
+    std::string name = file.substr(0, file.find('.'));
+    name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
+    title = name + ", the interactive page: " + title;
   }
   for (Record& r : records) {
     r.title = title;
