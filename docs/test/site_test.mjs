@@ -3,20 +3,24 @@
 // every page, driven over the DevTools pipe by web/test/chromium.mjs):
 //
 //   pages        every page Doxygen wrote, at 390 px wide once its formulas are typeset: the
-//                menu is there with its entries, nothing is wider than the window, and no **
-//                or backtick of unrendered Markdown is left in its text
+//                menu is there with its entries, nothing is wider than the window, no ** or
+//                backtick of unrendered Markdown and no TeX is left in its text, every formula
+//                is typeset with its number, nothing is asked of the network, and every link
+//                and file it names leads to a file and an anchor of the site
 //   checks       every check of the report shows on its section's page the statement it
 //                checked; a claim its words; an erratum its printed form and correction, each
 //                with a term boxed; a refutation by argument says so; every symbol of every
 //                counterexample on any page is in the notation page's glossary
-//   labs         every lab numbers its questions and closes one answer after each
+//   labs         every lab numbers its questions and closes one answer after each; has
+//                breadcrumbs and a way to its sections of the paper, which lead back to it; each
+//                section page leads to the previous and the next
 //   search       the search page finds "3.6" on section 3, "eq-3.6" at its check, "restitution",
 //                and the interactive pages
 //   screenshots  a section page, a page of the report and a lab, at 1280 and 390 px
 //   detectors    each detector above, fed a page made wrong on purpose, reports it
 //
 // usage: node site_test.mjs GROUP --site DIR --report check.json --screenshots DIR
-import {mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync, existsSync} from 'node:fs';
+import {existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, symlinkSync, writeFileSync} from 'node:fs';
 import {writeFile} from 'node:fs/promises';
 import {tmpdir} from 'node:os';
 import {join, resolve} from 'node:path';
@@ -140,6 +144,67 @@ const labProblems = `(() => {
   return problems;
 })()`;
 
+// Formulas MathJax did not typeset, an equation number not shown, MathJax's errors, and TeX left
+// in the text a reader sees (outside code, formulas and scripts). Run in the page.
+function mathProblemsInPage() {
+  const problems = [];
+  for (const script of document.querySelectorAll('script[type^="math/tex"]')) {
+    if (!script.id || !document.getElementById(`${script.id}-Frame`)) {
+      problems.push(`formula ${script.id || '?'} has no typeset output: ${script.textContent.slice(0, 60)}`);
+    }
+    for (const m of script.textContent.matchAll(/\\tag\{([^}]*)\}/g)) {
+      if (!document.getElementById(`mjx-eqn-${m[1]}`)) {
+        problems.push(`the equation number (${m[1]}) is not shown`);
+      }
+    }
+  }
+  for (const e of document.querySelectorAll('.merror, [class*="MathJax_Error"]')) {
+    problems.push(`MathJax reports an error: ${e.textContent.slice(0, 80)}`);
+  }
+  const skipped = (node) => {
+    for (let e = node.parentElement; e; e = e.parentElement) {
+      if (['SCRIPT', 'STYLE', 'CODE', 'PRE', 'TT', 'TEXTAREA'].includes(e.tagName) ||
+          e.classList.contains('fragment') || e.classList.contains('MathJax') ||
+          e.classList.contains('MathJax_Display') || e.classList.contains('MathJax_Preview')) {
+        return true;
+      }
+    }
+    return false;
+  };
+  let prose = '';
+  const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+  for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+    if (!skipped(node)) {
+      prose += node.textContent;
+    }
+  }
+  for (const raw of ['\\f$', '\\f[', '\\f]', '\\(', '\\)', '\\[', '\\]', '\\frac', '\\tag', '\\vec',
+                     '\\det', '\\sum', '\\left', '\\mathrm', '\\begin']) {
+    const at = prose.indexOf(raw);
+    if (at >= 0) {
+      problems.push(`raw TeX in the text: "${prose.slice(Math.max(0, at - 40), at + 60).replace(/\s+/g, ' ')}"`);
+    }
+  }
+  if (document.body.textContent.includes('Math Processing Error')) {
+    problems.push('MathJax shows "Math Processing Error"');
+  }
+  return problems;
+}
+
+// Every address the page names (href, src, data, srcset, poster), with the tag that names it.
+function addressesInPage() {
+  const found = [];
+  for (const e of document.querySelectorAll('[href], [src], [data], [srcset], [poster]')) {
+    for (const a of ['href', 'src', 'data', 'srcset', 'poster']) {
+      const value = e.getAttribute(a);
+      if (value !== null) {
+        found.push({tag: e.tagName.toLowerCase(), attribute: a, value});
+      }
+    }
+  }
+  return found;
+}
+
 // --- Outside the page ----------------------------------------------------------------------------
 
 // What two statements are compared by: no spaces, no gathered environment around them.
@@ -203,6 +268,60 @@ function sectionPage(section) {
   return /^[0-9]+$/.test(top) ? `section${top}.html` : `${top}.html`;
 }
 
+// A URL that leaves the site: any scheme but file, data, blob, about, javascript and mailto, or
+// "//host".
+function leavesSite(url) {
+  if (url.startsWith('//')) {
+    return true;
+  }
+  const m = /^([A-Za-z][A-Za-z0-9+.-]*):/.exec(url);
+  return m !== null && !['file', 'data', 'blob', 'about', 'javascript', 'mailto'].includes(m[1].toLowerCase());
+}
+
+const anchorsOf = new Map();
+function hasAnchor(file, anchor) {
+  if (!anchorsOf.has(file)) {
+    anchorsOf.set(file, readFileSync(file, 'utf8'));
+  }
+  const html = anchorsOf.get(file);
+  return html.includes(`id="${anchor}"`) || html.includes(`name="${anchor}"`);
+}
+
+// What a page loads from outside the site, and the links and files it names that lead to no file
+// of the site or to an anchor its target does not have.
+function addressProblems(pageFile, addresses, domIds) {
+  const problems = [];
+  for (const {tag, attribute, value} of addresses) {
+    const loads = attribute !== 'href' || tag === 'link';
+    if (leavesSite(value)) {
+      if (loads) {
+        problems.push(`<${tag} ${attribute}="${value}"> loads from outside the site`);
+      }
+      continue;
+    }
+    if (attribute === 'srcset' || /^[A-Za-z][A-Za-z0-9+.-]*:/.test(value) || value === '') {
+      continue;
+    }
+    const hash = value.indexOf('#');
+    const path = decodeURIComponent(value.slice(0, Math.min(...[value.indexOf('?'), hash, value.length].filter((x) => x >= 0))));
+    const anchor = hash >= 0 ? value.slice(hash + 1) : '';
+    const target = path === '' ? pageFile : resolve(join(pageFile, '..'), path);
+    if (!existsSync(target)) {
+      problems.push(`${value} (no file ${target})`);
+      continue;
+    }
+    if (anchor === '' || !target.endsWith('.html') ||
+        (target.endsWith('collide.html') && anchor.startsWith('scene='))) {
+      continue;  // the interactive page's state, not an anchor: the web tests open each such link
+    }
+    const found = target === pageFile ? domIds.includes(anchor) || hasAnchor(target, anchor) : hasAnchor(target, anchor);
+    if (!found) {
+      problems.push(`${value} (no anchor ${anchor} in ${target.split('/').pop()})`);
+    }
+  }
+  return problems;
+}
+
 async function open(page, url) {
   await page.goto(url);
   await page.waitFor(typeset, 30000);
@@ -218,10 +337,16 @@ async function pagesGroup(browser, site, {only = null} = {}) {
   const names = only || doxygenPages(site);
   check(names.length > 0, `no page of Doxygen's in ${site}`);
   for (const name of names) {
+    page.requests = [];
     await open(page, `file://${join(site, name)}`);
     expectNone(await page.evaluate(menuProblems(required)), name);
     expectNone(await page.evaluate(widthProblems(390)), name);
     expectNone(await page.evaluate(slipProblems), name);
+    expectNone(await page.evaluate(`(${mathProblemsInPage})()`), name);
+    const addresses = await page.evaluate(`(${addressesInPage})()`);
+    const ids = await page.evaluate(`[...document.querySelectorAll('[id]')].map((e) => e.id)`);
+    expectNone(addressProblems(join(site, name), addresses, ids), name);
+    expectNone(page.requests.filter(leavesSite).map((u) => `asked the network for ${u}`), name);
   }
   await page.close();
   return names.length;
@@ -323,6 +448,23 @@ async function labsGroup(browser, site) {
   for (const name of labs) {
     await open(page, `file://${join(site, name)}`);
     expectNone(await page.evaluate(labProblems), name);
+    // Breadcrumbs, and the way to the sections of the paper the lab is about, and back.
+    const crumbs = await page.evaluate(`[...document.querySelectorAll('.breadcrumbs a')].map((a) => a.getAttribute('href'))`);
+    check(crumbs.includes('index.html') && crumbs.includes('labs.html'), `${name}: no breadcrumbs to the start page and the labs`);
+    const sections = await page.evaluate(`[...document.querySelectorAll('.pager a')].map((a) => a.getAttribute('href')).filter((h) => /^section[0-9]+\\.html$/.test(h))`);
+    check(sections.length > 0, `${name}: no link to a section of the paper`);
+    for (const section of sections) {
+      check(readFileSync(join(site, section), 'utf8').includes(`href="${name}"`), `${section} does not link back to ${name}`);
+    }
+  }
+  // Each section page leads to the previous and the next section.
+  const numbered = readdirSync(site).filter((f) => /^section[0-9]+\.html$/.test(f)).sort();
+  for (const [k, name] of numbered.entries()) {
+    await open(page, `file://${join(site, name)}`);
+    const pager = await page.evaluate(`[...document.querySelectorAll('.pager a')].map((a) => a.getAttribute('href'))`);
+    for (const neighbour of [numbered[k - 1], numbered[k + 1]].filter((x) => x)) {
+      check(pager.includes(neighbour), `${name}: no link to ${neighbour} in its pager`);
+    }
   }
   await page.close();
 }
@@ -368,7 +510,7 @@ async function screenshotsGroup(browser, site, folder) {
 }
 
 // Each detector against a page made wrong on purpose: it must report it.
-async function detectorsGroup(browser) {
+async function detectorsGroup(browser, site) {
   const scratch = mkdtempSync(join(tmpdir(), 'impulselab-site-detectors-'));
   try {
     const page = await browser.newPage({width: 390, height: 844, mobile: true});
@@ -385,6 +527,29 @@ async function detectorsGroup(browser) {
     check(menu.length === 1 && menu[0].includes('no menu'), `the menu detector missed a page without the menu: ${JSON.stringify(menu)}`);
     check(wide.length === 1 && wide[0].includes('px wide at 390 px: div'), `the width detector missed a page 1000 px wide: ${JSON.stringify(wide)}`);
     check(slips.length === 1 && slips[0].includes('**bold**'), `the Markdown detector missed ** and a backtick: ${JSON.stringify(slips)}`);
+    // A formula that typesets, a \\frac left raw, a script from outside, two links to nowhere.
+    if (site !== null) {
+      symlinkSync(join(site, 'mathjax'), join(scratch, 'mathjax'));
+      writeFileSync(join(scratch, 'math.html'), '<html><head><script type="text/x-mathjax-config">' +
+        'MathJax.Hub.Config({extensions: ["tex2jax.js", "TeX/AMSmath.js"], jax: ["input/TeX", "output/HTML-CSS"]});' +
+        '</script><script type="text/javascript" async="async" src="mathjax/MathJax.js"></script>' +
+        '<script src="https://example.invalid/tracker.js"></script></head><body><p>\\[ a = b \\tag{9.9} \\]</p>' +
+        '<p>Raw: \\frac{1}{2}</p><a href="missing.html">gone</a> <a href="math.html#nowhere">no anchor</a></body></html>');
+      page.requests = [];
+      await open(page, `file://${join(scratch, 'math.html')}`);
+      const math = await page.evaluate(`(${mathProblemsInPage})()`);
+      check(math.length === 1 && math[0].includes('\\frac{1}{2}'), `the MathJax detector: ${JSON.stringify(math)}`);
+      const addresses = addressProblems(join(scratch, 'math.html'), await page.evaluate(`(${addressesInPage})()`), []);
+      check(addresses.length === 3 && addresses.filter((p) => p.includes('outside')).length === 1,
+            `the address detector: ${JSON.stringify(addresses)}`);
+      check(JSON.stringify(page.requests.filter(leavesSite)) === '["https://example.invalid/tracker.js"]',
+            `the request detector: ${JSON.stringify(page.requests)}`);
+      // Without MathJax nothing is typeset: the TeX stays in the text.
+      writeFileSync(join(scratch, 'plain.html'), '<html><body><p>\\[ a = b \\tag{9.9} \\]</p><p>Raw: \\frac{1}{2}</p></body></html>');
+      await open(page, `file://${join(scratch, 'plain.html')}`);
+      const plain = await page.evaluate(`(${mathProblemsInPage})()`);
+      check(plain.length >= 3, `the MathJax detector on a page without MathJax: ${JSON.stringify(plain)}`);
+    }
     // A menu without one entry.
     await open(page, write('menu.html', '<div id="main-nav"><ul id="main-menu"><li><a href="section1.html">§1</a></li></ul></div>'));
     const partial = await page.evaluate(menuProblems(['section1.html', 'notation.html']));
@@ -416,7 +581,7 @@ const browser = await Browser.launch();
 const started = Date.now();
 try {
   if (group === 'detectors') {
-    await detectorsGroup(browser);
+    await detectorsGroup(browser, args.includes('--site') ? option('site') : null);
   } else {
     const site = option('site');
     if (group === 'pages') {

@@ -457,7 +457,7 @@ struct SectionPage {
 std::vector<Lab> read_labs(const fs::path& source_dir) {
   std::vector<Lab> labs;
   static const std::regex first(R"(^# Lab ([0-9]+): (.+) \{#(lab_[0-9]+)\}$)");
-  static const std::regex sections(R"(<!-- paper sections: ([0-9, ]+) -->)");
+  static const std::regex sections(R"(<!-- paper sections: ([0-9, ]+))");
   std::vector<fs::path> readmes;
   for (const auto& entry : fs::directory_iterator(source_dir / "tutorials")) {
     const std::string name = entry.path().filename().string();
