@@ -421,8 +421,8 @@ std::string errata_list(const Report& report) {
     const std::string label = c.equation ? *c.equation : c.id;
     out += "\n### " + label + ", section " + c.section + ": " + c.status + " {#errata-" + c.anchor +
            "}\n\n";
-    out += "Check " + verdict(c) + " <code>" + c.id + "</code> (" + c.kind + ") on \\ref " +
-           page_of_section(c.section) + " \"its section's page\"";
+    out += "Check " + verdict(c) + " <code>" + c.id + "</code> (" + c.kind + ") <a href=\"" +
+           page_of_section(c.section) + ".html#" + c.anchor + "\">on its section's page</a>";
     if (const std::string link = source_link(c); !link.empty()) {
       out += ", " + link;
     }
