@@ -24,16 +24,19 @@ import {existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, s
 import {writeFile} from 'node:fs/promises';
 import {tmpdir} from 'node:os';
 import {join, resolve} from 'node:path';
+import {parseArgs} from 'node:util';
 import {Browser} from '../../web/test/chromium.mjs';
 
-const args = process.argv.slice(2);
-const group = args[0];
+const {values: given, positionals} = parseArgs({
+  allowPositionals: true,
+  options: {site: {type: 'string'}, report: {type: 'string'}, screenshots: {type: 'string'}},
+});
+const group = positionals[0];
 const option = (name) => {
-  const at = args.indexOf(`--${name}`);
-  if (at < 0 || at + 1 >= args.length) {
+  if (given[name] === undefined) {
     throw new Error(`missing --${name}`);
   }
-  return resolve(args[at + 1]);
+  return resolve(given[name]);
 };
 
 const failures = [];
@@ -581,7 +584,7 @@ const browser = await Browser.launch();
 const started = Date.now();
 try {
   if (group === 'detectors') {
-    await detectorsGroup(browser, args.includes('--site') ? option('site') : null);
+    await detectorsGroup(browser, given.site === undefined ? null : option('site'));
   } else {
     const site = option('site');
     if (group === 'pages') {
