@@ -606,6 +606,18 @@ try {
   await browser.close();
 }
 console.log(`${group}: ${failures.length} failure${failures.length === 1 ? '' : 's'} (${((Date.now() - started) / 1000).toFixed(1)} s)`);
+// How many of each kind, and the pages they are on (the list below stops at 200).
+const kinds = [['menu', /menu/], ['wider than the window', /px wide at/], ['unrendered Markdown', /unrendered Markdown/],
+  ['formulas', /raw TeX|typeset|equation number|MathJax/], ['links', /\(no (file|anchor) /],
+  ['outside the site', /outside the site|asked the network/]];
+for (const [kind, pattern] of kinds) {
+  const matching = failures.filter((f) => pattern.test(f));
+  if (matching.length > 0) {
+    const pages = new Set(matching.map((f) => f.split(':')[0]));
+    console.log(`  ${kind}: ${matching.length} on ${pages.size} page${pages.size === 1 ? '' : 's'}` +
+                (pages.size <= 12 ? ` (${[...pages].join(', ')})` : ''));
+  }
+}
 for (const f of failures.slice(0, 200)) {
   console.log(`  ${f}`);
 }
