@@ -20,6 +20,7 @@
 //   detectors    each detector above, fed a page made wrong on purpose, reports it
 //
 // usage: node site_test.mjs GROUP --site DIR --report check.json --screenshots DIR
+//        [--only a.html,b.html]  (pages: those pages alone)
 import {existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, symlinkSync, writeFileSync} from 'node:fs';
 import {writeFile} from 'node:fs/promises';
 import {tmpdir} from 'node:os';
@@ -29,7 +30,8 @@ import {Browser} from '../../web/test/chromium.mjs';
 
 const {values: given, positionals} = parseArgs({
   allowPositionals: true,
-  options: {site: {type: 'string'}, report: {type: 'string'}, screenshots: {type: 'string'}},
+  options: {site: {type: 'string'}, report: {type: 'string'}, screenshots: {type: 'string'},
+            only: {type: 'string'}},
 });
 const group = positionals[0];
 const option = (name) => {
@@ -588,7 +590,7 @@ try {
   } else {
     const site = option('site');
     if (group === 'pages') {
-      const n = await pagesGroup(browser, site);
+      const n = await pagesGroup(browser, site, {only: given.only ? given.only.split(',') : null});
       console.log(`${n} pages opened at 390 px`);
     } else if (group === 'checks') {
       await checksGroup(browser, site, JSON.parse(readFileSync(option('report'), 'utf8')));
@@ -608,7 +610,7 @@ try {
 console.log(`${group}: ${failures.length} failure${failures.length === 1 ? '' : 's'} (${((Date.now() - started) / 1000).toFixed(1)} s)`);
 // How many of each kind, and the pages they are on (the list below stops at 200).
 const kinds = [['menu', /menu/], ['wider than the window', /px wide at/], ['unrendered Markdown', /unrendered Markdown/],
-  ['formulas', /raw TeX|typeset|equation number|MathJax/], ['links', /\(no (file|anchor) /],
+  ['formulas', /raw TeX|no typeset output|equation number|MathJax reports|Math Processing/], ['links', /\(no (file|anchor) /],
   ['outside the site', /outside the site|asked the network/]];
 for (const [kind, pattern] of kinds) {
   const matching = failures.filter((f) => pattern.test(f));
