@@ -493,12 +493,22 @@ std::vector<Rule> rules_of(const std::vector<ex>& equations) {
   std::vector<Rule> rules;
   for (const ex& equation : equations) {
     const ex e = GiNaC::expand(equation);
+    // The candidates in one order in every run: values before derivatives, then by their text.
+    std::vector<std::pair<std::pair<std::size_t, std::string>, ex>> candidates;
     for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
-      if (!is_a<GiNaC::function>(*i) || is_a<GiNaC::fderivative>(*i) || !is_abstract(*i) ||
-          i->nops() != 1 || !is_a<GiNaC::symbol>(i->op(0))) {
+      if (!is_abstract(*i) || i->nops() != 1 || !is_a<GiNaC::symbol>(i->op(0))) {
         continue;
       }
-      const ex atom = *i;
+      const std::size_t order = is_a<GiNaC::fderivative>(*i)
+                                    ? GiNaC::ex_to<GiNaC::fderivative>(*i).derivatives().size()
+                                    : 0;
+      std::ostringstream text;
+      text << GiNaC::dflt << *i;
+      candidates.push_back({{order, text.str()}, *i});
+    }
+    std::sort(candidates.begin(), candidates.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [key, atom] : candidates) {
       const unsigned serial = GiNaC::ex_to<GiNaC::function>(atom).get_serial();
       // Linear in the atom with a number as the coefficient, and no other value of F.
       const GiNaC::symbol slot("slot");
@@ -515,7 +525,7 @@ std::vector<Rule> rules_of(const std::vector<ex>& equations) {
       if (!is_a<GiNaC::numeric>(coefficient) || coefficient.is_zero()) {
         continue;
       }
-      rules.push_back({serial, atom.op(0), -replaced.coeff(slot, 0) / coefficient});
+      rules.push_back({serial, key.first, atom.op(0), -replaced.coeff(slot, 0) / coefficient});
       break;
     }
   }
@@ -529,20 +539,26 @@ ex rewritten(const ex& e, const std::vector<Rule>& rules) {
   const std::function<ex(const ex&)> walk = [&](const ex& x) -> ex {
     if (is_abstract(x) && x.nops() == 1) {
       const unsigned serial = GiNaC::ex_to<GiNaC::function>(x).get_serial();
+      const std::size_t order = is_a<GiNaC::fderivative>(x)
+                                    ? GiNaC::ex_to<GiNaC::fderivative>(x).derivatives().size()
+                                    : 0;
+      // The rule of the highest order not above the atom's: F'' from a rule for F'.
+      const Rule* best = nullptr;
       for (const Rule& r : rules) {
-        if (r.serial != serial) {
-          continue;
+        if (r.serial == serial && r.order <= order && (best == nullptr || r.order > best->order)) {
+          best = &r;
         }
-        const ex argument = walk(x.op(0));
-        ex value = r.value;
-        if (is_a<GiNaC::fderivative>(x)) {
-          const auto order =
-              static_cast<unsigned>(GiNaC::ex_to<GiNaC::fderivative>(x).derivatives().size());
-          value = value.diff(GiNaC::ex_to<GiNaC::symbol>(r.variable), order);
-        }
-        return value.subs(r.variable == argument);
       }
-      return x;
+      if (best == nullptr) {
+        return x;
+      }
+      const ex argument = walk(x.op(0));
+      ex value = best->value;
+      if (order > best->order) {
+        value = value.diff(GiNaC::ex_to<GiNaC::symbol>(best->variable),
+                           static_cast<unsigned>(order - best->order));
+      }
+      return value.subs(best->variable == argument);
     }
     if (is_a<GiNaC::integral>(x)) {
       return integrate(walk(x.op(3)), x.op(0), walk(x.op(1)), walk(x.op(2)));

@@ -54,6 +54,7 @@ DECLARE_FUNCTION_4P(indexed_product)
 /// equation that holds for every v (it names F at its variable: F(t) = m \frac{dv}{dt}).
 struct Rule {
   unsigned serial = 0;
+  std::size_t order = 0;  ///< 0: F itself; 1: its derivative F' (\dot x = v_0 - g t), …
   GiNaC::ex variable;
   GiNaC::ex value;
 };

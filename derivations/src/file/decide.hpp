@@ -57,9 +57,9 @@ struct Budget {
   return std::chrono::steady_clock::now() > deadline;
 }
 
-/// @p e with square roots of squares taken out where the facts give the sign of what is
-/// squared: \sqrt{V^2} is V when V > 0, -V when V < 0, |V| otherwise.
-[[nodiscard]] GiNaC::ex roots_taken(const GiNaC::ex& e, const Facts& facts);
+/// @p e simplified where the facts allow it: \sqrt{V^2} is V when V > 0 (-V when V < 0, |V|
+/// otherwise), (b^k)^n is b^{k n} and \ln(a b^k) is \ln a + k \ln b for positive a and b.
+[[nodiscard]] GiNaC::ex by_facts(const GiNaC::ex& e, const Facts& facts);
 
 /// The numerator of @p e over one denominator, or @p e itself when bringing it over one
 /// denominator would expand more than @p terms terms (then @p e is taken as it stands).

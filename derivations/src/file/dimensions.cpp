@@ -248,6 +248,9 @@ class DimensionWalk {
     numeric index = 2;
     if (n.children.size() == 2) {
       const ex e = s_.meaning(n.children[1]).value.x;
+      if (!GiNaC::is_a<numeric>(e) || GiNaC::ex_to<numeric>(e).is_zero()) {
+        return std::nullopt;  // not a whole number: the meaning refuses it
+      }
       index = GiNaC::ex_to<numeric>(e);
     }
     return scaled(*d, 1 / index);

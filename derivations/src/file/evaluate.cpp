@@ -231,6 +231,12 @@ class Evaluator {
     return v.x;
   }
 
+  // A denominator no one wrote (the cosine under a tangent): shown as computed.
+  void divides_by(const ex& d) {
+    denominators_.push_back(d);
+    written_.emplace_back();
+  }
+
   void divides_by(const ex& d, const Node& written) {
     denominators_.push_back(d);
     written_.push_back(
@@ -531,15 +537,15 @@ class Evaluator {
       return {false, GiNaC::cos(a), 0};
     }
     if (f == "tan") {
-      divides_by(GiNaC::cos(a), n);
+      divides_by(GiNaC::cos(a));
       return {false, GiNaC::tan(a), 0};
     }
     if (f == "cot" || f == "csc") {
-      divides_by(GiNaC::sin(a), n);
+      divides_by(GiNaC::sin(a));
       return {false, f == "cot" ? GiNaC::cos(a) / GiNaC::sin(a) : 1 / GiNaC::sin(a), 0};
     }
     if (f == "sec") {
-      divides_by(GiNaC::cos(a), n);
+      divides_by(GiNaC::cos(a));
       return {false, 1 / GiNaC::cos(a), 0};
     }
     if (f == "arcsin" || f == "arccsc") {
@@ -575,7 +581,7 @@ class Evaluator {
     }
     if (f == "log") {
       const ex base = scalar_of(n.children[1]);
-      divides_by(GiNaC::log(base), n.children[1]);
+      divides_by(GiNaC::log(base));
       return {false, GiNaC::log(a) / GiNaC::log(base), 0};
     }
     return {false, GiNaC::log(a), 0};
@@ -670,14 +676,17 @@ class Evaluator {
       }
       return written_out(n, values);
     }
-    if (!GiNaC::is_a<GiNaC::symbol>(upper) && !whole(upper)) {
+    const bool letter_plus_number = GiNaC::is_a<GiNaC::add>(upper) && upper.nops() == 2 &&
+                                    GiNaC::is_a<GiNaC::symbol>(upper.op(0)) && whole(upper.op(1));
+    if (!GiNaC::is_a<GiNaC::symbol>(upper) && !whole(upper) && !letter_plus_number) {
       throw error(n.children[2].offset,
-                  "expected a whole number or a symbol (the number of "
-                  "terms) as the upper limit of " +
+                  "expected a whole number, a symbol (the number of terms, N) or a symbol plus "
+                  "a whole number (N - 1) as the upper limit of " +
                       word);
     }
-    if (!whole(lower)) {
-      throw error(n.children[1].offset, "expected a whole number as the lower limit of " + word);
+    if (!whole(lower) && !GiNaC::is_a<GiNaC::symbol>(lower)) {
+      throw error(n.children[1].offset,
+                  "expected a whole number or a symbol as the lower limit of " + word);
     }
     s_.counts_.emplace_back(upper, lower);
     const SymbolName index_name{n.text, "", 0, false};
@@ -802,6 +811,7 @@ class Evaluator {
                   "expected the limits of the integral, \\int_a^b (an integral without limits "
                   "holds an unknown constant: it is not one side of an equation)");
     }
+    s_.integration_variable_ = variable_name;
     Value integrand;
     {
       const Binding binding(*this, variable_name, variable);
@@ -891,7 +901,8 @@ class Evaluator {
     return GiNaC::integral(variable, lower, upper, coefficient);
   }
 
-  // X\Big|_a^b: X at b minus X at a, in the bar's variable (t unless it writes x = a).
+  // X\Big|_a^b: X at b minus X at a, in the bar's variable: the one it names (|_{x = a}^{b}),
+  // else t where X holds t, else the variable of the integral read last where X holds it.
   Value bar(const Node& n) {
     const Value base = eval(n.children[0]);
     if (base.vector || base.block()) {
@@ -899,15 +910,22 @@ class Evaluator {
     }
     const bool has_upper = n.ops.find('u') != std::string::npos;
     const bool has_variable = n.ops.find('v') != std::string::npos;
-    const ex variable = has_variable ? s_.symbol_value(n.children.back().symbol).x
-                                     : s_.symbol_value(SymbolName{"t", "", 0, false}).x;
     const ex inner = base.x.subs(s_.substitutions_);
+    ex variable = s_.symbol_value(SymbolName{"t", "", 0, false}).x;
+    if (has_variable) {
+      variable = s_.symbol_value(n.children.back().symbol).x;
+    } else if (!inner.has(variable) && s_.integration_variable_ &&
+               inner.has(s_.scalar(*s_.integration_variable_))) {
+      variable = s_.scalar(*s_.integration_variable_);
+    }
     const ex lower = scalar_of(n.children[1]);
     if (has_upper && !inner.has(variable) && !has_atoms(inner)) {
-      throw error(n.offset, "expected the bar's variable in what stands before it: " +
-                                std::string(has_variable ? "the variable it names"
-                                                         : "t (write |_{x = a}^{b} for another)") +
-                                " does not appear, so the difference would be 0");
+      throw error(n.offset,
+                  "expected the bar's variable in what stands before it: " +
+                      std::string(has_variable ? "the variable it names"
+                                               : "t (or the variable of the integral before)") +
+                      " does not appear, so the difference would be 0 (name the variable: "
+                      "\\Big|_{x = a}^{b})");
     }
     if (!has_upper) {
       return {false, inner.subs(variable == lower), 0};

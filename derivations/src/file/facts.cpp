@@ -227,6 +227,43 @@ void Facts::add_relation(const ex& e, Sign sign) {
     add(expanded, sign);
     return;
   }
+  // c x with c a number: a fact on x (0 \le e is -e \le 0, that is e \geq 0).
+  if (is_a<GiNaC::mul>(expanded) && expanded.nops() == 2 && is_a<GiNaC::symbol>(expanded.op(0)) &&
+      is_a<GiNaC::numeric>(expanded.op(1)) && !expanded.op(1).is_zero()) {
+    add(expanded.op(0),
+        GiNaC::ex_to<GiNaC::numeric>(expanded.op(1)).is_positive() ? sign : flipped(sign));
+    return;
+  }
+  // A product with one factor of unknown sign, a symbol, the others of strict signs: a fact on
+  // that symbol (\omega L / 2 > 0 with L > 0: \omega > 0).
+  const ex product = is_a<GiNaC::mul>(e) ? e : expanded;
+  if (is_a<GiNaC::mul>(product) && (sign == Sign::positive || sign == Sign::negative)) {
+    std::optional<ex> unknown;
+    bool negative = sign == Sign::negative;
+    bool usable = true;
+    for (std::size_t i = 0; i < product.nops() && usable; ++i) {
+      const ex f = product.op(i);
+      const Sign s = this->sign(f);
+      if (s == Sign::positive) {
+        continue;
+      }
+      if (s == Sign::negative) {
+        negative = !negative;
+        continue;
+      }
+      if (is_a<GiNaC::symbol>(f) && !unknown) {
+        unknown = f;
+        continue;
+      }
+      usable = false;
+    }
+    if (usable && unknown) {
+      add(*unknown, negative ? Sign::negative : Sign::positive);
+    }
+  }
+  if (is_a<GiNaC::numeric>(expanded)) {
+    return;  // a number: its sign is what it is
+  }
   relations_.emplace_back(expanded, sign);
   // x - c (or c - x) with c a number bounds x.
   if (is_a<GiNaC::add>(expanded) && expanded.nops() == 2) {
@@ -248,11 +285,19 @@ void Facts::add_relation(const ex& e, Sign sign) {
         continue;
       }
       const double bound = s == sign ? c : -c;
+      const bool sharp = s == Sign::positive || s == Sign::negative;
       auto& [low, high] = bounds_[symbol];
+      auto& [low_strict, high_strict] = strict_[symbol];
       if (s == Sign::positive || s == Sign::nonnegative) {
-        low = low ? std::max(*low, bound) : bound;
+        if (!low || bound > *low || (bound == *low && sharp)) {
+          low = bound;
+          low_strict = sharp;
+        }
       } else if (s == Sign::negative || s == Sign::nonpositive) {
-        high = high ? std::min(*high, bound) : bound;
+        if (!high || bound < *high || (bound == *high && sharp)) {
+          high = bound;
+          high_strict = sharp;
+        }
       }
     }
   }
@@ -270,6 +315,7 @@ Facts Facts::carried(const std::vector<std::pair<ex, ex>>& renamed) const {
     }
     if (const auto found = bounds_.find(from); found != bounds_.end()) {
       copy.bounds_[to] = found->second;
+      copy.strict_[to] = strict_.at(from);
     }
   }
   return copy;
@@ -303,7 +349,15 @@ Sign Facts::of_symbol(const ex& symbol) const {
 
 Sign Facts::of_relation(const ex& e) const {
   for (const auto& [r, sign] : relations_) {
-    const ex ratio = GiNaC::normal(e / r);
+    if (r.is_zero() || e.is_zero()) {
+      continue;
+    }
+    ex ratio;
+    try {
+      ratio = GiNaC::normal(e / r);
+    } catch (const std::exception&) {
+      continue;
+    }
     if (is_a<GiNaC::numeric>(ratio) && !ratio.is_zero()) {
       return GiNaC::ex_to<GiNaC::numeric>(ratio).is_positive() ? sign : flipped(sign);
     }
@@ -440,13 +494,15 @@ Sign Facts::of_range(const ex& e) const {
           break;
       }
       if (const auto found = bounds_.find(x); found != bounds_.end()) {
+        const auto [low_strict, high_strict] = strict_.at(x);
         if (found->second.first && *found->second.first >= r.low) {
+          r.low_open = *found->second.first == r.low ? (r.low_open || low_strict) : low_strict;
           r.low = *found->second.first;
-          r.low_open = false;
         }
         if (found->second.second && *found->second.second <= r.high) {
+          r.high_open =
+              *found->second.second == r.high ? (r.high_open || high_strict) : high_strict;
           r.high = *found->second.second;
-          r.high_open = false;
         }
       }
       return r;
@@ -475,6 +531,16 @@ Sign Facts::of_range(const ex& e) const {
     }
     if (function_named(x, "sin") || function_named(x, "cos")) {
       return {-1, 1, false, false};
+    }
+    if (function_named(x, "log")) {
+      const Range a = range(x.op(0));
+      if (a.low < 0 || (a.low == 0 && !a.low_open)) {
+        return {};
+      }
+      const auto log_down = [](double v) { return v == 1 ? 0.0 : down(std::log(v)); };
+      const auto log_up = [](double v) { return v == 1 ? 0.0 : up(std::log(v)); };
+      return {a.low == 0 ? -infinity : log_down(a.low),
+              a.high == infinity ? infinity : log_up(a.high), a.low_open, a.high_open};
     }
     if (function_named(x, "exp")) {
       return {0, infinity, true, true};
@@ -518,8 +584,10 @@ bool Facts::satisfied(const ex& symbol, const GiNaC::numeric& value) const {
   }
   if (const auto found = bounds_.find(symbol); ok && found != bounds_.end()) {
     const double v = value.to_double();
-    ok = (!found->second.first || v >= *found->second.first) &&
-         (!found->second.second || v <= *found->second.second);
+    const auto [low_strict, high_strict] = strict_.at(symbol);
+    const auto& [low, high] = found->second;
+    ok = (!low || v > *low || (!low_strict && v == *low)) &&
+         (!high || v < *high || (!high_strict && v == *high));
   }
   return ok;
 }

@@ -86,6 +86,8 @@ class Facts {
   std::vector<GiNaC::ex> equalities_;
   std::map<GiNaC::ex, std::pair<std::optional<double>, std::optional<double>>, GiNaC::ex_is_less>
       bounds_;
+  // Whether each bound is strict (a < b), by symbol: low, high.
+  std::map<GiNaC::ex, std::pair<bool, bool>, GiNaC::ex_is_less> strict_;
 };
 
 }  // namespace impulse::derivations::file

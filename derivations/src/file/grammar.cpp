@@ -177,6 +177,9 @@ Node Grammar::term(std::size_t depth) {
     if (bare_argument_ > 0 && in(next, commands::functions)) {
       break;  // \sin a \cos b: the argument of \sin ends before \cos
     }
+    if (bare_argument_ > 0 && integrand_ > 0 && differential_ahead()) {
+      break;  // \int \sin \omega t \, dt: the argument ends before the differential
+    }
     if (big_operator(next)) {
       if (bare_argument_ > 0) {
         break;
@@ -386,6 +389,27 @@ bool Grammar::starts_atom(const Token& t) const {
     default:
       return false;
   }
+}
+
+// Whether the next tokens are a differential: dt, d x, \mathrm{d}x (inside an integrand).
+bool Grammar::differential_ahead() const {
+  std::size_t i = position_;
+  while (tokens_[i].kind == Tok::spacing) {
+    ++i;
+  }
+  const Token& t = tokens_[i];
+  if (t.kind == Tok::letter && t.text == "d") {
+    std::size_t k = i + 1;
+    while (tokens_[k].kind == Tok::spacing) {
+      ++k;
+    }
+    return tokens_[k].kind == Tok::letter ||
+           (tokens_[k].kind == Tok::command && commands::greek.contains(tokens_[k].text));
+  }
+  return (is_command(t, "\\mathrm") || is_command(t, "\\text") ||
+          is_command(t, "\\operatorname")) &&
+         is_char(tokens_[i + 1], '{') && tokens_[i + 2].kind == Tok::letter &&
+         tokens_[i + 2].text == "d" && is_char(tokens_[i + 3], '}');
 }
 
 }  // namespace impulse::derivations::file

@@ -84,6 +84,7 @@ class Grammar {
   [[nodiscard]] bool explicit_product(const Token& t) const;
   [[nodiscard]] bool starts_atom(const Token& t) const;
   [[nodiscard]] static bool big_operator(const Token& t);
+  [[nodiscard]] bool differential_ahead() const;
 
   // ---- atoms (grammar_atoms.cpp) ----
   Node atom(std::size_t depth);
@@ -131,6 +132,7 @@ class Grammar {
   int norm_depth_ = 0;     // inside \|…\|: a '\|' closes
   int sized_depth_ = 0;    // inside \bigl( … \bigr): a sized closing delimiter closes
   int bare_argument_ = 0;  // inside a function's argument written without parentheses
+  int integrand_ = 0;      // inside an integrand: a differential ends a bare argument
 };
 
 }  // namespace impulse::derivations::file

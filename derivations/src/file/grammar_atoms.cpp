@@ -269,6 +269,10 @@ Node Grammar::argument(std::size_t depth, const Token& before, const std::string
       (next.kind == Tok::command && commands::greek.contains(next.text))) {
     return symbol_atom(depth);
   }
+  if (next.kind == Tok::command &&
+      (commands::fractions.contains(next.text) || next.text == "\\pi")) {
+    return command(depth);  // x^\frac{1}{2}: the command takes its own arguments
+  }
   throw error(next, "expected " + (what.empty() ? "an argument after " + before.text : what) +
                         " at " + where(before) + " (a digit, a letter or {…}), found " +
                         describe(next));

@@ -116,7 +116,9 @@ Node Grammar::integral(std::size_t depth, const Token& op) {
   if (!starts_atom(peek()) && !big_operator(peek())) {
     throw error(peek(), "expected the integrand after \\int (ending in its differential, dt)");
   }
+  ++integrand_;
   n.children.push_back(term(depth + 1));
+  --integrand_;
   if (path) {
     if (upper) {
       throw error(op, "expected no upper limit on an integral along a path (\\int_{\\mathcal{A}})");

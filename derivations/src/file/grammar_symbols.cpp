@@ -43,6 +43,11 @@ Node Grammar::symbol_atom(std::size_t depth) {
     }
     return inner;
   } else if (commands::modifiers.contains(first.text)) {
+    if (first.text == "\\overline") {
+      throw error(first,
+                  "expected \\bar x for a symbol of its own: \\overline could be a mean "
+                  "or a complex conjugate (or a line over several symbols)");
+    }
     take();
     Node inner = argument(depth + 1, first);
     if (inner.kind != NodeKind::symbol || !inner.symbol.subscript.empty() ||
@@ -135,6 +140,10 @@ std::string Grammar::name_group(const Token& command_token) {
   }
   if (text.empty()) {
     throw error(open, "expected a name inside " + command_token.text + "{}");
+  }
+  if (text[0] >= '0' && text[0] <= '9') {
+    throw error(open, "expected a name beginning with a letter inside " + command_token.text +
+                          "{…}, found " + text + " (a number is written without it)");
   }
   return text;
 }

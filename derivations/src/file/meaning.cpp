@@ -284,6 +284,10 @@ Value Symbols::block_value(const Block& block, std::size_t offset,
 }
 
 Node with_index(const Node& node, const std::string& index, long value) {
+  return with_index_text(node, index, std::to_string(value));
+}
+
+Node with_index_text(const Node& node, const std::string& index, const std::string& value) {
   Node copy = node;
   if (copy.kind == NodeKind::symbol) {
     std::string& sub = copy.symbol.subscript;
@@ -291,7 +295,7 @@ Node with_index(const Node& node, const std::string& index, long value) {
     if (plain > 0 && sub.substr(0, plain).find(index[0]) != std::string::npos) {
       std::string out;
       for (const char c : sub.substr(0, plain)) {
-        out += c == index[0] ? std::to_string(value) : std::string(1, c);
+        out += c == index[0] ? value : std::string(1, c);
       }
       sub = out + sub.substr(plain);
     }
@@ -302,7 +306,7 @@ Node with_index(const Node& node, const std::string& index, long value) {
     return copy;  // the inner sum binds the index again
   }
   for (Node& child : copy.children) {
-    child = with_index(child, index, value);
+    child = with_index_text(child, index, value);
   }
   return copy;
 }
@@ -441,20 +445,56 @@ bool Symbols::indexed_by(const ex& s, const ex& index) const {
 
 ex Symbols::at_index(const ex& body, const ex& index, long value,
                      std::vector<std::pair<ex, ex>>* renamed) {
+  return at_index(body, index, ex(value), renamed);
+}
+
+std::optional<std::string> Symbols::index_text(const ex& value) const {
+  if (GiNaC::is_a<GiNaC::numeric>(value)) {
+    const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(value);
+    if (!n.is_integer()) {
+      return std::nullopt;
+    }
+    std::ostringstream text;
+    text << n;
+    return text.str();
+  }
+  // A letter (N, j) or a letter plus a whole number (N - 1).
+  ex letter = value;
+  long k = 0;
+  if (GiNaC::is_a<GiNaC::add>(value) && value.nops() == 2 &&
+      GiNaC::is_a<GiNaC::numeric>(value.op(1)) &&
+      GiNaC::ex_to<GiNaC::numeric>(value.op(1)).is_integer()) {
+    letter = value.op(0);
+    k = GiNaC::ex_to<GiNaC::numeric>(value.op(1)).to_long();
+  }
+  const SymbolInfo* i = info(letter);
+  if (!GiNaC::is_a<GiNaC::symbol>(letter) || i == nullptr || i->of || !i->name.subscript.empty() ||
+      i->name.primes != 0 || i->name.base.size() != 1) {
+    return std::nullopt;
+  }
+  return k == 0 ? i->name.base : i->name.base + (k > 0 ? "+" : "") + std::to_string(k);
+}
+
+ex Symbols::at_index(const ex& body, const ex& index, const ex& value,
+                     std::vector<std::pair<ex, ex>>* renamed) {
   const SymbolInfo* letter = info(index);
+  const std::optional<std::string> text = index_text(value);
+  if (letter == nullptr || !text) {
+    return body.subs(index == value);
+  }
   GiNaC::exmap map{{index, value}};
   for (auto i = body.preorder_begin(); i != body.preorder_end(); ++i) {
     if (!GiNaC::is_a<GiNaC::symbol>(*i) || map.count(*i) != 0 || !indexed_by(*i, index)) {
       continue;
     }
     const SymbolInfo* s = info(*i);
-    if (s == nullptr || letter == nullptr) {
+    if (s == nullptr) {
       continue;
     }
     Node node;
     node.kind = NodeKind::symbol;
     node.symbol = s->of ? *s->of : s->name;
-    const SymbolName moved = with_index(node, letter->name.base, value).symbol;
+    const SymbolName moved = with_index_text(node, letter->name.base, *text).symbol;
     const Value v = symbol_value(moved);
     const ex target = s->of ? (s->component == 0 ? v.x : v.y) : v.x;
     map[*i] = target;

@@ -84,6 +84,9 @@ struct SymbolInfo {
 /// symbols (subscripts of up to three letters and digits: a_{vi} with i = 2 is a_{v2}), except
 /// inside a sum over the same index.
 [[nodiscard]] Node with_index(const Node& node, const std::string& index, long value);
+/// The same with the index written as @p value ("N", "N-1").
+[[nodiscard]] Node with_index_text(const Node& node, const std::string& index,
+                                   const std::string& value);
 /// How much of a subscript can hold indices: all of a plain one (one to three letters and
 /// digits), or the plain part before a word in parentheses (a_{vi(elastic)}, the paper's names of
 /// its coefficients); 0 for none.
@@ -141,6 +144,13 @@ class Symbols {
   /// renamed, with the symbol they came from, are added to @p renamed when given.
   [[nodiscard]] GiNaC::ex at_index(const GiNaC::ex& body, const GiNaC::ex& index, long value,
                                    std::vector<std::pair<GiNaC::ex, GiNaC::ex>>* renamed = nullptr);
+  /// The same at a value that is a letter (another index, N) or a letter plus a whole number
+  /// (N - 1): m_i at N - 1 is the symbol m_{N-1}.
+  [[nodiscard]] GiNaC::ex at_index(const GiNaC::ex& body, const GiNaC::ex& index,
+                                   const GiNaC::ex& value,
+                                   std::vector<std::pair<GiNaC::ex, GiNaC::ex>>* renamed = nullptr);
+  /// How a value of an index is written in a subscript ("2", "N", "N-1"), if it can be.
+  [[nodiscard]] std::optional<std::string> index_text(const GiNaC::ex& value) const;
   /// Whether the symbol @p s is indexed by the index @p index (m_i by i).
   [[nodiscard]] bool indexed_by(const GiNaC::ex& s, const GiNaC::ex& index) const;
 
@@ -227,6 +237,7 @@ class Symbols {
   GiNaC::exmap substitutions_;
   std::map<std::string, FunctionDeclaration> functions_;  // latex key → declaration
   std::vector<std::pair<GiNaC::ex, GiNaC::ex>> counts_;   // a sum's upper limit, its lower
+  std::optional<SymbolName> integration_variable_;        // of the last integral read (for a bar)
 };
 
 /// Reads the dimension of `units:` ("M L T^-1", "M L^{2}", "1").

@@ -438,6 +438,9 @@ class Sampler {
         return false;
       }
     }
+    if (!facts_.satisfied_numerically(symbols_, values_)) {
+      return false;  // a fact on an expression (m_1 + m_2 > 0, e \leq 1)
+    }
     for (std::size_t i = 0; i < premises_.size(); ++i) {
       const double value = premises_[i](values_);
       const double scale = premise_scales_[i](values_);

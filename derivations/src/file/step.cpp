@@ -128,6 +128,72 @@ std::optional<ex> proportional(const ex& target, const ex& premise, std::uint64_
   return ratio ? std::optional<ex>(*ratio) : std::nullopt;
 }
 
+// The scalars with the functions the rules write out replaced (three rounds: a rule's value may
+// hold a function another rule writes out).
+Scalars by_rules(Scalars s, const std::vector<Rule>& rules) {
+  for (std::vector<ex>* list : {&s.differences, &s.scales, &s.denominators}) {
+    for (ex& d : *list) {
+      for (int round = 0; round < 3 && has_atoms(d); ++round) {
+        d = rewritten(d, rules);
+      }
+    }
+  }
+  return s;
+}
+
+// e with tangents, cotangents and secants written through sines and cosines, over one
+// denominator, its numerator (3 \cos^2 \tan^2 - 4 is 3 \sin^2 - 4: its range shows its sign).
+ex in_sines(const ex& e) {
+  if (expanded_terms(e) > 200) {
+    return e;
+  }
+  struct Sines : GiNaC::map_function {
+    ex operator()(const ex& x) override {
+      if (GiNaC::is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "tan") {
+        return GiNaC::sin(x.op(0)) / GiNaC::cos(x.op(0));
+      }
+      return x.map(*this);
+    }
+  } sines;
+  try {
+    return GiNaC::normal(sines(e)).numer();
+  } catch (const std::exception&) {
+    return e;
+  }
+}
+
+// e reduced by equalities, each a polynomial with a whole-number leading coefficient in one of
+// its symbols: the remainder of e's numerator and denominator on division by it.
+ex reduced(const ex& e, const std::vector<ex>& equalities) {
+  if (equalities.empty() || expanded_terms(e) > 2000) {
+    return e;
+  }
+  ex parts;
+  try {
+    parts = GiNaC::normal(e).numer_denom();
+  } catch (const std::exception&) {
+    return e;
+  }
+  ex numerator = GiNaC::expand(parts.op(0));
+  ex denominator = GiNaC::expand(parts.op(1));
+  for (const ex& q : equalities) {
+    const ex p = GiNaC::expand(q);
+    for (const ex& v : symbols_of(p)) {
+      if (!p.is_polynomial(v) || p.degree(v) < 1 || !GiNaC::is_a<GiNaC::numeric>(p.lcoeff(v)) ||
+          !numerator.is_polynomial(v) || !denominator.is_polynomial(v)) {
+        continue;
+      }
+      numerator = GiNaC::expand(GiNaC::rem(numerator, p, v));
+      denominator = GiNaC::expand(GiNaC::rem(denominator, p, v));
+      break;
+    }
+  }
+  if (denominator.is_zero()) {
+    return e;
+  }
+  return numerator / denominator;
+}
+
 }  // namespace
 
 std::string latex_of(const ex& e) {
@@ -224,7 +290,20 @@ EquationResult Checker::check(const std::vector<Equation>& equations, std::size_
     r.verdict = Verdict::premise;
     return r;
   }
-  decide(equations, e, index, r);
+  try {
+    decide(equations, e, index, r);
+  } catch (const std::exception& failure) {
+    // GiNaC or CLN gave up on an expression (an internal error of theirs): no verdict.
+    EquationResult fresh;
+    fresh.line = r.line;
+    fresh.column = r.column;
+    fresh.tag = r.tag;
+    fresh.latex = r.latex;
+    fresh.from = r.from;
+    r = std::move(fresh);
+    r.verdict = Verdict::undecided;
+    r.how = std::string("the computer algebra stopped on this step: ") + failure.what();
+  }
   return r;
 }
 
@@ -289,6 +368,104 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
   }
 }
 
+// Sums over an index in one form: from 1 to the letter of the upper limit (\sum_{i=1}^{N-1} is
+// \sum_{i=1}^{N} less its last term), over the index of the first sum with those limits
+// (\sum_j m_j is \sum_i m_i, the facts on m_j carried to m_i).
+void Checker::sums_in_one_form(Scalars& before, Scalars& step, Facts& facts) {
+  std::vector<std::vector<ex>*> lists{&before.differences, &before.denominators, &step.differences,
+                                      &step.denominators};
+  std::vector<std::pair<std::string, ex>> sums;
+  for (const std::vector<ex>* list : lists) {
+    for (const ex& e : *list) {
+      for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+        if (GiNaC::is_a<GiNaC::function>(*i) &&
+            GiNaC::ex_to<GiNaC::function>(*i).get_name() == "indexed_sum") {
+          std::ostringstream text;
+          text << *i;
+          sums.emplace_back(text.str(), *i);
+        }
+      }
+    }
+  }
+  if (sums.empty()) {
+    return;
+  }
+  std::sort(sums.begin(), sums.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  GiNaC::exmap replaced;
+  std::vector<std::pair<ex, ex>> renamed;
+  std::map<std::string, ex> first_index;  // limits → the index of the first sum with them
+  for (const auto& [text, sum] : sums) {
+    if (replaced.count(sum) != 0) {
+      continue;
+    }
+    const ex body = sum.op(0);
+    const ex index = sum.op(1);
+    ex lower = sum.op(2);
+    ex upper = GiNaC::expand(sum.op(3));
+    ex outside = 0;
+    // The limits: lower 1, upper a letter.
+    long k = 0;
+    if (GiNaC::is_a<GiNaC::add>(upper) && GiNaC::is_a<GiNaC::numeric>(upper.op(upper.nops() - 1)) &&
+        GiNaC::ex_to<GiNaC::numeric>(upper.op(upper.nops() - 1)).is_integer()) {
+      k = GiNaC::ex_to<GiNaC::numeric>(upper.op(upper.nops() - 1)).to_long();
+      upper = upper - k;
+    }
+    const bool whole_lower =
+        GiNaC::is_a<GiNaC::numeric>(lower) && GiNaC::ex_to<GiNaC::numeric>(lower).is_integer();
+    if (whole_lower && std::abs(k) <= 3 && !GiNaC::is_a<GiNaC::numeric>(upper)) {
+      const long l = GiNaC::ex_to<GiNaC::numeric>(lower).to_long();
+      if (l >= -3 && l <= 4) {
+        for (long j = 1; j < l; ++j) {
+          outside -= symbols_.at_index(body, index, ex(j), &renamed);
+        }
+        for (long j = l; j < 1; ++j) {
+          outside += symbols_.at_index(body, index, ex(j), &renamed);
+        }
+        for (long j = 1; j <= k; ++j) {
+          outside += symbols_.at_index(body, index, upper + j, &renamed);
+        }
+        for (long j = 0; j < -k; ++j) {
+          outside -= symbols_.at_index(body, index, upper - j, &renamed);
+        }
+        lower = 1;
+      } else {
+        upper = upper + k;
+      }
+    } else {
+      upper = upper + k;
+    }
+    // The index: the first one seen with these limits.
+    std::ostringstream limits;
+    limits << lower << ".." << upper;
+    ex canonical_body = body;
+    ex canonical_index = index;
+    const auto [at, fresh] = first_index.emplace(limits.str(), index);
+    if (!fresh && !at->second.is_equal(index) && !body.has(at->second)) {
+      canonical_index = at->second;
+      canonical_body = symbols_.at_index(body, index, canonical_index, &renamed);
+    }
+    replaced[sum] = indexed_sum(canonical_body, canonical_index, lower, upper) + outside;
+  }
+  for (std::vector<ex>* list : lists) {
+    for (ex& e : *list) {
+      e = e.subs(replaced, GiNaC::subs_options::no_pattern);
+    }
+  }
+  facts = facts.carried(renamed);
+}
+
+// e under an instance, and the symbols that name a sum's limit renamed too (m_N at N = 2 is
+// m_2).
+ex Checker::instantiated(const ex& e, const Instance& instance,
+                         std::vector<std::pair<ex, ex>>& renamed) {
+  ex x = instantiate(e, instance, at_index(renamed));
+  for (const auto& [limit, value] : instance.limits) {
+    x = symbols_.at_index(x, limit, value, &renamed);
+  }
+  return x;
+}
+
 AtIndex Checker::at_index(std::vector<std::pair<ex, ex>>& renamed) {
   return [this, &renamed](const ex& body, const ex& index, long value) {
     return symbols_.at_index(body, index, value, &renamed);
@@ -298,20 +475,21 @@ AtIndex Checker::at_index(std::vector<std::pair<ex, ex>>& renamed) {
 // The exact method on each component; functions, integrals and sums that cannot be done are
 // unknowns of their own (atoms), which is sound for a step that holds whatever they are. A
 // failure among them is only reported when a formula for them shows it (instance_failure).
-Checker::Forward Checker::exact(const Scalars& before, const Scalars& step, const Facts& facts,
-                                const Budget& budget) {
+Checker::Forward Checker::exact(const Scalars& given_before, const Scalars& given_step,
+                                const Facts& given_facts, const Budget& budget) {
+  Scalars before = given_before;
+  Scalars step = given_step;
+  Facts facts = given_facts;
+  sums_in_one_form(before, step, facts);
   Atoms atoms;
-  Scalars hidden_before = before;
-  Scalars hidden_step = step;
   // A function an equation before writes out (F(t) = \frac{dp}{dt}) is replaced by what it is
   // equal to, inside integrals and derivatives too.
   const std::vector<Rule> rules = rules_of(before.differences);
+  Scalars hidden_before = by_rules(before, rules);
+  Scalars hidden_step = by_rules(step, rules);
   for (Scalars* s : {&hidden_before, &hidden_step}) {
     for (std::vector<ex>* list : {&s->differences, &s->denominators}) {
       for (ex& d : *list) {
-        for (int round = 0; round < 3 && has_atoms(d); ++round) {
-          d = rewritten(d, rules);
-        }
         d = atoms.hide(d);
       }
     }
@@ -330,19 +508,31 @@ Checker::Forward Checker::exact(const Scalars& before, const Scalars& step, cons
   Forward forward{run({}), ""};
   using O = Implication::Outcome;
   if (forward.implication.outcome != O::holds && !facts.equalities().empty()) {
-    // The facts' equalities (a unit vector) as equations before, where the step needs them.
+    // The facts' equalities (a unit vector) as equations before, where the step needs them;
+    // and everything reduced by them (n_x^2 is 1 - n_y^2 where n_x^2 + n_y^2 = 1).
     std::vector<ex> equalities;
     for (const ex& q : facts.equalities()) {
       equalities.push_back(atoms.hide(q));
     }
+    const Scalars plain_before = hidden_before;
+    const Scalars plain_step = hidden_step;
+    for (Scalars* s : {&hidden_before, &hidden_step}) {
+      for (std::vector<ex>* list : {&s->differences, &s->denominators}) {
+        for (ex& d : *list) {
+          d = reduced(d, equalities);
+        }
+      }
+    }
     Forward with{run(equalities), ""};
+    hidden_before = plain_before;
+    hidden_step = plain_step;
     if (with.implication.outcome == O::holds || with.implication.outcome == O::holds_if ||
         forward.implication.outcome == O::unknown) {
       forward = with;
     }
   }
   if (forward.implication.outcome == O::holds_if) {
-    drop_given_conditions(forward.implication, hidden_before, facts, budget);
+    drop_given_conditions(forward.implication, hidden_before, hidden_step, facts, budget);
   }
   if (atoms.any()) {
     Implication& i = forward.implication;
@@ -367,8 +557,11 @@ Checker::Forward Checker::exact(const Scalars& before, const Scalars& step, cons
 
 // Small formulas for the file's functions and values for the numbers of terms of its sums, in
 // turn: a failure under one of them is a real counterexample.
-Checker::Forward Checker::instance_failure(const Scalars& before, const Scalars& step,
+Checker::Forward Checker::instance_failure(const Scalars& given_before, const Scalars& given_step,
                                            const Facts& facts, const Budget& budget) {
+  const std::vector<Rule> rules = rules_of(given_before.differences);
+  const Scalars before = by_rules(given_before, rules);
+  const Scalars step = by_rules(given_step, rules);
   std::vector<ex> all = before.differences;
   all.insert(all.end(), step.differences.begin(), step.differences.end());
   for (const Instance& instance : instances(all, 6)) {
@@ -379,7 +572,7 @@ Checker::Forward Checker::instance_failure(const Scalars& before, const Scalars&
     const AtIndex at = at_index(renamed);
     const auto apply = [&](std::vector<ex> list) {
       for (ex& x : list) {
-        x = instantiate(x, instance, at);
+        x = instantiated(x, instance, renamed);
       }
       return list;
     };
@@ -387,7 +580,7 @@ Checker::Forward Checker::instance_failure(const Scalars& before, const Scalars&
     // it: under the formulas, each power of the variable on its own.
     std::vector<ex> premises;
     for (const ex& p : before.differences) {
-      ex written = instantiate(p, instance, at);
+      ex written = instantiated(p, instance, renamed);
       std::vector<ex> parts{written};
       for (const ex& v : function_variables(p)) {
         std::vector<ex> split;
@@ -431,14 +624,47 @@ Checker::Forward Checker::instance_failure(const Scalars& before, const Scalars&
 
 // A condition c ≠ 0 that the facts give (m_1 + m_2 > 0), or that the equations before give
 // (no values satisfy them where c = 0), is no condition.
-void Checker::drop_given_conditions(Implication& forward, const Scalars& before, const Facts& facts,
+void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
+                                    const Scalars& step, const Facts& facts,
                                     const Budget& budget) const {
   std::vector<ex> kept;
   Budget quick = budget;
   quick.attempts = 24;
   quick.candidates = 1;
+  // The denominators as written (and their factors): I + m (r_x n_y - r_y n_x)^2 shows its
+  // sign as written, not once expanded.
+  std::vector<ex> written;
+  for (const Scalars* s : {&before, &step}) {
+    for (const ex& d : s->denominators) {
+      written.push_back(d);
+      if (GiNaC::is_a<GiNaC::mul>(d)) {
+        for (std::size_t i = 0; i < d.nops(); ++i) {
+          written.push_back(d.op(i));
+        }
+      }
+    }
+  }
+  const auto given_as_written = [&](const ex& c) {
+    for (const ex& d : written) {
+      if (expanded_terms(d) > 200 || expanded_terms(c) > 200 || !facts.nonzero(d)) {
+        continue;
+      }
+      // c is d times something the facts keep from zero (1/m + …/I and I m (…)).
+      if (facts.nonzero(GiNaC::factor(GiNaC::normal(c / d)))) {
+        return true;
+      }
+    }
+    return false;
+  };
+  // c reduced by the facts' equalities is a number: n_x^2 + n_y^2 where n_x^2 + n_y^2 = 1.
+  const auto given_by_equality = [&](const ex& c) {
+    const ex rest = reduced(c, facts.equalities());
+    return GiNaC::is_a<GiNaC::numeric>(rest) && !rest.is_zero();
+  };
   for (const ex& c : forward.conditions) {
-    if (facts.nonzero(c) || facts.nonzero(GiNaC::factor(GiNaC::normal(c)))) {
+    if (facts.nonzero(c) || given_as_written(c) || given_by_equality(c) ||
+        facts.nonzero(in_sines(c)) ||
+        (expanded_terms(c) <= 200 && facts.nonzero(GiNaC::factor(GiNaC::normal(c))))) {
       continue;
     }
     std::vector<ex> premises = before.differences;
@@ -461,8 +687,9 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
 // where a denominator is. Functions and sums get the first instance's formulas.
 NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, const Forward& forward,
                                 const Facts& facts, std::size_t index) {
-  Scalars b = before;
-  Scalars s = step;
+  const std::vector<Rule> rules = rules_of(before.differences);
+  Scalars b = by_rules(before, rules);
+  Scalars s = by_rules(step, rules);
   Facts f = facts;
   std::vector<ex> all = before.differences;
   all.insert(all.end(), step.differences.begin(), step.differences.end());
@@ -470,11 +697,45 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
     const std::vector<Instance> list = instances(all, 1);
     std::vector<std::pair<ex, ex>> renamed;
     const AtIndex at = at_index(renamed);
-    for (Scalars* x : {&b, &s}) {
-      for (std::vector<ex>* v : {&x->differences, &x->scales, &x->denominators}) {
-        for (ex& e : *v) {
-          e = list.empty() ? e : instantiate(e, list[0], at);
+    std::vector<ex> premises;
+    std::vector<ex> scales;
+    for (std::size_t k = 0; k < b.differences.size(); ++k) {
+      // An equation that names a function at its variable holds for every value of it: each
+      // power of the variable on its own, under the formulas.
+      const ex written =
+          list.empty() ? b.differences[k] : instantiated(b.differences[k], list[0], renamed);
+      std::vector<ex> parts{written};
+      for (const ex& v : function_variables(b.differences[k])) {
+        std::vector<ex> split;
+        for (const ex& part : parts) {
+          const ex expanded = GiNaC::expand(GiNaC::normal(part).numer());
+          if (!expanded.has(v) || !expanded.is_polynomial(v)) {
+            split.push_back(part);
+            continue;
+          }
+          for (int d = 0; d <= expanded.degree(v); ++d) {
+            split.push_back(expanded.coeff(v, d));
+          }
         }
+        parts = split;
+      }
+      for (const ex& p : parts) {
+        premises.push_back(p);
+        scales.push_back(term_scale(p));
+      }
+    }
+    b.differences = premises;
+    b.scales = scales;
+    for (Scalars* x : {&b, &s}) {
+      for (std::vector<ex>* v : {&x->denominators}) {
+        for (ex& e : *v) {
+          e = list.empty() ? e : instantiated(e, list[0], renamed);
+        }
+      }
+    }
+    for (std::vector<ex>* v : {&s.differences, &s.scales}) {
+      for (ex& e : *v) {
+        e = list.empty() ? e : instantiated(e, list[0], renamed);
       }
     }
     f = facts.carried(renamed);
@@ -507,38 +768,49 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
   return numeric;
 }
 
-std::optional<Implication> Checker::converse(const Scalars& before, const Scalars& step,
+std::optional<Implication> Checker::converse(const Scalars& given_before, const Scalars& given_step,
                                              const Facts& facts, const Budget& budget) {
   using O = Implication::Outcome;
   // Only whether the converse fails matters here, not the nicest point that shows it.
   Budget quick = budget;
   quick.attempts = 48;
   quick.candidates = 1;
+  // The step is the equation before now: the functions it writes out are replaced.
+  Scalars one_before = given_before;
+  Scalars one_step = given_step;
+  Facts one_facts = facts;
+  sums_in_one_form(one_before, one_step, one_facts);
+  const std::vector<Rule> rules = rules_of(one_step.differences);
+  const Scalars before = by_rules(one_before, rules);
+  const Scalars step = by_rules(one_step, rules);
   Atoms atoms;
-  std::vector<ex> premises;
-  std::vector<ex> premise_denominators;
-  for (const ex& d : step.differences) {
-    premises.push_back(atoms.hide(d));
-  }
-  for (const ex& d : step.denominators) {
-    premise_denominators.push_back(atoms.hide(d));
-  }
+  std::vector<ex> equalities;
   for (const ex& q : facts.equalities()) {
-    premises.push_back(atoms.hide(q));
+    equalities.push_back(atoms.hide(q));
   }
-  std::vector<ex> target_denominators;
-  for (const ex& d : before.denominators) {
-    target_denominators.push_back(atoms.hide(d));
-  }
-  bool all = true;
-  for (const ex& target : before.differences) {
-    Implication back = implies(
-        {premises, premise_denominators, atoms.hide(target), target_denominators}, facts, quick);
-    if (back.outcome == O::holds_if) {
-      drop_given_conditions(back, Scalars{premises, {}, premise_denominators, {}}, facts, quick);
+  const auto hidden = [&](const std::vector<ex>& list) {
+    std::vector<ex> out;
+    for (const ex& d : list) {
+      out.push_back(reduced(atoms.hide(d), equalities));
     }
-    if (back.outcome == O::fails && atoms.any()) {
-      back.outcome = O::unknown;  // values of atoms alone: not a counterexample
+    return out;
+  };
+  std::vector<ex> premises = hidden(step.differences);
+  premises.insert(premises.end(), equalities.begin(), equalities.end());
+  const std::vector<ex> premise_denominators = hidden(step.denominators);
+  const std::vector<ex> target_denominators = hidden(before.denominators);
+  bool all = true;
+  for (const ex& target : hidden(before.differences)) {
+    Implication back =
+        implies({premises, premise_denominators, target, target_denominators}, facts, quick);
+    if (back.outcome == O::holds_if) {
+      drop_given_conditions(back, Scalars{premises, {}, premise_denominators, {}},
+                            Scalars{{}, {}, target_denominators, {}}, facts, quick);
+    }
+    if ((back.outcome == O::fails || back.outcome == O::unknown) && atoms.any()) {
+      // Values of atoms alone are no counterexample: a formula must show it.
+      Forward failure = instance_failure(given_step, given_before, facts, quick);
+      back = failure.implication.outcome == O::fails ? failure.implication : Implication{};
     }
     if (back.outcome == O::fails || back.outcome == O::holds_if) {
       return back;

@@ -74,8 +74,8 @@ class Checker {
                          const Facts& facts, std::size_t index);
   std::optional<Implication> converse(const Scalars& before, const Scalars& step,
                                       const Facts& facts, const Budget& budget);
-  void drop_given_conditions(Implication& forward, const Scalars& before, const Facts& facts,
-                             const Budget& budget) const;
+  void drop_given_conditions(Implication& forward, const Scalars& before, const Scalars& step,
+                             const Facts& facts, const Budget& budget) const;
   void conclude(const Scalars& before, const Scalars& step, const Forward& forward,
                 const NumericOpinion& numeric, const Facts& facts, const Budget& budget,
                 EquationResult& r);
@@ -90,6 +90,9 @@ class Checker {
   void numeric_point(const std::vector<std::pair<GiNaC::ex, double>>& values,
                      EquationResult& r) const;
   [[nodiscard]] AtIndex at_index(std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& renamed);
+  void sums_in_one_form(Scalars& before, Scalars& step, Facts& facts);
+  [[nodiscard]] GiNaC::ex instantiated(const GiNaC::ex& e, const Instance& instance,
+                                       std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& renamed);
 
   Symbols& symbols_;
   const DerivationOptions& options_;

@@ -97,7 +97,8 @@ KEPT = [
     (r"(\csc x)(\sec y)", F, "\\csc and \\sec", r"\frac{1}{\sin(x) \cos(y)}",
      "1/(sin(x)*cos(y))"),
     (r"\frac{d}{dx} x", F, "a derivative", r"1", "1"),
-    (r"\frac{d}{dt} x", F, "a derivative (x does not depend on t)", r"0", "0"),
+    (r"\frac{d}{dt} x", R, "x is no declared function of t: a derivative that would be 0 is "
+     "refused rather than guessed (declare x with function:)", None, None),
     (r"|x|", E, "|x| is " + NOT_CONTRACT + " (the docs accept it)", r"\left| x \right|",
      "Abs(x)"),
     (r"||x||", E, "bars are " + NOT_CONTRACT + " (a norm, or nested absolute values)",
