@@ -1,11 +1,4 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// GCC 12, optimising, follows Eigen's view of a sparse matrix as CHOLMOD's (viewAsCholmod) into a
-// path where the matrix has no storage, which nothing here takes, and warns of a null pointer in
-// Eigen's own header (the warning is raised where it is inlined, so Eigen's system headers do not
-// silence it).
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wnull-dereference"
-#endif
 #include "shifted_factor.hpp"
 
 #include <Eigen/SparseCholesky>
