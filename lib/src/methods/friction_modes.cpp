@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "friction_modes.hpp"
 
-#include <Eigen/LU>
-#include <Eigen/QR>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <algorithm>
@@ -21,7 +19,6 @@ namespace impulse::methods::detail {
 namespace {
 
 using Eigen::Index;
-using Eigen::MatrixXd;
 using Eigen::VectorXd;
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
@@ -163,14 +160,8 @@ bool solve_modes(const FrictionSystem& s, const SparseMatrix& W, const std::vect
     y = lu.solve(rhs);
   }
   if (!solves(y)) {
-    // Dependent equations: the least-norm solution, if they agree.
-    Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod;
-    cod.setThreshold(static_cast<double>(k) * std::numeric_limits<double>::epsilon());
-    cod.compute(MatrixXd(K));
-    y = cod.solve(rhs);
-    if (!solves(y)) {
-      return false;
-    }
+    // Dependent equations (a pyramid's box on two boxes): Lemke's method takes the problem.
+    return false;
   }
   VectorXd total = VectorXd::Zero(n);  // each sticking group's tangential impulse
   VectorXd bound = VectorXd::Zero(n);  // and the sum of its contacts' bounds mu P_n
