@@ -6,6 +6,10 @@ set(IMPULSELAB_WASM_DIR "${PROJECT_SOURCE_DIR}/build/wasm"
     CACHE PATH "The build folder of the wasm preset, whose web/site/ holds the page")
 set(IMPULSELAB_WEB_SITE_DIR "${IMPULSELAB_WASM_DIR}/web/site" CACHE INTERNAL
     "The page staged by the wasm build, copied into the docs site")
+# Its files, with the presets and the module the wasm build writes beside them.
+include(${CMAKE_CURRENT_SOURCE_DIR}/cmake/page_files.cmake)
+set(IMPULSELAB_WEB_SITE_FILES ${IMPULSELAB_WEB_PAGE_FILES} presets.js impulselab-wasm.js CACHE INTERNAL
+    "The files of the staged page that the docs site copies")
 
 add_custom_target(web_module
   COMMAND "${CMAKE_COMMAND}" "-DSOURCE_DIR=${PROJECT_SOURCE_DIR}" "-DWASM_DIR=${IMPULSELAB_WASM_DIR}"
@@ -21,6 +25,17 @@ if(IMPULSELAB_BUILD_TESTS AND IMPULSELAB_BUILD_DOCS AND TARGET impulselab)
   foreach(group IN ITEMS presets scenes malformed interaction links friction)
     add_test(NAME web:${group}
       COMMAND "${IMPULSELAB_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/test/page_test.mjs" ${group}
+        --site "${PROJECT_BINARY_DIR}/docs/html"
+        --cli "$<TARGET_FILE:impulselab>"
+        --source "${PROJECT_SOURCE_DIR}"
+        --screenshots "${CMAKE_CURRENT_BINARY_DIR}/screenshots")
+    set_tests_properties(web:${group} PROPERTIES LABELS web TIMEOUT 600)
+  endforeach()
+  # The page as a lab bench: the motion, building on the canvas, side by side and the sweep, and
+  # what readers found wrong (screenshots of the editor, the comparison and the sweep too).
+  foreach(group IN ITEMS motion editor compare defects)
+    add_test(NAME web:${group}
+      COMMAND "${IMPULSELAB_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/test/bench_test.mjs" ${group}
         --site "${PROJECT_BINARY_DIR}/docs/html"
         --cli "$<TARGET_FILE:impulselab>"
         --source "${PROJECT_SOURCE_DIR}"
