@@ -29,7 +29,6 @@
       if (sweep) {
         collide.timed('sweep', renderSweep);
       }
-      document.body.dataset.sideShown = String(Number(document.body.dataset.sideShown || 0) + 1);
     }, 0);
   };
 
@@ -55,6 +54,7 @@
     $('compare-warnings').innerHTML = [...out.warnings, ...(out.unfinished ? out.unfinished.split('\n') : [])]
         .map((w) => `<li>${escapeHtml(w)}</li>`).join('');
     const view = $('compare-view');
+    view.dataset.shows = `${what} ${state.version}`;  // which comparison of which scene (for the tests)
     if (!out.result) {
       view.textContent = '';
       return;
@@ -73,7 +73,7 @@
     const rows = [];
     const impulses = first.impulses.slice(0, 12);
     for (const i of impulses) {
-      rows.push([`Impulse F dt, contact ${i.contact} (${i.bumper}–${i.wedge})`, ...names.map((n) => cell(n, (r) => {
+      rows.push([`F dt, contact ${i.contact} (${i.bumper}–${i.wedge})`, ...names.map((n) => cell(n, (r) => {
         const j = r.impulses[i.contact];
         return num(j.magnitude, largestImpulse) + (j.tangential !== undefined ? `, tangential ${num(j.tangential, largestImpulse)}` : '');
       }))]);
@@ -90,7 +90,7 @@
       }
     }
     for (const c of first.contacts.slice(0, 12)) {
-      rows.push([`Approach speed after, contact ${c.contact}`, ...names.map((n) => cell(n, (r) => num(r.contacts[c.contact].approach_after, speeds)))]);
+      rows.push([`Approach after, contact ${c.contact}`, ...names.map((n) => cell(n, (r) => num(r.contacts[c.contact].approach_after, speeds)))]);
     }
     const energy = first.energy.before;
     rows.push(['Kinetic energy after (before: ' + num(energy) + ')',
@@ -174,6 +174,7 @@
   };
 
   function renderSweep() {
+    $('sweep-chart').dataset.shows = String(state.version);  // which scene (for the tests)
     const from = $('sweep-from').valueAsNumber;
     const to = $('sweep-to').valueAsNumber;
     const step = $('sweep-step').valueAsNumber;
@@ -199,14 +200,23 @@
                     ...[...Array(contacts).keys()].map((v) => `approach_after_${v}`)];
     $('sweep-csv').textContent = [header.join(','), ...rows.map((r) => r.map((x) => String(x + 0)).join(','))].join('\n') + '\n';
     const before = rows[0][1] - rows[0][2];
-    chart.innerHTML = plot('Kinetic energy after', rows, [{column: 1, colour: '#1d2430', name: 'energy after'}], before, 'energy before') +
+    // The scene's own elasticity, when every body collides at it.
+    const scene = state.scene;
+    const own = scene && typeof scene.elasticity === 'number' && scene.bodies.every((b) => b.elasticity === undefined)
+                    ? scene.elasticity : undefined;
+    const names = scene ? scene.contacts.map((c) => `${c.bumper}–${c.wedge}`) : [];
+    chart.innerHTML = plot('Kinetic energy after', rows, [{column: 1, colour: '#1d2430', name: 'energy after'}], own, before, 'energy before') +
                       plot('Impulse F dt at each contact', rows,
-                           [...Array(Math.min(contacts, 12)).keys()].map((v) => ({column: 3 + v, colour: colour(v), name: `contact ${v}`})));
+                           [...Array(Math.min(contacts, 12)).keys()].map((v) => ({column: 3 + v, colour: colour(v),
+                                                                                 name: `contact ${v}${names[v] ? ` (${names[v]})` : ''}`})), own);
+    chart.insertAdjacentHTML('beforeend', `<p class="legend">${[...Array(Math.min(contacts, 12)).keys()].map((v) =>
+        `<span style="color:${colour(v)}">— contact ${v}${names[v] ? ` (${escapeHtml(names[v])})` : ''}</span>`).join(' ')}` +
+        `${contacts > 12 ? ` (the first 12 of ${contacts}; all in the rows below)` : ''}</p>`);
   }
 
   // A line chart of @p rows (x: column 0) for @p series; @p level a dashed line across (the
-  // energy before), the elasticities 1 and 2 marked.
-  function plot(title, rows, series, level, levelName) {
+  // energy before), the elasticities 1 and 2 marked, and @p own (the scene's, when it has one).
+  function plot(title, rows, series, own, level, levelName) {
     const width = 520;
     const height = 190;
     const pad = {left: 54, right: 12, top: 22, bottom: 30};
@@ -230,6 +240,10 @@
         svg += `<line x1="${X(e)}" y1="${pad.top}" x2="${X(e)}" y2="${height - pad.bottom}" stroke="#c9d0da" stroke-dasharray="3 3"/>` +
                `<text x="${X(e) + 3}" y="${pad.top + 10}" class="small">${e}: ${word}</text>`;
       }
+    }
+    if (own !== undefined && own >= x0 && own <= x1) {
+      svg += `<line x1="${X(own)}" y1="${pad.top}" x2="${X(own)}" y2="${height - pad.bottom}" stroke="#1f5fae"/>` +
+             `<text x="${X(own) + 3}" y="${height - pad.bottom - 4}" class="small">this scene, ${num(own)}</text>`;
     }
     for (const y of [y0, y1]) {
       svg += `<text x="${pad.left - 4}" y="${Y(y) + 4}" text-anchor="end">${num(y)}</text>`;

@@ -191,8 +191,13 @@
     const field = {
       input,
       slider,
+      last: NaN,
       refresh(scene) {
         const value = spec.value(scene);
+        if (Object.is(value, field.last)) {
+          return;  // as written last time (a scene of many bodies: hundreds of fields)
+        }
+        field.last = document.activeElement === input || document.activeElement === slider ? NaN : value;
         if (document.activeElement !== input && value !== undefined && input.value !== String(value) &&
             !input.validity.badInput) {
           input.value = String(value);

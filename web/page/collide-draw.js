@@ -27,32 +27,40 @@
     };
   };
 
-  function arrow(from, to, style, width, dashed) {
-    const length = Math.hypot(to[0] - from[0], to[1] - from[1]);
-    if (length < 1) {
-      return;
-    }
+  // Arrows from each [from, to] of @p list, drawn together (two paths: the shafts, the heads).
+  function arrows(list, style, width, dashed) {
     const dpr = devicePixelRatio;
-    const head = Math.min(12 * dpr, length * 0.45);
-    const angle = Math.atan2(to[1] - from[1], to[0] - from[0]);
     context.save();
     context.strokeStyle = style;
     context.fillStyle = style;
     context.lineWidth = width;
     context.setLineDash(dashed ? [6 * dpr, 4 * dpr] : []);
+    const heads = [];
     context.beginPath();
-    context.moveTo(from[0], from[1]);
-    context.lineTo(to[0] - head * 0.7 * Math.cos(angle), to[1] - head * 0.7 * Math.sin(angle));
+    for (const [from, to] of list) {
+      const length = Math.hypot(to[0] - from[0], to[1] - from[1]);
+      if (length < 1) {
+        continue;
+      }
+      const head = Math.min(12 * dpr, length * 0.45);
+      const angle = Math.atan2(to[1] - from[1], to[0] - from[0]);
+      context.moveTo(from[0], from[1]);
+      context.lineTo(to[0] - head * 0.7 * Math.cos(angle), to[1] - head * 0.7 * Math.sin(angle));
+      heads.push([to, head, angle]);
+    }
     context.stroke();
     context.setLineDash([]);
     context.beginPath();
-    context.moveTo(to[0], to[1]);
-    context.lineTo(to[0] - head * Math.cos(angle - 0.4), to[1] - head * Math.sin(angle - 0.4));
-    context.lineTo(to[0] - head * Math.cos(angle + 0.4), to[1] - head * Math.sin(angle + 0.4));
-    context.closePath();
+    for (const [to, head, angle] of heads) {
+      context.moveTo(to[0], to[1]);
+      context.lineTo(to[0] - head * Math.cos(angle - 0.4), to[1] - head * Math.sin(angle - 0.4));
+      context.lineTo(to[0] - head * Math.cos(angle + 0.4), to[1] - head * Math.sin(angle + 0.4));
+      context.closePath();
+    }
     context.fill();
     context.restore();
   }
+  const arrow = (from, to, style, width, dashed) => arrows([[from, to]], style, width, dashed);
 
   // A label at the first of @p places ([x, y, align]) where it covers no label drawn before and
   // stays on the canvas; none: it is left out. Text with a white rim, readable over lines.
@@ -85,27 +93,35 @@
     return false;
   }
 
-  // A handle the pointer can take: drawn (a round or square knob), or only registered where the
-  // drawing already shows it (a contact's point, the tip of its normal).
+  // A handle the pointer can take: drawn (a round or square knob, all drawn together at the end),
+  // or only registered where the drawing already shows it (a contact's point, the tip of its
+  // normal).
+  let knobs = [];
   function handle(at, shape, kind, extra) {
     collide.drawn.handles.push({kind, at, ...extra});
-    if (shape === 'none') {
-      return;
+    if (shape !== 'none') {
+      knobs.push([at, shape]);
     }
+  }
+  function drawKnobs() {
     const dpr = devicePixelRatio;
     context.save();
     context.fillStyle = '#fff';
     context.strokeStyle = '#1f5fae';
     context.lineWidth = 2 * dpr;
     context.beginPath();
-    if (shape === 'square') {
-      context.rect(at[0] - 6 * dpr, at[1] - 6 * dpr, 12 * dpr, 12 * dpr);
-    } else {
-      context.arc(at[0], at[1], 7 * dpr, 0, 2 * Math.PI);
+    for (const [at, shape] of knobs) {
+      if (shape === 'square') {
+        context.rect(at[0] - 6 * dpr, at[1] - 6 * dpr, 12 * dpr, 12 * dpr);
+      } else {
+        context.moveTo(at[0] + 7 * dpr, at[1]);
+        context.arc(at[0], at[1], 7 * dpr, 0, 2 * Math.PI);
+      }
     }
     context.fill();
     context.stroke();
     context.restore();
+    knobs = [];
   }
 
   collide.draw = () => {
@@ -113,6 +129,7 @@
     context.setTransform(1, 0, 0, 1, 0, 0);
     context.clearRect(0, 0, canvas.width, canvas.height);
     collide.drawn = {handles: [], labels: [], arrows: [], markers: [], events: [], outlines: []};
+    knobs = [];
     const l = state.layout;
     if (!l) {
       context.fillStyle = '#5a6372';
@@ -212,29 +229,48 @@
     const impulses = state.result ? state.result.impulses : state.valid ? state.valid.result.impulses : [];
     const markers = l.contacts.map((c, v) => collide.markerAt(l, v, time));
     drawImpulses(l, view, impulses, markers, step);
+    // Drawn together, contact by contact only where one fades or is stepped to.
+    const normals = [];
+    const dots = [];
     l.contacts.forEach((c, v) => {
       const marker = markers[v];
       collide.drawn.markers.push({contact: v, at: marker.at, alpha: marker.alpha});
       if (marker.alpha <= 0) {
         return;
       }
-      context.save();
-      context.globalAlpha *= marker.alpha;
       const p = view.to(marker.at);
       const tip = [p[0] + marker.normal[0] * 28 * dpr, p[1] - marker.normal[1] * 28 * dpr];
       const stepped = step && step.contact === v;
-      arrow(p, tip, stepped ? '#a4460e' : '#444', (stepped ? 2.5 : 1.5) * dpr, false);
-      context.fillStyle = '#000';
-      context.beginPath();
-      context.arc(p[0], p[1], 3.5 * dpr, 0, 2 * Math.PI);
-      context.fill();
-      context.restore();
+      if (marker.alpha < 1 || stepped) {
+        context.save();
+        context.globalAlpha *= marker.alpha;
+        arrow(p, tip, stepped ? '#a4460e' : '#444', (stepped ? 2.5 : 1.5) * dpr, false);
+        context.fillStyle = '#000';
+        context.beginPath();
+        context.arc(p[0], p[1], 3.5 * dpr, 0, 2 * Math.PI);
+        context.fill();
+        context.restore();
+      } else {
+        normals.push([p, tip]);
+        dots.push(p);
+      }
       if (time === 0 && l.current && !step && c.point && l.dim === 2) {
         handle(p, 'none', 'point', {contact: v});
         handle(tip, 'none', 'normal', {contact: v, centre: p});
       }
     });
+    arrows(normals, '#444', 1.5 * dpr, false);
+    context.fillStyle = '#000';
+    context.beginPath();
+    for (const p of dots) {
+      context.moveTo(p[0] + 3.5 * dpr, p[1]);
+      context.arc(p[0], p[1], 3.5 * dpr, 0, 2 * Math.PI);
+    }
+    context.fill();
     // Velocities (solid before, dashed after) with a handle on the one before; spins on a ring.
+    const beforeArrows = [];
+    const afterArrows = [];
+    const rings = [];
     const shownAfter = (i) => (step ? {v: collide.vec(step.velocity[i]), w: step.angular_velocity[i]}
                                     : {v: l.motion[i].after, w: l.motion[i].spinAfter});
     l.drawn.forEach((d, i) => {
@@ -247,22 +283,18 @@
       const after = shownAfter(i);
       const tipOf = (v) => view.to(add(pose.centre, mul(v, l.scales.arrow)));
       if (time >= 0) {
-        arrow(c, tipOf(after.v), '#1a7f37', 2.5 * dpr, true);
+        afterArrows.push([c, tipOf(after.v)]);
       }
       if (time <= 0) {
         const tip = tipOf(m.before);
-        arrow(c, tip, '#1f5fae', 2.5 * dpr, false);
+        beforeArrows.push([c, tip]);
         if (l.current && !step) {
           handle(Math.hypot(tip[0] - c[0], tip[1] - c[1]) < 8 * dpr ? c : tip, 'dot', 'velocity', {body: i});
         }
       }
       if (d.kind === 'rigid') {
         const ring = Math.max(px(d.radius) * 0.8, 14 * dpr);
-        context.strokeStyle = 'rgba(154, 163, 176, 0.55)';
-        context.lineWidth = 1 * dpr;
-        context.beginPath();
-        context.arc(c[0], c[1], ring, 0, 2 * Math.PI);
-        context.stroke();
+        rings.push([c, ring]);
         const spinArc = (w, style, dashed) => {
           const sweep = w * l.scales.spin;
           if (Math.abs(sweep) < 1e-3) {
@@ -290,6 +322,18 @@
         }
       }
     });
+
+    context.strokeStyle = 'rgba(154, 163, 176, 0.55)';
+    context.lineWidth = 1 * dpr;
+    context.beginPath();
+    for (const [c, ring] of rings) {
+      context.moveTo(c[0] + ring, c[1]);
+      context.arc(c[0], c[1], ring, 0, 2 * Math.PI);
+    }
+    context.stroke();
+    arrows(afterArrows, '#1a7f37', 2.5 * dpr, true);
+    arrows(beforeArrows, '#1f5fae', 2.5 * dpr, false);
+    drawKnobs();
 
     // Where a body stopped: a collision the page does not compute.
     const side = time > 0 && l.timeline ? l.timeline.after : time < 0 && l.timeline ? l.timeline.before : null;

@@ -407,8 +407,7 @@
         const name = scene.bodies[selected.body].name;
         scene.bodies.splice(selected.body, 1);
         scene.contacts = scene.contacts.filter((c) => c.bumper !== name && c.wedge !== name);
-        state.shapes.delete(name);
-        state.walls.delete(name);
+        // Its drawn shape stays known, for undo.
       }
     });
     collide.syncSelection();

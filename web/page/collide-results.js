@@ -80,7 +80,6 @@
         table.textContent = '';
         delete table.dataset.shape;
       }
-      $('summary').textContent = '';
       return;
     }
     const dim = d.dimension;
@@ -126,6 +125,16 @@
                         num(c.approach_after, largestApproach), {text: word, cls: 'name'}];
               }));
 
+  }
+
+  // The summary under the canvas: the method, energy and momentum before and after.
+  function renderSummary() {
+    const r = state.result;
+    if (!r || !state.details) {
+      $('summary').textContent = '';
+      return;
+    }
+    const dim = state.details.dimension;
     const method = r.method || 'simultaneous';
     const methodName = {simultaneous: 'the paper\'s system', complementarity: 'complementarity',
                         serial: 'serial collisions'}[method];
@@ -187,11 +196,20 @@
 
   const svgNS = 'http://www.w3.org/2000/svg';
 
+  // Writes @p html into @p box only when it differs from what was written last.
+  const written = new WeakMap();
+  function setHtml(box, html) {
+    if (written.get(box) !== html) {
+      box.innerHTML = html;
+      written.set(box, html);
+    }
+  }
+
   function renderEnergy() {
     const box = $('energy-chart');
     const d = state.details;
     if (!d) {
-      box.innerHTML = '';
+      setHtml(box, '');
       return;
     }
     const width = 520;
@@ -226,14 +244,14 @@
     const mark = (left + totals[0] * scale).toFixed(2);
     svg += `<line x1="${mark}" y1="2" x2="${mark}" y2="${2 * barHeight + 22}" stroke="#1d2430" ` +
            'stroke-dasharray="4 3" stroke-width="1"/>';
-    box.innerHTML = svg + '</svg>';
+    setHtml(box, svg + '</svg>');
   }
 
   function renderMomentum() {
     const box = $('momentum-chart');
     const d = state.details;
     if (!d) {
-      box.innerHTML = '';
+      setHtml(box, '');
       return;
     }
     const movable = d.bodies.map((b, i) => [b, i]).filter(([b]) => b.kind !== 'static');
@@ -295,7 +313,7 @@
         }
       }
     });
-    box.innerHTML = svg + '</svg>';
+    setHtml(box, svg + '</svg>');
   }
 
   // The system, typeset by MathJax up to 8 contacts (a bigger matrix is a table), with the
@@ -364,23 +382,33 @@
       }
       const map = box.querySelector('canvas.matrix-map');
       if (s.A) {
+        // One pixel per entry, enlarged by the style (pixelated): a hundred by a hundred is one
+        // image written at once.
         const cell = Math.max(1, Math.floor(240 / n));
-        map.width = map.height = cell * n;
+        if (map.width !== n) {
+          map.width = map.height = n;
+        }
+        map.style.width = map.style.height = `${cell * n}px`;
         map.hidden = false;
         map.setAttribute('aria-label', `A, ${n} by ${n}: blue positive entries, red negative, white zero`);
         const g = map.getContext('2d');
-        g.fillStyle = '#fff';
-        g.fillRect(0, 0, map.width, map.height);
+        const image = g.createImageData(n, n);
+        const pixels = image.data;
         for (let v = 0; v < n; ++v) {
+          const row = s.A[v];
           for (let j = 0; j < n; ++j) {
-            const x = s.A[v][j];
-            if (Math.abs(x) > 1e-12 * scaleA) {
-              const strength = Math.min(1, Math.abs(x) / scaleA);
-              g.fillStyle = x > 0 ? `rgba(31, 95, 174, ${0.15 + 0.85 * strength})` : `rgba(180, 35, 24, ${0.15 + 0.85 * strength})`;
-              g.fillRect(j * cell, v * cell, cell, cell);
-            }
+            const x = row[j];
+            // Over white: the colour at opacity 0.15 + 0.85 of the entry's share of the largest.
+            const a = Math.abs(x) > 1e-12 * scaleA ? 0.15 + 0.85 * Math.min(1, Math.abs(x) / scaleA) : 0;
+            const [r, gr, b] = x > 0 ? [31, 95, 174] : [180, 35, 24];
+            const k = 4 * (v * n + j);
+            pixels[k] = 255 + (r - 255) * a;
+            pixels[k + 1] = 255 + (gr - 255) * a;
+            pixels[k + 2] = 255 + (b - 255) * a;
+            pixels[k + 3] = 255;
           }
         }
+        g.putImageData(image, 0, 0);
       } else {
         map.hidden = true;
       }
@@ -407,11 +435,43 @@
         'the elasticity e of each body scales its share of B (1 inelastic, 2 elastic).';
   }
 
+  // The panels, each drawn at once when it is on the screen, else just after (the update then
+  // ends when they are: collide.show). A scene of a hundred contacts has a thousand cells and a
+  // matrix of ten thousand entries below the fold.
+  const panels = [{name: 'tables', render: renderTables, boxes: ['impulses-table', 'bodies-table', 'contacts-table']},
+                  {name: 'energy', render: renderEnergy, boxes: ['energy-chart']},
+                  {name: 'momentum', render: renderMomentum, boxes: ['momentum-chart']},
+                  {name: 'system', render: renderSystem, boxes: ['system-equation', 'system-facts']}];
+  const onScreen = new Set();
+  const watcher = new IntersectionObserver((entries) => {
+    for (const e of entries) {
+      if (e.isIntersecting) {
+        onScreen.add(e.target.id);
+      } else {
+        onScreen.delete(e.target.id);
+      }
+    }
+  });
+  for (const panel of panels) {
+    for (const id of panel.boxes) {
+      watcher.observe($(id));
+    }
+  }
+
+  // Returns the drawing left for just after (a function), or null.
   collide.renderResults = () => {
-    collide.timed('tables', renderTables);
-    collide.timed('energy', renderEnergy);
-    collide.timed('momentum', renderMomentum);
-    collide.timed('system', renderSystem);
+    collide.timed('summary', renderSummary);
+    const later = [];
+    for (const panel of panels) {
+      if (panel.boxes.some((id) => onScreen.has(id))) {
+        collide.timed(panel.name, panel.render);
+      } else {
+        later.push(panel);
+      }
+    }
+    // (Unless the scene shown by then is refused: its last result stays as it is.)
+    return later.length ? () => (state.result || !state.valid) && later.forEach((panel) => collide.timed(panel.name, panel.render))
+                        : null;
   };
   collide.fillTable = fillTable;
   collide.vectorText = vectorText;

@@ -17,7 +17,8 @@
   const {$, escapeHtml, state} = collide;
 
   // One update: the messages, the controls, the results (kept, dimmed, while the scene is
-  // refused), the canvas, then the side views.
+  // refused), the canvas, then the side views. Returns what is left to draw just after (the
+  // panels off the screen), or null.
   collide.render = ({rebuild}) => {
     const out = state.out;
     const refused = Boolean(out && out.error);
@@ -41,12 +42,11 @@
     collide.timed('messages', collide.showMessages);
     collide.syncSelection();
     collide.syncHistory();
-    if (!refused || !state.valid) {
-      collide.renderResults();
-    }
+    const later = !refused || !state.valid ? collide.renderResults() : null;
     collide.syncSerial();
     collide.timed('canvas', () => collide.setTime(state.t));
     collide.refreshSideViews();
+    return later;
   };
 
   // For the browser tests: what is drawn, in the window's coordinates (handles, impulse arrows)
