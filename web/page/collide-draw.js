@@ -392,7 +392,6 @@
       label(time > 0 ? 'a later collision, not computed here' : 'an earlier collision, not computed here',
             [[e[0], e[1] - 10 * dpr, 'center'], [e[0], e[1] + 20 * dpr, 'center'], [8 * dpr, 16 * dpr, 'left']], '#b42318', 11);
     }
-    collide.drawEditor(view);
   };
 
   // Each contact's impulse as the whole vector the library reports (on_bumper: the normal part,

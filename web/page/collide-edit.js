@@ -231,17 +231,18 @@
       }
       return {...collide.behind(a, o.surface), axis: mul(o.surface.outward, -1)};
     };
-    // Snap against the nearest, when within 12 px.
+    // Snap against the nearest within 12 px (or run into it by at most a quarter of a typical
+    // size: deeper is not a touch, e.g. behind a wall's line far from where it is drawn).
+    const view = collide.transform(state.layout);
+    const reach = 12 * devicePixelRatio / view.scale;
     let nearest = null;
     for (const o of others()) {
       const found = meet(mine(), o);
-      if (!nearest || found.depth > nearest.depth) {
+      if (found.depth > -reach && found.depth < 0.25 * state.layout.typical && (!nearest || found.depth > nearest.depth)) {
         nearest = found;
       }
     }
-    const view = collide.transform(state.layout);
-    const reach = 12 * devicePixelRatio / view.scale;
-    if (nearest && nearest.depth > -reach) {
+    if (nearest) {
       const now = wall ? state.walls.get(done.name).through : collide.vec(state.scene.bodies[i].position);
       const from = wall ? done.wall.through : done.position;
       moveBy(sub(sub(now, from), mul(nearest.axis, nearest.depth)), g, {keepView: true, stream: done.key});
@@ -445,9 +446,6 @@
     $('palette-hint').textContent = !scene ? '' : flat ? 'The palette builds scenes in the plane: choose "New scene" to start one.' : '';
   };
 
-  // The selection drawn: nothing more than the bodies' outlines show (collide-draw).
-  collide.drawEditor = () => {};
-
   for (const type of ['disc', 'box', 'rod', 'wall']) {
     $(`add-${type}`).addEventListener('click', () => collide.addBody(type));
   }
@@ -458,8 +456,45 @@
     collide.reset();
   });
   $('new-scene').addEventListener('click', collide.newScene);
+  // From the keyboard: the arrows move the selected body (or wall) by a tenth of a typical size
+  // (a hundredth with Shift), and it settles as a dropped one does.
+  const steps = {ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1]};
+  function nudge(direction, fine) {
+    const selected = collide.selection;
+    const l = state.layout;
+    if (!selected || selected.body === undefined || !editable()) {
+      return;
+    }
+    const d = l.drawn[selected.body];
+    const surface = l.surfaces.find((f) => f.body === selected.body);
+    if (d.kind === 'material' || (d.kind === 'static' && !surface)) {
+      return;
+    }
+    const scene = state.scene;
+    dragging = {kind: 'move', body: selected.body, name: d.name, start: [0, 0], moved: true, key: `keys-${d.name}`,
+                position: d.kind === 'rigid' ? collide.vec(scene.bodies[selected.body].position) : null,
+                points: scene.contacts.map((c) => (c.point !== undefined ? collide.vec(c.point) : null)),
+                wall: d.kind === 'static' ? {through: surface.through, outward: surface.outward, from: surface.from, to: surface.to} : null};
+    const done = dragging;
+    moveBy(mul(direction, l.typical * (fine ? 0.01 : 0.1)), gridOf(l), {stream: done.key, keepView: true});
+    settle(done);
+    dragging = null;
+    state.frozen = null;
+    collide.show(state.text, {fromControls: true, immediate: true});
+  }
+
   canvas.addEventListener('keydown', (event) => {
-    if (event.key === 'Delete' || event.key === 'Backspace') {
+    if (steps[event.key]) {
+      event.preventDefault();
+      nudge(steps[event.key], event.shiftKey);
+    } else if ((event.key === 'Enter' || event.key === ' ') && state.scene && state.scene.bodies.length) {
+      // The next body selected.
+      event.preventDefault();
+      const at = collide.selection && collide.selection.body !== undefined ? collide.selection.body : -1;
+      collide.selection = {body: (at + 1) % state.scene.bodies.length};
+      collide.syncSelection();
+      collide.draw();
+    } else if (event.key === 'Delete' || event.key === 'Backspace') {
       event.preventDefault();
       collide.deleteSelected();
     } else if (event.key === 'Escape') {

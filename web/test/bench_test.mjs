@@ -287,6 +287,22 @@ const groups = {
           'the normal turned to the left: its angle in degrees', JSON.stringify(s.contacts[v]));
     const withBox = await againstLine('editor, the normal turned');
 
+    // From the keyboard: Enter on the canvas selects the bodies in turn; an arrow moves the disc
+    // a tenth of the page's typical size along the floor, and its contact goes with it.
+    const step = 0.1 * (await drawn(p)).typical;
+    await p.evaluate('document.getElementById("view").focus()');
+    for (let k = 0; k < 6 && await p.evaluate('document.getElementById("selection").textContent') !== 'Selected: disc 2.'; ++k) {
+      await p.press('Enter');
+    }
+    await change(p, () => p.press('ArrowRight'));
+    s = await scene();
+    const moved = s.contacts.filter((c) => c.wedge === 'disc 2');
+    check(Math.abs(s.bodies.find((b) => b.name === 'disc 2').position[0] - (2 + step)) < 1e-3 && moved.length === 1 &&
+          Math.abs(moved[0].point[0] - (2 + step)) < 1e-3 && moved[0].point[1] === 0,
+          'the disc moved from the keyboard, its contact with it', `${JSON.stringify(moved)}, a step of ${step}`);
+    await againstLine('editor, the disc moved from the keyboard');
+    await change(p, () => click('undo'));
+
     // The box selected by a click and deleted: it and its four contacts go.
     const boxAt = await toWindow(centre(await outline('box 1')));
     await p.mouse('mouseMoved', boxAt.x, boxAt.y);
