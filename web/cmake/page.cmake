@@ -20,22 +20,19 @@ add_custom_target(web_module
 if(IMPULSELAB_BUILD_TESTS AND IMPULSELAB_BUILD_DOCS AND TARGET impulselab)
   # Run after the docs are built (`cmake --build --preset docs && ctest --preset docs`); they need
   # Node and Debian's chromium (scripts/install-deps chromium emscripten); IMPULSELAB_CHROMIUM in
-  # the environment names another browser. Screenshots of every preset go to screenshots/ here.
+  # the environment names another browser. Screenshots go to screenshots/ here.
   find_program(IMPULSELAB_NODE node REQUIRED)
-  foreach(group IN ITEMS presets scenes malformed interaction links friction)
+  # page_test.mjs: the page and its contract; bench_test.mjs: the page as a lab bench (the
+  # motion, building on the canvas, side by side and the sweep, what readers found wrong; with
+  # screenshots of the editor, the comparison and the sweep).
+  foreach(test IN ITEMS page_test:presets page_test:scenes page_test:malformed page_test:interaction
+                        page_test:links page_test:friction
+                        bench_test:motion bench_test:editor bench_test:compare bench_test:defects)
+    string(REPLACE ":" ";" parts "${test}")
+    list(GET parts 0 program)
+    list(GET parts 1 group)
     add_test(NAME web:${group}
-      COMMAND "${IMPULSELAB_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/test/page_test.mjs" ${group}
-        --site "${PROJECT_BINARY_DIR}/docs/html"
-        --cli "$<TARGET_FILE:impulselab>"
-        --source "${PROJECT_SOURCE_DIR}"
-        --screenshots "${CMAKE_CURRENT_BINARY_DIR}/screenshots")
-    set_tests_properties(web:${group} PROPERTIES LABELS web TIMEOUT 600)
-  endforeach()
-  # The page as a lab bench: the motion, building on the canvas, side by side and the sweep, and
-  # what readers found wrong (screenshots of the editor, the comparison and the sweep too).
-  foreach(group IN ITEMS motion editor compare defects)
-    add_test(NAME web:${group}
-      COMMAND "${IMPULSELAB_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/test/bench_test.mjs" ${group}
+      COMMAND "${IMPULSELAB_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/test/${program}.mjs" ${group}
         --site "${PROJECT_BINARY_DIR}/docs/html"
         --cli "$<TARGET_FILE:impulselab>"
         --source "${PROJECT_SOURCE_DIR}"
