@@ -357,7 +357,9 @@
 
     // Labels last, each where it covers no other: the contacts' impulses, then the bodies' names,
     // then the collisions not computed.
-    if (l.contacts.length <= 12 && impulses.length === l.contacts.length) {
+    // Up to 12 contacts labelled (4 on a phone's canvas, where more would cover the bodies).
+    const labelled = canvas.width / devicePixelRatio < 500 ? 4 : 12;
+    if (l.contacts.length <= labelled && impulses.length === l.contacts.length) {
       l.contacts.forEach((c, v) => {
         const marker = markers[v];
         if (marker.alpha < 0.5) {
