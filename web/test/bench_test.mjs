@@ -380,7 +380,7 @@ const groups = {
         const expected = [...line.warnings, ...(line.error ? line.error.split('\n') : [])];
         check(JSON.stringify(warnings) === JSON.stringify(expected), `${where}: the command line's warnings`,
               `page: ${JSON.stringify(warnings)}\nline: ${JSON.stringify(expected)}`);
-        const table = await p.evaluate('document.getElementById("compare-table") ? document.getElementById("compare-table").innerText : ""');
+        const table = await p.evaluate('document.getElementById("compare-table") ? document.getElementById("compare-table").textContent : ""');
         check(table.includes('Kinetic energy after') && Object.keys(theirs).length === 3, `${where}: shown in three columns`);
       }
     }
@@ -441,7 +441,8 @@ const groups = {
   async defects(browser) {
     const presets = presetsOfSite();
     const p = await open(browser, hashOf(presets[0].scene), {width: 1280, height: 800});
-    const texts = () => p.evaluate(`[document.body.innerText,
+    // Every text of the page (also what is folded away or out of view), its labels, the canvas's.
+    const texts = () => p.evaluate(`[document.body.textContent,
         ...[...document.querySelectorAll('[aria-label], [title]')].map((e) => e.getAttribute('aria-label') + ' ' + (e.getAttribute('title') || '')),
         ...(window.impulselabPage.drawn ? impulselabPage.drawn().labels.map((l) => l.text) : [])].join('\\n')`);
 
@@ -586,7 +587,7 @@ const groups = {
           'the rod\'s mass at its largest: still drawn as a rod', JSON.stringify(rod));
 
     // The words: the rough contacts' hint, the equations' list.
-    const page = await p.evaluate('document.body.innerText');
+    const page = await p.evaluate('document.body.textContent.replace(/\\s+/g, " ")');
     check(!page.includes('((1.3)'), 'the list of equations reads without "((1.3)"');
     check(!/several contacts only by serial collisions/.test(page) && page.includes('complementarity takes friction with Newton\'s law'),
           'the hint on rough contacts: complementarity solves them with Newton\'s law');
