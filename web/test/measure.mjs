@@ -14,7 +14,7 @@
 // both pages in turn, key by key, so that both see the same load of the machine, and their ratio
 // is printed.
 //
-// usage: node measure.mjs --site DIR [--repeat N] [--versus DIR] [--only control]
+// usage: node measure.mjs --site DIR [--repeat N] [--versus DIR] [--only control] [--scenes REGEX]
 import {resolve, join} from 'node:path';
 import {Browser} from './chromium.mjs';
 
@@ -24,14 +24,16 @@ const repeat = args.includes('--repeat') ? Number(args[args.indexOf('--repeat') 
 const url = `file://${join(site, 'collide.html')}`;
 const versus = args.includes('--versus') ? `file://${join(resolve(args[args.indexOf('--versus') + 1]), 'collide.html')}` : null;
 const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
+const matching = args.includes('--scenes') ? new RegExp(args[args.indexOf('--scenes') + 1]) : /./;
 
 const stats = (values) => {
   const sorted = [...values].sort((a, b) => a - b);
   const at = (q) => sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))];
-  return {median: at(0.5), p90: at(0.9), max: sorted[sorted.length - 1], n: values.length};
+  return {min: sorted[0], median: at(0.5), p90: at(0.9), max: sorted[sorted.length - 1], n: values.length};
 };
 const show = (what, s, unit = 'ms') =>
-  console.log(`${what.padEnd(58)} median ${s.median.toFixed(2)} ${unit}, 90% ${s.p90.toFixed(2)}, max ${s.max.toFixed(2)} (${s.n} runs)`);
+  console.log(`${what.padEnd(58)} median ${s.median.toFixed(2)} ${unit}, 90% ${s.p90.toFixed(2)}, ` +
+              `min ${s.min.toFixed(2)}, max ${s.max.toFixed(2)} (${s.n} runs)`);
 
 // Scenes built here for their size (they are not physics: bodies and contacts as a lab writes them).
 function cradle(balls, method) {
@@ -111,7 +113,7 @@ try {
     await p.waitFor(`Number(document.body.dataset.shown) > ${shown} && window.impulselabTiming`);
     return p.evaluate('window.impulselabTiming');
   };
-  for (const [what, scene] of scenes) {
+  for (const [what, scene] of scenes.filter(([name]) => matching.test(name))) {
     await open(page, url, scene);
     if (other) {
       await open(other, versus, scene);
