@@ -568,7 +568,7 @@ const groups = {
     check(small.length === 0, 'buttons, menus and number fields 44 px tall on a phone', small.join(', '));
 
     // On a phone, a field being edited leaves the canvas and the summary in view.
-    await navigate(p, hashOf(cradle));
+    await navigate(p, hashOf(sceneFile('tutorials/scenes/newton-cradle-5.json')));
     await p.evaluate('document.getElementById("body-2-mass").focus()');
     await new Promise((r) => setTimeout(r, 300));
     const inView = await p.evaluate(`['view', 'summary', 'body-2-mass'].map((id) => {
