@@ -140,6 +140,75 @@ std::vector<ex> doubtful_factors(const ex& e, const Facts& facts) {
 
 namespace {
 
+// Whether e holds a power with a fractional exponent (a root).
+bool has_root(const ex& e) {
+  for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+    if (is_a<GiNaC::power>(*i) && is_a<numeric>(i->op(1)) &&
+        !GiNaC::ex_to<numeric>(i->op(1)).is_integer()) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+ex roots_taken(const ex& e, const Facts& facts) {
+  if (is_a<GiNaC::power>(e) && is_a<numeric>(e.op(1)) &&
+      !GiNaC::ex_to<numeric>(e.op(1)).is_integer() &&
+      GiNaC::ex_to<numeric>(e.op(1)).is_rational()) {
+    // (Π f^k)^(p/q): each factor whose power k is a multiple of q comes out as |f|^(k p/q).
+    const numeric exponent = GiNaC::ex_to<numeric>(e.op(1));
+    const ex base = roots_taken(e.op(0), facts);
+    const numeric q = exponent.denom();
+    ex outside = 1;
+    ex inside = 1;
+    const auto one = [&](const ex& factor) {
+      if (is_a<GiNaC::power>(factor) && is_a<numeric>(factor.op(1)) &&
+          GiNaC::ex_to<numeric>(factor.op(1)).is_integer() &&
+          GiNaC::mod(GiNaC::ex_to<numeric>(factor.op(1)), q).is_zero()) {
+        const ex f = factor.op(0);
+        const Sign s = facts.sign(f);
+        const ex magnitude = (s == Sign::positive || s == Sign::nonnegative)   ? f
+                             : (s == Sign::negative || s == Sign::nonpositive) ? ex(-f)
+                                                                               : GiNaC::abs(f);
+        outside *= GiNaC::pow(magnitude, factor.op(1) * exponent);
+      } else {
+        inside *= factor;
+      }
+    };
+    if (is_a<GiNaC::mul>(base)) {
+      for (std::size_t i = 0; i < base.nops(); ++i) {
+        one(base.op(i));
+      }
+    } else {
+      one(base);
+    }
+    if (outside.is_equal(1)) {
+      return GiNaC::pow(base, exponent);
+    }
+    return outside * GiNaC::pow(inside, exponent);
+  }
+  if (e.nops() == 0 || !has_root(e)) {
+    return e;
+  }
+  struct Each : GiNaC::map_function {
+    const Facts& facts;
+    explicit Each(const Facts& f) : facts(f) {}
+    ex operator()(const ex& part) override { return roots_taken(part, facts); }
+  } each(facts);
+  return e.map(each);
+}
+
+ex safe_numerator(const ex& e, double terms) {
+  if (expanded_terms(e) > terms) {
+    return e;
+  }
+  return GiNaC::normal(e).numer();
+}
+
+namespace {
+
 struct Solved {
   ex symbol;
   ex value;
@@ -166,7 +235,7 @@ struct Found {
 };
 
 ex numerator(const ex& e) {
-  return GiNaC::normal(e).numer();
+  return safe_numerator(e);
 }
 
 bool same_up_to_constant(const ex& a, const ex& b) {
@@ -198,6 +267,10 @@ class Decider {
     if (++frames_ > budget_.frames) {
       return unknown(frame, "the exact search reached its limit of cases");
     }
+    if (past(budget_.deadline)) {
+      return unknown(frame, "the step's time ran out");
+    }
+    frame.target = roots_taken(frame.target, facts_);
     if (expanded_terms(frame.target) > budget_.terms) {
       return unknown(frame, "the step is too large to expand exactly");
     }
