@@ -64,7 +64,11 @@ target_link_options(impulselab_web PRIVATE
   -sEXPORT_NAME=createImpulseLab
   -sENVIRONMENT=web,node
   -sALLOW_MEMORY_GROWTH=1
-  -sFILESYSTEM=0)
+  -sFILESYSTEM=0
+  -sMALLOC=emmalloc
+  -sINCOMING_MODULE_JS_API=[]
+  -sDYNAMIC_EXECUTION=0
+  -sTEXTDECODER=2)
 # Emscripten's JavaScript optimiser needs Debian's acorn (node-acorn, in /usr/share/nodejs),
 # which a Node not installed from Debian does not look for.
 if(IS_DIRECTORY "/usr/share/nodejs")
