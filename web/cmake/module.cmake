@@ -55,7 +55,8 @@ target_link_libraries(impulselab_web PRIVATE ImpulseLab::impulse)
 target_compile_options(impulselab_web PRIVATE -fwasm-exceptions)
 # One classic script with the WebAssembly inside (SINGLE_FILE: no fetch, so it loads from
 # file://), defining createImpulseLab(), which resolves to the module; no file system, memory
-# that grows with the scene.
+# that grows with the scene. The last four keep it within 1 MiB (web:size; web/README.md weighs
+# them): a small allocator, and no loader code for options, eval or a missing TextDecoder.
 target_link_options(impulselab_web PRIVATE
   -fwasm-exceptions
   --bind
