@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The one door from the derivation page into the checker (embind): a derivation file's text in,
+// the engine's own answer out. It calls what `impulselab check NOTES.md --format json` calls
+// (impulse::derivations::check_derivation, then render with Format::json), so that the page's
+// verdicts are the command line's; nothing of the checker is written again in JavaScript.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <exception>
+#include <new>
+#include <string>
+
+#include "derivations/derivation.hpp"
+
+namespace {
+
+using emscripten::val;
+namespace check = impulse::derivations;
+
+// The options, a JavaScript object: {file}, how the report names the file (the command line
+// names it by its path; "check.html" when left out). The checker's settings are the command
+// line's defaults (its seed and number of random points).
+std::string file_from(const val& options) {
+  if (!options.isUndefined() && !options.isNull() && options["file"].isString()) {
+    return options["file"].as<std::string>();
+  }
+  return "check.html";
+}
+
+// Checks the derivation whose text is @p text (a string or, for bytes that are not UTF-8, a
+// Uint8Array) and returns {result, error, line, column, status}:
+//  - result: what `impulselab check FILE --format json` prints, or "" when it refuses the file;
+//  - error:  its refusal "LINE:COLUMN: what was expected" (the command line's message without
+//            the file's name), or "";
+//  - line, column: the place of the refusal (0 when there is none);
+//  - status: the command line's exit status (0, 1 when a step does not pass, 2 refused).
+val check_derivation(const std::string& text, const val& options) {
+  val out = val::object();
+  std::string result;
+  std::string error;
+  std::size_t line = 0;
+  std::size_t column = 0;
+  int status = 2;
+  try {
+    const check::DerivationReport report = check::check_derivation(text, file_from(options));
+    result = check::render(report, check::Format::json);
+    status = check::exit_status(report);
+  } catch (const check::DerivationError& e) {
+    line = e.line();
+    column = e.column();
+    error = std::to_string(line) + ":" + std::to_string(column) + ": " + e.what();
+  } catch (const std::bad_alloc&) {
+    error = "internal error (please report it): out of memory";
+  } catch (const std::exception& e) {
+    error = std::string("internal error (please report it): ") + e.what();
+  }
+  out.set("result", result);
+  out.set("error", error);
+  out.set("line", line);
+  out.set("column", column);
+  out.set("status", status);
+  return out;
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(impulselab_check) {
+  emscripten::function("checkDerivation", &check_derivation);
+}
