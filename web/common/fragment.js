@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The pages' state in the address's fragment (web-page.md, check-page.md): a file's text,
+// percent-encoded as encodeURIComponent writes UTF-8 text; bytes that are not UTF-8 travel as
+// %XX each, so that a malformed file reaches the reader, whose own message refuses it.
+// Defines window.impulselabFragment = {encodeBytes, decodeFragment, utf8Text}.
+(() => {
+  'use strict';
+  const unreserved = /[A-Za-z0-9\-_.!~*'()]/;
+
+  // Bytes as a fragment: the characters encodeURIComponent leaves alone as they are, %XX for every
+  // other byte.
+  function encodeBytes(bytes) {
+    let text = '';
+    for (const byte of bytes) {
+      const c = String.fromCharCode(byte);
+      text += byte < 0x80 && unreserved.test(c) ? c : '%' + byte.toString(16).toUpperCase().padStart(2, '0');
+    }
+    return text;
+  }
+
+  // The bytes a fragment stands for: %XX is a byte, any other character its UTF-8 bytes.
+  function decodeFragment(fragment) {
+    const bytes = [];
+    const encoder = new TextEncoder();
+    for (let i = 0; i < fragment.length; ++i) {
+      const hex = fragment.slice(i + 1, i + 3);
+      if (fragment[i] === '%' && /^[0-9A-Fa-f]{2}$/.test(hex)) {
+        bytes.push(parseInt(hex, 16));
+        i += 2;
+      } else {
+        const c = String.fromCodePoint(fragment.codePointAt(i));
+        bytes.push(...encoder.encode(c));
+        i += c.length - 1;
+      }
+    }
+    return new Uint8Array(bytes);
+  }
+
+  // The text of @p bytes, or null when they are not UTF-8.
+  function utf8Text(bytes) {
+    try {
+      return new TextDecoder('utf-8', {fatal: true}).decode(bytes);
+    } catch (e) {
+      return null;
+    }
+  }
+
+  window.impulselabFragment = {encodeBytes, decodeFragment, utf8Text};
+})();

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The derivation page's speed in headless Chromium (a measurement, not a test: timings are not
+// asserted). Times are the page's own (performance.now(), window.impulselabCheckTimes):
+//
+//   ready      check.html opened from disk, a fresh page each time: the checker's worker ready
+//              (its WebAssembly compiled), and the first report shown (the default example)
+//   section 3  the paper's section 3 (46 equations) chosen from the menu once the page is ready:
+//              from the choice to its report shown; and the check alone, in the worker
+//   keystroke  one character typed into the prose of a file of 20 steps (the example
+//              elastic-line's four steps, five times over, each copy after `given:`): from the
+//              key's input event to the new report shown
+//
+// usage: node check_measure.mjs --site DIR [--repeat N]
+import {readFileSync} from 'node:fs';
+import {join, resolve} from 'node:path';
+import {Browser} from './chromium.mjs';
+
+const args = process.argv.slice(2);
+const site = resolve(args[args.indexOf('--site') + 1]);
+const repeat = args.includes('--repeat') ? Number(args[args.indexOf('--repeat') + 1]) : 10;
+const url = `file://${join(site, 'check.html')}`;
+
+const stats = (values) => {
+  const sorted = [...values].sort((a, b) => a - b);
+  const at = (q) => sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))];
+  return {median: at(0.5), p90: at(0.9), max: sorted[sorted.length - 1], n: values.length};
+};
+const show = (what, s, unit = 'ms') =>
+  console.log(`${what.padEnd(62)} median ${s.median.toFixed(1)} ${unit}, 90% ${s.p90.toFixed(1)}, ` +
+              `max ${s.max.toFixed(1)} (${s.n} runs)`);
+
+// The examples as the site holds them.
+const window = {};
+new Function('window', readFileSync(join(site, 'examples.js'), 'utf8'))(window);
+const example = (name) => window.impulselabDerivations.find((e) => e.name === name).text;
+
+// 20 steps: elastic-line's derivation (1 premise, 4 steps) five times, each copy after `given:`
+// (its first equation a premise again) and without the tag, which may name one equation only.
+function twentySteps() {
+  const text = example('elastic-line');
+  const start = text.indexOf('A perfectly elastic collision');
+  const end = text.indexOf('<!-- expect');
+  const body = text.slice(start, end).replace(/ \\tag\{1\.1\}/, '');
+  let file = text.slice(0, start) + body;
+  for (let k = 2; k <= 5; ++k) {
+    file += `\n## Again (${k})\n\ngiven:\n\n${body}`;
+  }
+  return file;
+}
+
+const browser = await Browser.launch();
+const waitNext = async (page, count) =>
+  page.waitFor(`window.impulselabCheckTimes && impulselabCheckTimes.answers.length > ${count} && ` +
+               'document.body.dataset.ready === "true"', 120000);
+try {
+  const ready = [];
+  const first = [];
+  const section = [];
+  const sectionWorker = [];
+  for (let k = 0; k < repeat; ++k) {
+    const page = await browser.newPage({width: 1280, height: 800});
+    await page.goto(url);
+    await waitNext(page, 0);
+    const t = await page.evaluate('impulselabCheckTimes');
+    ready.push(t.workerReady);
+    first.push(t.answers[0].shown);
+    // Section 3 from the menu.
+    const count = t.answers.length;
+    const chosen = await page.evaluate(`(() => { const s = document.getElementById('example');
+                                         s.value = 'section3'; const at = performance.now();
+                                         s.dispatchEvent(new Event('change')); return at; })()`);
+    await waitNext(page, count);
+    const answer = (await page.evaluate('impulselabCheckTimes')).answers[count];
+    section.push(answer.shown - chosen);
+    sectionWorker.push(answer.worker);
+    await page.close();
+  }
+  show('ready: the worker\'s module compiled, from the start of loading', stats(ready));
+  show('ready: the first report shown (elastic-line), from the start', stats(first));
+  show('section 3 (46 equations), chosen to shown', stats(section));
+  show('section 3, the check alone (in the worker)', stats(sectionWorker));
+
+  // A keystroke in a file of 20 steps.
+  const text = twentySteps();
+  const page = await browser.newPage({width: 1280, height: 800});
+  await page.goto(`${url}#file=${encodeURIComponent(text)}`);
+  await waitNext(page, 0);
+  const steps = await page.evaluate('JSON.parse(document.getElementById("result-json").textContent).equations' +
+                                    '.filter((e) => e.verdict !== "premise").length');
+  const prose = text.indexOf('Expanding the squares') + 'Expanding'.length;
+  await page.evaluate(`(() => { const e = document.getElementById('editor'); e.focus();
+                                e.setSelectionRange(${prose}, ${prose}); })()`);
+  const keystroke = [];
+  const keystrokeWorker = [];
+  for (let k = 0; k < 3 * repeat; ++k) {
+    const count = await page.evaluate('impulselabCheckTimes.answers.length');
+    await page.send('Input.insertText', {text: k % 2 === 0 ? ' ' : 'x'});
+    await waitNext(page, count);
+    const answer = (await page.evaluate('impulselabCheckTimes')).answers[count];
+    keystroke.push(answer.shown - answer.changed);
+    keystrokeWorker.push(answer.worker);
+  }
+  show(`keystroke: a file of ${steps} steps, input event to report shown`, stats(keystroke));
+  show(`keystroke: the check alone (in the worker)`, stats(keystrokeWorker));
+  const size = readFileSync(join(site, 'impulselab-check.js')).length;
+  console.log(`module: impulselab-check.js ${size} bytes (${(size / 1048576).toFixed(2)} MiB)`);
+  await page.close();
+} finally {
+  await browser.close();
+}
