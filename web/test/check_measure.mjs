@@ -10,14 +10,36 @@
 //              elastic-line's four steps, five times over, each copy after `given:`): from the
 //              key's input event to the new report shown
 //
-// usage: node check_measure.mjs --site DIR [--repeat N]
-import {readFileSync} from 'node:fs';
+// With --cli, the command line checks the same two files in the same run, interleaved with the
+// page's checks: the report's own `seconds` (the check, as the worker's time is) and the whole
+// process, for the ratio of WebAssembly to native.
+//
+// usage: node check_measure.mjs --site DIR [--repeat N] [--cli PROGRAM]
+import {spawnSync} from 'node:child_process';
+import {mkdtempSync, readFileSync, rmSync, writeFileSync} from 'node:fs';
+import {tmpdir} from 'node:os';
 import {join, resolve} from 'node:path';
 import {Browser} from './chromium.mjs';
 
 const args = process.argv.slice(2);
 const site = resolve(args[args.indexOf('--site') + 1]);
 const repeat = args.includes('--repeat') ? Number(args[args.indexOf('--repeat') + 1]) : 10;
+const cli = args.includes('--cli') ? resolve(args[args.indexOf('--cli') + 1]) : null;
+const scratch = mkdtempSync(join(tmpdir(), 'impulselab-check-measure-'));
+const native = {};  // what -> {check: [ms], process: [ms]}
+function runNative(what, text) {
+  if (!cli) {
+    return;
+  }
+  const file = join(scratch, 'file.md');
+  writeFileSync(file, text);
+  const start = performance.now();
+  const run = spawnSync(cli, ['check', file, '--format', 'json'], {encoding: 'utf8'});
+  const wall = performance.now() - start;
+  native[what] = native[what] || {check: [], process: []};
+  native[what].check.push(JSON.parse(run.stdout).seconds * 1000);
+  native[what].process.push(wall);
+}
 const url = `file://${join(site, 'check.html')}`;
 
 const stats = (values) => {
@@ -49,6 +71,9 @@ function twentySteps() {
 }
 
 const browser = await Browser.launch();
+// The check's own time as the report gives it (`seconds`), as the command line's is measured.
+const reportSeconds = async (page) =>
+  1000 * await page.evaluate('JSON.parse(document.getElementById("result-json").textContent).seconds');
 const waitNext = async (page, count) =>
   page.waitFor(`window.impulselabCheckTimes && impulselabCheckTimes.answers.length > ${count} && ` +
                'document.body.dataset.ready === "true"', 120000);
@@ -57,6 +82,7 @@ try {
   const first = [];
   const section = [];
   const sectionWorker = [];
+  const sectionCheck = [];
   for (let k = 0; k < repeat; ++k) {
     const page = await browser.newPage({width: 1280, height: 800});
     await page.goto(url);
@@ -73,12 +99,15 @@ try {
     const answer = (await page.evaluate('impulselabCheckTimes')).answers[count];
     section.push(answer.shown - chosen);
     sectionWorker.push(answer.worker);
+    sectionCheck.push(await reportSeconds(page));
     await page.close();
+    runNative('section 3', example('section3'));
   }
   show('ready: the worker\'s module compiled, from the start of loading', stats(ready));
   show('ready: the first report shown (elastic-line), from the start', stats(first));
   show('section 3 (46 equations), chosen to shown', stats(section));
-  show('section 3, the check alone (in the worker)', stats(sectionWorker));
+  show('section 3, in the worker (check and JSON report)', stats(sectionWorker));
+  show('section 3, the check (the report\'s seconds)', stats(sectionCheck));
 
   // A keystroke in a file of 20 steps.
   const text = twentySteps();
@@ -92,6 +121,7 @@ try {
                                 e.setSelectionRange(${prose}, ${prose}); })()`);
   const keystroke = [];
   const keystrokeWorker = [];
+  const keystrokeCheck = [];
   for (let k = 0; k < 3 * repeat; ++k) {
     const count = await page.evaluate('impulselabCheckTimes.answers.length');
     await page.send('Input.insertText', {text: k % 2 === 0 ? ' ' : 'x'});
@@ -99,12 +129,25 @@ try {
     const answer = (await page.evaluate('impulselabCheckTimes')).answers[count];
     keystroke.push(answer.shown - answer.changed);
     keystrokeWorker.push(answer.worker);
+    keystrokeCheck.push(await reportSeconds(page));
+    runNative('20 steps', text);
   }
   show(`keystroke: a file of ${steps} steps, input event to report shown`, stats(keystroke));
-  show(`keystroke: the check alone (in the worker)`, stats(keystrokeWorker));
+  show('keystroke: in the worker (check and JSON report)', stats(keystrokeWorker));
+  show('keystroke: the check (the report\'s seconds)', stats(keystrokeCheck));
+  for (const [what, times] of Object.entries(native)) {
+    show(`native: ${what}, the check (the report's seconds)`, stats(times.check));
+    show(`native: ${what}, the whole process`, stats(times.process));
+  }
+  if (native['section 3']) {
+    console.log('ratio WebAssembly / native, the check (the reports\' seconds, medians): section 3 ' +
+                `${(stats(sectionCheck).median / stats(native['section 3'].check).median).toFixed(2)}, ` +
+                `20 steps ${(stats(keystrokeCheck).median / stats(native['20 steps'].check).median).toFixed(2)}`);
+  }
   const size = readFileSync(join(site, 'impulselab-check.js')).length;
   console.log(`module: impulselab-check.js ${size} bytes (${(size / 1048576).toFixed(2)} MiB)`);
   await page.close();
 } finally {
   await browser.close();
+  rmSync(scratch, {recursive: true, force: true});
 }
