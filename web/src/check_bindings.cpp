@@ -6,6 +6,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <cmath>
 #include <exception>
 #include <new>
 #include <string>
@@ -17,14 +18,29 @@ namespace {
 using emscripten::val;
 namespace check = impulse::derivations;
 
-// The options, a JavaScript object: {file}, how the report names the file (the command line
-// names it by its path; "check.html" when left out). The checker's settings are the command
-// line's defaults (its seed and number of random points).
+// The options, a JavaScript object: {file, stepSeconds}. `file` names the file in the report (the
+// command line names it by its path; "check.html" when left out). `stepSeconds` is each step's
+// time budget (DerivationOptions::step_seconds; the command line's default when left out). The
+// other settings are the command line's defaults (its seed and number of random points).
 std::string file_from(const val& options) {
   if (!options.isUndefined() && !options.isNull() && options["file"].isString()) {
     return options["file"].as<std::string>();
   }
   return "check.html";
+}
+
+// The settings of @p options, or the caller's mistake in @p error.
+check::DerivationOptions settings_from(const val& options, std::string& error) {
+  check::DerivationOptions settings;
+  if (!options.isUndefined() && !options.isNull() && !options["stepSeconds"].isUndefined()) {
+    const val seconds = options["stepSeconds"];
+    const double value = seconds.isNumber() ? seconds.as<double>() : 0.0;
+    if (!(value > 0.0) || !std::isfinite(value)) {
+      error = "stepSeconds: expected a positive number of seconds";
+    }
+    settings.step_seconds = value;
+  }
+  return settings;
 }
 
 // Checks the derivation whose text is @p text (a string or, for bytes that are not UTF-8, a
@@ -41,18 +57,22 @@ val check_derivation(const std::string& text, const val& options) {
   std::size_t line = 0;
   std::size_t column = 0;
   int status = 2;
-  try {
-    const check::DerivationReport report = check::check_derivation(text, file_from(options));
-    result = check::render(report, check::Format::json);
-    status = check::exit_status(report);
-  } catch (const check::DerivationError& e) {
-    line = e.line();
-    column = e.column();
-    error = std::to_string(line) + ":" + std::to_string(column) + ": " + e.what();
-  } catch (const std::bad_alloc&) {
-    error = "internal error (please report it): out of memory";
-  } catch (const std::exception& e) {
-    error = std::string("internal error (please report it): ") + e.what();
+  const check::DerivationOptions settings = settings_from(options, error);
+  if (error.empty()) {  // else the caller's option is refused
+    try {
+      const check::DerivationReport report =
+          check::check_derivation(text, file_from(options), settings);
+      result = check::render(report, check::Format::json);
+      status = check::exit_status(report);
+    } catch (const check::DerivationError& e) {
+      line = e.line();
+      column = e.column();
+      error = std::to_string(line) + ":" + std::to_string(column) + ": " + e.what();
+    } catch (const std::bad_alloc&) {
+      error = "internal error (please report it): out of memory";
+    } catch (const std::exception& e) {
+      error = std::string("internal error (please report it): ") + e.what();
+    }
   }
   out.set("result", result);
   out.set("error", error);

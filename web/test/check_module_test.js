@@ -119,6 +119,15 @@ check('a file without a display equation is refused (the contract)', (m) => {
   assert.notEqual(out.error, '');
 });
 
+check('a step budget that is not a positive number of seconds is refused', (m) => {
+  for (const stepSeconds of [0, -1, 'two', Infinity]) {
+    const out = m.checkDerivation(text, {stepSeconds});
+    assert.equal(out.result, '');
+    assert.match(out.error, /^stepSeconds: expected a positive number of seconds/);
+  }
+  assert.equal(m.checkDerivation(text, {stepSeconds: 2}).error, '');
+});
+
 check('the module goes on working after its refusals', (m) => {
   const out = m.checkDerivation(text, {file: 'hand.md'});
   assert.equal(JSON.parse(out.result).equations.length, 6);
