@@ -34,7 +34,7 @@
 
   // The address: #file= and the text (encodeURIComponent; bytes that are not UTF-8 as %XX), or
   // #example=NAME.
-  const {encodeBytes, decodeFragment, utf8Text} = window.impulselabFragment;
+  const {encodeBytes, decodeFragment, utf8Text, download} = window.impulselabFiles;
 
   // ---------------------------------------------------------------------------------------------
   // State.
@@ -198,11 +198,31 @@
     return n;
   }
 
-  // The margin: every line's number, and the mark of the worst verdict of the equations that begin
-  // on it; the refused line marked too.
+  // The margin: every line's number (a keystroke adds or removes only the lines it changed), and
+  // the mark of the worst verdict of the equations that begin on a line, or of the refusal.
+  function drawLineNumbers() {
+    const n = lineCount();
+    while (gutter.children.length < n) {
+      const number = document.createElement('div');
+      number.textContent = String(gutter.children.length + 1);
+      gutter.appendChild(number);
+    }
+    while (gutter.children.length > n) {
+      gutter.lastChild.remove();
+    }
+  }
+
   function drawGutter() {
+    drawLineNumbers();
+    for (const number of gutter.querySelectorAll('div[class]')) {
+      number.removeAttribute('class');
+      number.removeAttribute('title');
+      number.textContent = number.textContent.replace(/[^0-9]/g, '');
+    }
     const byLine = new Map();
-    if (state.report) {
+    if (state.errorPlace) {
+      byLine.set(state.errorPlace.line, 'refused');
+    } else if (state.report) {
       for (const e of state.report.equations) {
         const before = byLine.get(e.line);
         if (!before || severity.indexOf(e.verdict) > severity.indexOf(before)) {
@@ -210,20 +230,18 @@
         }
       }
     }
-    const n = lineCount();
-    const parts = [];
-    for (let line = 1; line <= n; ++line) {
-      const verdict = byLine.get(line);
-      if (state.errorPlace && state.errorPlace.line === line) {
-        parts.push(`<div class="refused" title="refused here">${line}<span class="mark-in-margin">!</span></div>`);
-      } else if (verdict) {
-        parts.push(`<div class="${verdict}" title="${verdictWords[verdict]}">${line}` +
-                   `<span class="mark-in-margin">${marginMarks[verdict]}</span></div>`);
-      } else {
-        parts.push(`<div>${line}</div>`);
+    for (const [line, verdict] of byLine) {
+      const number = gutter.children[line - 1];
+      if (!number) {
+        continue;
       }
+      const mark = document.createElement('span');
+      mark.className = 'mark-in-margin';
+      mark.textContent = verdict === 'refused' ? '!' : marginMarks[verdict];
+      number.className = verdict;
+      number.title = verdict === 'refused' ? 'refused here' : verdictWords[verdict];
+      number.appendChild(mark);
     }
-    gutter.innerHTML = parts.join('');
     syncScroll();
   }
 
@@ -594,7 +612,7 @@
     state.example = exampleWithText(state.text);
     $('example').value = state.example ? state.example.name : '';
     writeAddress();
-    drawGutter();
+    drawLineNumbers();  // the margin follows a scroll by itself (the scroll event)
     requestCheck(debounceMs);
   });
   editor.addEventListener('scroll', syncScroll);
@@ -618,14 +636,8 @@
   });
 
   $('download').addEventListener('click', () => {
-    const blob = new Blob([state.bytes !== null ? state.bytes : state.text], {type: 'text/markdown'});
-    const link = document.createElement('a');
-    link.href = URL.createObjectURL(blob);
-    link.download = `${state.example ? state.example.name : 'derivation'}.md`;
-    document.body.appendChild(link);
-    link.click();
-    link.remove();
-    setTimeout(() => URL.revokeObjectURL(link.href), 1000);
+    download(state.bytes !== null ? state.bytes : state.text,
+             `${state.example ? state.example.name : 'derivation'}.md`, 'text/markdown');
   });
 
   $('summary').addEventListener('click', (event) => {

@@ -44,8 +44,9 @@ if(IS_DIRECTORY "/usr/share/nodejs")
 endif()
 
 # The page, staged with the module into web/site/ beside collide.html: check.html, its script and
-# style, the worker's script, the address's encoding (common/fragment.js, for every page), and the
-# examples of its menu (examples.js, written from the files).
+# style, the worker's script, what the interactive pages share (common/: the address's encoding
+# of a file and downloads, files.js; the base style, page.css), and the examples of its menu
+# (examples.js, written from the files).
 set(check_files check.html check.css check.js check_worker.js)
 set(check_staged)
 foreach(file IN LISTS check_files)
@@ -55,11 +56,13 @@ foreach(file IN LISTS check_files)
     VERBATIM)
   list(APPEND check_staged "${site_dir}/${file}")
 endforeach()
-add_custom_command(OUTPUT "${site_dir}/fragment.js"
-  COMMAND "${CMAKE_COMMAND}" -E copy "${CMAKE_CURRENT_SOURCE_DIR}/common/fragment.js" "${site_dir}/fragment.js"
-  DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/common/fragment.js"
-  VERBATIM)
-list(APPEND check_staged "${site_dir}/fragment.js")
+foreach(file IN ITEMS files.js page.css)
+  add_custom_command(OUTPUT "${site_dir}/${file}"
+    COMMAND "${CMAKE_COMMAND}" -E copy "${CMAKE_CURRENT_SOURCE_DIR}/common/${file}" "${site_dir}/${file}"
+    DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/common/${file}"
+    VERBATIM)
+  list(APPEND check_staged "${site_dir}/${file}")
+endforeach()
 add_custom_command(OUTPUT "${site_dir}/impulselab-check.js"
   COMMAND "${CMAKE_COMMAND}" -E copy "$<TARGET_FILE:impulselab_check_web>" "${site_dir}/impulselab-check.js"
   DEPENDS impulselab_check_web

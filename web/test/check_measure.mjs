@@ -9,6 +9,9 @@
 //   keystroke  one character typed into the prose of a file of 20 steps (the example
 //              elastic-line's four steps, five times over, each copy after `given:`): from the
 //              key's input event to the new report shown
+//   typing     the page's own work on the main thread for one keystroke in section 4 (its input
+//              handler: the address, the margin, the next check asked for), which is all that
+//              typing waits for: the check runs in the worker
 //
 // With --cli, the command line checks the same two files in the same run, interleaved with the
 // page's checks: the report's own `seconds` (the check, as the worker's time is) and the whole
@@ -20,6 +23,7 @@ import {mkdtempSync, readFileSync, rmSync, writeFileSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import {join, resolve} from 'node:path';
 import {Browser} from './chromium.mjs';
+import {show, stats} from './harness.mjs';
 
 const args = process.argv.slice(2);
 const site = resolve(args[args.indexOf('--site') + 1]);
@@ -41,15 +45,6 @@ function runNative(what, text) {
   native[what].process.push(wall);
 }
 const url = `file://${join(site, 'check.html')}`;
-
-const stats = (values) => {
-  const sorted = [...values].sort((a, b) => a - b);
-  const at = (q) => sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))];
-  return {median: at(0.5), p90: at(0.9), max: sorted[sorted.length - 1], n: values.length};
-};
-const show = (what, s, unit = 'ms') =>
-  console.log(`${what.padEnd(62)} median ${s.median.toFixed(1)} ${unit}, 90% ${s.p90.toFixed(1)}, ` +
-              `max ${s.max.toFixed(1)} (${s.n} runs)`);
 
 // The examples as the site holds them.
 const window = {};
@@ -144,9 +139,23 @@ try {
                 `${(stats(sectionCheck).median / stats(native['section 3'].check).median).toFixed(2)}, ` +
                 `20 steps ${(stats(keystrokeCheck).median / stats(native['20 steps'].check).median).toFixed(2)}`);
   }
+  // The main thread's work per keystroke, on the longest example.
+  await page.close();
+  const long = await browser.newPage({width: 1280, height: 800});
+  await long.goto(`${url}#example=section4`);
+  await waitNext(long, 0);
+  const typing = await long.evaluate(`(() => { const e = document.getElementById('editor'); const times = [];
+    for (let k = 0; k < ${3 * repeat}; ++k) {
+      e.value += ' ';  // the textarea's own editing, not the page's, is left out
+      const start = performance.now();
+      e.dispatchEvent(new Event('input'));
+      times.push(performance.now() - start);
+    }
+    return {times, lines: e.value.split('\\n').length}; })()`);
+  show(`typing: the input handler on the main thread, section 4 (${typing.lines} lines)`, stats(typing.times));
   const size = readFileSync(join(site, 'impulselab-check.js')).length;
   console.log(`module: impulselab-check.js ${size} bytes (${(size / 1048576).toFixed(2)} MiB)`);
-  await page.close();
+  await long.close();
 } finally {
   await browser.close();
   rmSync(scratch, {recursive: true, force: true});

@@ -67,14 +67,12 @@ function commandLineOnText(text) {
 
 // --- The page --------------------------------------------------------------------------------
 
-const unreserved = /[A-Za-z0-9\-_.!~*'()]/;
-function encodeBytes(bytes) {
-  let text = '';
-  for (const byte of bytes) {
-    const c = String.fromCharCode(byte);
-    text += byte < 0x80 && unreserved.test(c) ? c : '%' + byte.toString(16).toUpperCase().padStart(2, '0');
-  }
-  return text;
+// A file in the address as check-page.md says: its text as encodeURIComponent writes it; bytes
+// that are not UTF-8 (no file of the project has any) each as %XX.
+function fragmentOf(bytes) {
+  const text = bytes.toString('utf8');
+  return Buffer.from(text, 'utf8').equals(bytes) ? encodeURIComponent(text) :
+    [...bytes].map((b) => `%${b.toString(16).padStart(2, '0')}`).join('');
 }
 
 async function shown(p) {
@@ -255,7 +253,7 @@ const groups = {
     let p = null;
     for (const file of files) {
       const line = commandLine(file);
-      const url = `${pageUrl}#file=${encodeBytes(line.text)}`;
+      const url = `${pageUrl}#file=${fragmentOf(line.text)}`;
       if (p === null) {
         p = await open(browser, url);
       } else {
@@ -454,7 +452,7 @@ const groups = {
       const p = await open(browser, `${origin}/check.html#example=section3`);
       checkAgainstCommandLine(await pageState(p), commandLine(file), 'section3', 'from a web server: #example=section3');
       const slip = join(source, 'tutorials/08-find-the-slip/derivations/b-two-bodies-stick.md');
-      await navigate(p, `${origin}/check.html#file=${encodeBytes(readFileSync(slip))}`);
+      await navigate(p, `${origin}/check.html#file=${fragmentOf(readFileSync(slip))}`);
       checkAgainstCommandLine(await pageState(p), commandLine(slip), 'b-two-bodies-stick', 'from a web server: #file=');
       checkClean(p, 'server', new RegExp(`^(${origin.replace(/[.]/g, '\\.')}/|data:|blob:)`));
     } finally {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// What the browser tests of the pages share: their options, counted checks with their failures
-// printed, the page's cleanliness (no console error, no exception, no request outside the site),
-// and running one group of checks in a fresh headless Chromium.
+// What the browser tests and measurements of the pages share: their options, counted checks with
+// their failures printed, the page's cleanliness (no console error, no exception, no request
+// outside the site), running one group of checks in a fresh headless Chromium, and the medians of
+// a measurement.
 import {resolve} from 'node:path';
 import {Browser} from './chromium.mjs';
 
@@ -52,4 +53,17 @@ export async function runGroup(groups, name, usage, cleanup = () => {}, launch =
   }
   console.log(`${name}: ${checks} checks, ${failures} failed`);
   process.exit(failures === 0 ? 0 : 1);
+}
+
+// The median, 90th percentile and largest of @p values.
+export function stats(values) {
+  const sorted = [...values].sort((a, b) => a - b);
+  const at = (q) => sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))];
+  return {median: at(0.5), p90: at(0.9), max: sorted[sorted.length - 1], n: values.length};
+}
+
+// One line of a measurement: what, and its stats.
+export function show(what, s, unit = 'ms') {
+  console.log(`${what.padEnd(62)} median ${s.median.toFixed(1)} ${unit}, 90% ${s.p90.toFixed(1)}, ` +
+              `max ${s.max.toFixed(1)} (${s.n} runs)`);
 }

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The pages' state in the address's fragment (web-page.md, check-page.md): a file's text,
-// percent-encoded as encodeURIComponent writes UTF-8 text; bytes that are not UTF-8 travel as
-// %XX each, so that a malformed file reaches the reader, whose own message refuses it.
-// Defines window.impulselabFragment = {encodeBytes, decodeFragment, utf8Text}.
+// The interactive pages' files: their text in the address's fragment (web-page.md,
+// check-page.md), percent-encoded as encodeURIComponent writes UTF-8 text, where bytes that are
+// not UTF-8 travel as %XX each, so that a malformed file reaches the reader, whose own message
+// refuses it; and a file saved as a download.
+// Defines window.impulselabFiles = {encodeBytes, decodeFragment, utf8Text, download}.
 (() => {
   'use strict';
   const unreserved = /[A-Za-z0-9\-_.!~*'()]/;
@@ -45,5 +46,16 @@
     }
   }
 
-  window.impulselabFragment = {encodeBytes, decodeFragment, utf8Text};
+  // Saves @p content (text or bytes) as the file @p name, of the MIME type @p type.
+  function download(content, name, type) {
+    const link = document.createElement('a');
+    link.href = URL.createObjectURL(new Blob([content], {type}));
+    link.download = name;
+    document.body.appendChild(link);
+    link.click();
+    link.remove();
+    setTimeout(() => URL.revokeObjectURL(link.href), 1000);
+  }
+
+  window.impulselabFiles = {encodeBytes, decodeFragment, utf8Text, download};
 })();
