@@ -34,7 +34,7 @@
 
   // The address: #file= and the text (encodeURIComponent; bytes that are not UTF-8 as %XX), or
   // #example=NAME.
-  const {encodeBytes, decodeFragment, utf8Text, download} = window.impulselabFiles;
+  const {encodeBytes, decodeFragment, utf8Text, download, opened} = window.impulselabFiles;
 
   // ---------------------------------------------------------------------------------------------
   // State.
@@ -625,14 +625,10 @@
   });
 
   $('open-file').addEventListener('change', async (event) => {
-    const file = event.target.files[0];
-    if (!file) {
-      return;
+    const content = await opened(event);
+    if (content !== null) {
+      load(content);
     }
-    const bytes = new Uint8Array(await file.arrayBuffer());
-    const text = utf8Text(bytes);
-    load(text !== null ? text : bytes);
-    event.target.value = '';
   });
 
   $('download').addEventListener('click', () => {

@@ -2,8 +2,8 @@
 // The interactive pages' files: their text in the address's fragment (web-page.md,
 // check-page.md), percent-encoded as encodeURIComponent writes UTF-8 text, where bytes that are
 // not UTF-8 travel as %XX each, so that a malformed file reaches the reader, whose own message
-// refuses it; and a file saved as a download.
-// Defines window.impulselabFiles = {encodeBytes, decodeFragment, utf8Text, download}.
+// refuses it; a file opened from the reader's disk, and one saved as a download.
+// Defines window.impulselabFiles = {encodeBytes, decodeFragment, utf8Text, download, opened}.
 (() => {
   'use strict';
   const unreserved = /[A-Za-z0-9\-_.!~*'()]/;
@@ -57,5 +57,19 @@
     setTimeout(() => URL.revokeObjectURL(link.href), 1000);
   }
 
-  window.impulselabFiles = {encodeBytes, decodeFragment, utf8Text, download};
+  // What the file input of @p event (its change) holds: the chosen file's text, or its bytes when
+  // they are not UTF-8; null when none was chosen. The input is emptied, so that choosing the same
+  // file again reads it again.
+  async function opened(event) {
+    const file = event.target.files[0];
+    if (!file) {
+      return null;
+    }
+    const bytes = new Uint8Array(await file.arrayBuffer());
+    event.target.value = '';
+    const text = utf8Text(bytes);
+    return text !== null ? text : bytes;
+  }
+
+  window.impulselabFiles = {encodeBytes, decodeFragment, utf8Text, download, opened};
 })();
