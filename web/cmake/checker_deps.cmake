@@ -21,8 +21,9 @@ else()
     ERROR_VARIABLE wasm_deps_error RESULT_VARIABLE wasm_deps_status)
   if(NOT wasm_deps_status EQUAL 0)
     message(FATAL_ERROR "The derivation page's module needs GiNaC, CLN and GSL built for "
-                        "WebAssembly, which are not built yet: run scripts/build-wasm-deps (about "
-                        "10 minutes once; its cache serves every later build). ${wasm_deps_error}"
+                        "WebAssembly, which are not built yet: run scripts/build-wasm-deps (once "
+                        "per machine, some 15 minutes of processor time, web/README.md; its cache "
+                        "serves every later build). ${wasm_deps_error}"
                         "Expected in: ${wasm_deps}")
   endif()
 endif()
