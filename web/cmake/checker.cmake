@@ -43,25 +43,19 @@ if(IS_DIRECTORY "/usr/share/nodejs")
     "${CMAKE_COMMAND};-E;env;NODE_PATH=/usr/share/nodejs")
 endif()
 
-# The page, staged with the module into web/site/ beside collide.html: check.html, its script and
-# style, the worker's script, what the interactive pages share (common/: the address's encoding
-# of a file and downloads, files.js; the base style, page.css), and the examples of its menu
-# (examples.js, written from the files).
-set(check_files check.html check.css check.js check_worker.js)
+# The page, staged with the module into web/site/ beside collide.html (check_files.cmake lists
+# them for the docs site too): check.html, its script and style, the worker's script, what the
+# interactive pages share (common/: the address's encoding of a file and downloads, files.js; the
+# base style, page.css), and the examples of its menu (examples.js, written from the files).
+include(${CMAKE_CURRENT_SOURCE_DIR}/cmake/check_files.cmake)
 set(check_staged)
-foreach(file IN LISTS check_files)
-  add_custom_command(OUTPUT "${site_dir}/${file}"
-    COMMAND "${CMAKE_COMMAND}" -E copy "${CMAKE_CURRENT_SOURCE_DIR}/check/${file}" "${site_dir}/${file}"
-    DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/check/${file}"
+foreach(file IN LISTS IMPULSELAB_CHECK_PAGE_FILES)
+  get_filename_component(name "${file}" NAME)
+  add_custom_command(OUTPUT "${site_dir}/${name}"
+    COMMAND "${CMAKE_COMMAND}" -E copy "${CMAKE_CURRENT_SOURCE_DIR}/${file}" "${site_dir}/${name}"
+    DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/${file}"
     VERBATIM)
-  list(APPEND check_staged "${site_dir}/${file}")
-endforeach()
-foreach(file IN ITEMS files.js page.css)
-  add_custom_command(OUTPUT "${site_dir}/${file}"
-    COMMAND "${CMAKE_COMMAND}" -E copy "${CMAKE_CURRENT_SOURCE_DIR}/common/${file}" "${site_dir}/${file}"
-    DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/common/${file}"
-    VERBATIM)
-  list(APPEND check_staged "${site_dir}/${file}")
+  list(APPEND check_staged "${site_dir}/${name}")
 endforeach()
 add_custom_command(OUTPUT "${site_dir}/impulselab-check.js"
   COMMAND "${CMAKE_COMMAND}" -E copy "$<TARGET_FILE:impulselab_check_web>" "${site_dir}/impulselab-check.js"

@@ -334,7 +334,7 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
   } else {
     forward = exact(before, step, e.facts, budget);
   }
-  const NumericOpinion opinion = numeric(before, step, forward, e.facts, index);
+  const NumericOpinion opinion = numeric(before, step, forward, e.facts, index, budget);
   r.numeric_points = opinion.points;
   r.numeric_worst = opinion.worst;
   if (multiple && !opinion.counterexample) {
@@ -686,7 +686,7 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
 // exact method found conditions, the points where one of them is zero are left out like those
 // where a denominator is. Functions and sums get the first instance's formulas.
 NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, const Forward& forward,
-                                const Facts& facts, std::size_t index) {
+                                const Facts& facts, std::size_t index, const Budget& budget) {
   const std::vector<Rule> rules = rules_of(before.differences);
   Scalars b = by_rules(before, rules);
   Scalars s = by_rules(step, rules);
@@ -755,8 +755,8 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
                           forward.implication.conditions.end());
     }
     NumericProblem problem{premises, scales, denominators, s.differences[k], s.scales[k]};
-    const NumericOpinion one =
-        sample(problem, f, options_.seed * 7919 + index * 31 + k, options_.samples);
+    const NumericOpinion one = sample(problem, f, options_.seed * 7919 + index * 31 + k,
+                                      options_.samples, budget.deadline);
     numeric.points += one.points;
     numeric.worst = std::max(numeric.worst, one.worst);
     if (!numeric.counterexample && one.counterexample) {
@@ -942,23 +942,30 @@ void Checker::condition(const Implication& forward, const Scalars& before, const
   r.condition_text = plain_of(product) + " != 0";
 }
 
-bool Checker::equivalent(const std::vector<const Equation*>& premises, const Equation& target,
-                         double seconds) {
+bool Checker::follows(const std::vector<const Equation*>& premises, const Equation& target,
+                      const Facts& facts, double seconds, bool both) {
   Budget budget;
   budget.deadline = std::chrono::steady_clock::now() +
                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                         std::chrono::duration<double>(seconds));
   Scalars before;
   for (const Equation* p : premises) {
-    before.append(scalars_of(*p, target.substitutions));
+    before.append(scalars_of(*p, p->substitutions));
   }
   const Scalars step = scalars_of(target, target.substitutions);
-  const Forward forward = exact(before, step, target.facts, budget);
-  if (forward.implication.outcome != Implication::Outcome::holds) {
+  try {
+    const Forward forward = exact(before, step, facts, budget);
+    if (forward.implication.outcome != Implication::Outcome::holds) {
+      return false;
+    }
+    if (!both) {
+      return true;
+    }
+    const std::optional<Implication> back = converse(before, step, facts, budget);
+    return back && back->outcome == Implication::Outcome::holds;
+  } catch (const std::exception&) {
     return false;
   }
-  const std::optional<Implication> back = converse(before, step, target.facts, budget);
-  return back && back->outcome == Implication::Outcome::holds;
 }
 
 void Checker::residual(const ex& e, EquationResult& r) const {

@@ -900,7 +900,10 @@ SolveOutput solve_output(const Result& result, std::string_view source, Format f
   }
   output.report =
       format == Format::json ? report_json(result) : text_report(result, source, colour);
-  output.warnings = impulse_warnings(result);
+  output.warnings = elasticity_warnings(result, source);
+  for (std::string& warning : impulse_warnings(result)) {
+    output.warnings.push_back(std::move(warning));
+  }
   for (std::string& warning : system_warnings(result, source)) {
     output.warnings.push_back(std::move(warning));
   }
@@ -937,10 +940,13 @@ SolveOutput compare_output(const World& world, std::string_view source, Format f
   SolveOutput output;
   output.report = format == Format::json ? comparison_json(results, source).dump(2) + "\n"
                                          : comparison_text(results, source, colour);
-  // The system A·Fdt = B is the same for every method: one warning about its conditioning.
+  // The elasticities and the system A·Fdt = B are the same for every method: one warning each.
+  output.warnings = elasticity_warnings(results.front(), source);
   for (const Result& r : results) {
     if (r.outcome.finished) {
-      output.warnings = system_warnings(r, source);
+      for (std::string& warning : system_warnings(r, source)) {
+        output.warnings.push_back(std::move(warning));
+      }
       break;
     }
   }
@@ -998,9 +1004,12 @@ SolveOutput compare_laws_output(const World& world, std::string_view source, For
   } else {
     output.report = laws_comparison_text(results, laws, source, colour);
   }
+  output.warnings = elasticity_warnings(results.front(), source);
   for (const Result& r : results) {
     if (r.outcome.finished) {
-      output.warnings = system_warnings(r, source);
+      for (std::string& warning : system_warnings(r, source)) {
+        output.warnings.push_back(std::move(warning));
+      }
       break;
     }
   }

@@ -151,7 +151,8 @@ struct SolveOutput {
   /// when it did.
   std::string unfinished;
   /// The warnings `solve` prints on standard error (without its "impulselab: warning: "): the
-  /// impulses' (scene::impulse_warnings) and the system's (scene::system_warnings).
+  /// elasticities' (scene::elasticity_warnings), the impulses' (scene::impulse_warnings) and
+  /// the system's (scene::system_warnings).
   std::vector<std::string> warnings;
 };
 
@@ -183,7 +184,8 @@ struct SolveOutput {
 /// on one assembled and solved system, side by side in @p format; the system's warnings once,
 /// then each method's impulse warnings with its name in front ("serial: …"); `unfinished` holds
 /// one line per method that did not finish (the others' report is still written). A method
-/// whose numbers overflow throws InvalidInput naming it.
+/// whose numbers overflow throws InvalidInput naming it. The elasticities' warnings come first,
+/// once.
 /// @param world the checked scene
 /// @param source how messages name the scene
 /// @param format text or JSON
@@ -200,6 +202,7 @@ struct SolveOutput {
 /// finish); each law's impulse warnings with its name in front ("newton: energy gained: …").
 /// A law the scene cannot take (the energetic law above elasticity 2, several contacts with a
 /// method other than serial) throws InvalidInput naming the scene, the place and the law.
+/// The elasticities' warnings come first, once.
 /// @param world the checked scene
 /// @param source how messages name the scene
 /// @param format text or JSON
