@@ -6,7 +6,6 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
-#include <cmath>
 #include <exception>
 #include <new>
 #include <string>
@@ -20,7 +19,7 @@ namespace check = impulse::derivations;
 
 // The options, a JavaScript object: {file, stepSeconds}. `file` names the file in the report (the
 // command line names it by its path; "check.html" when left out). `stepSeconds` is each step's
-// time budget (DerivationOptions::step_seconds; the command line's default when left out). The
+// time budget (--step-seconds; DerivationOptions::step_seconds, 2 s when left out). The
 // other settings are the command line's defaults (its seed and number of random points).
 std::string file_from(const val& options) {
   if (!options.isUndefined() && !options.isNull() && options["file"].isString()) {
@@ -35,8 +34,8 @@ check::DerivationOptions settings_from(const val& options, std::string& error) {
   if (!options.isUndefined() && !options.isNull() && !options["stepSeconds"].isUndefined()) {
     const val seconds = options["stepSeconds"];
     const double value = seconds.isNumber() ? seconds.as<double>() : 0.0;
-    if (!(value > 0.0) || !std::isfinite(value)) {
-      error = "stepSeconds: expected a positive number of seconds";
+    if (!(value > 0.0) || value > 3600.0) {  // the command line's --step-seconds takes these
+      error = "stepSeconds: expected a time from 0 to 3600 seconds";
     }
     settings.step_seconds = value;
   }
