@@ -168,11 +168,16 @@ struct Task {
 class TaskError : public std::runtime_error {
  public:
   /// @brief The task file's error.
+  /// @param line 1-based line of the task file
+  /// @param column 1-based column (characters)
+  /// @param message what was expected there
   TaskError(std::size_t line, std::size_t column, const std::string& message)
       : std::runtime_error(message), line_(line), column_(column) {}
-  /// @brief 1-based line.
+  /// @brief The line of the error in the task file.
+  /// @return 1-based
   [[nodiscard]] std::size_t line() const { return line_; }
-  /// @brief 1-based column.
+  /// @brief The column of the error in the task file.
+  /// @return 1-based, in characters
   [[nodiscard]] std::size_t column() const { return column_; }
 
  private:
