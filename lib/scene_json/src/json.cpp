@@ -598,18 +598,7 @@ class Reader {
       scene.method = member_of<methods::Method>(*m, child(path, "method"));
     }
     if (const json* r = optional(value, "restitution")) {
-      const std::string where = child(path, "restitution");
-      const std::string name = string(*r, where);
-      const std::optional<friction::RestitutionLaw> law = friction::restitution_law_named(name);
-      if (!law) {
-        std::string names;
-        for (const auto each : {friction::RestitutionLaw::newton, friction::RestitutionLaw::poisson,
-                                friction::RestitutionLaw::energetic}) {
-          names.append(names.empty() ? "" : ", ").append(in_quotes(friction::to_string(each)));
-        }
-        fail(where, "expected one of " + names + ", got " + in_quotes(name));
-      }
-      scene.restitution = *law;
+      scene.restitution = member_of<friction::RestitutionLaw>(*r, child(path, "restitution"));
     }
     if (const json* c = optional(value, "max_collisions")) {
       // The type is a whole number of collisions, at least 1 (0 is not written: a scene without
@@ -962,9 +951,10 @@ SolveOutput compare_output(const World& world, std::string_view source, Format f
 
 SolveOutput compare_laws_output(const World& world, std::string_view source, Format format,
                                 bool colour) {
-  constexpr std::array<friction::RestitutionLaw, 3> laws{friction::RestitutionLaw::newton,
-                                                         friction::RestitutionLaw::poisson,
-                                                         friction::RestitutionLaw::energetic};
+  std::vector<friction::RestitutionLaw> laws;
+  for (const auto& row : EnumNames<friction::RestitutionLaw>::table) {
+    laws.push_back(row.value);
+  }
   std::vector<Result> results;
   for (const friction::RestitutionLaw law : laws) {
     Scene scene = world.scene();
@@ -974,7 +964,7 @@ SolveOutput compare_laws_output(const World& world, std::string_view source, For
     } catch (const InvalidInput& e) {
       std::string message(source);
       message.append(": ").append(e.what()).append(" (--compare restitution, the law \"");
-      message.append(friction::to_string(law)).append("\")");
+      message.append(name_of(law)).append("\")");
       throw InvalidInput(message);
     }
     if (results.back().status != SolveStatus::success) {
@@ -985,7 +975,7 @@ SolveOutput compare_laws_output(const World& world, std::string_view source, For
   if (format == Format::json) {
     nlohmann::ordered_json out = nlohmann::ordered_json::object();
     for (std::size_t k = 0; k < laws.size(); ++k) {
-      const std::string name(friction::to_string(laws[k]));
+      const std::string name(name_of(laws[k]));
       if (results[k].outcome.finished) {
         nlohmann::ordered_json result = to_json(results[k]);
         result["restitution"] = name;
@@ -1007,8 +997,7 @@ SolveOutput compare_laws_output(const World& world, std::string_view source, For
   for (std::size_t k = 0; k < laws.size(); ++k) {
     const Result& r = results[k];
     if (r.outcome.finished) {
-      for (std::string& warning :
-           impulse_warnings(r, std::string(friction::to_string(laws[k])) + ": ")) {
+      for (std::string& warning : impulse_warnings(r, std::string(name_of(laws[k])) + ": ")) {
         output.warnings.push_back(std::move(warning));
       }
     } else {

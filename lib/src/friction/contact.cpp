@@ -22,12 +22,6 @@ namespace impulse::friction {
 
 namespace {
 
-constexpr std::array<std::pair<RestitutionLaw, std::string_view>, 3> law_names{{
-    {RestitutionLaw::newton, "newton"},
-    {RestitutionLaw::poisson, "poisson"},
-    {RestitutionLaw::energetic, "energetic"},
-}};
-
 // How far W may be from symmetric, and |W_nt| above sqrt(W_nn W_tt), relative to W's size.
 constexpr double matrix_tolerance = 1e-12;
 constexpr double infinity = std::numeric_limits<double>::infinity();
@@ -117,24 +111,6 @@ double to_work(double left, double d_n, double u_n, double v_n) {
 }
 
 }  // namespace
-
-std::string_view to_string(RestitutionLaw law) {
-  for (const auto& [l, name] : law_names) {
-    if (l == law) {
-      return name;
-    }
-  }
-  return "?";
-}
-
-std::optional<RestitutionLaw> restitution_law_named(std::string_view name) {
-  for (const auto& [l, known] : law_names) {
-    if (known == name) {
-      return l;
-    }
-  }
-  return std::nullopt;
-}
 
 std::string_view to_string(Slip regime) {
   switch (regime) {

@@ -27,15 +27,7 @@ bool is_static(const multipoint::Body& body) {
 }
 
 std::string law_name(friction::RestitutionLaw law) {
-  switch (law) {
-    case friction::RestitutionLaw::newton:
-      return "Newton's restitution";
-    case friction::RestitutionLaw::poisson:
-      return "Poisson's restitution";
-    case friction::RestitutionLaw::energetic:
-      return "the energetic restitution law";
-  }
-  return "?";
+  return std::string(row_of(law).words);
 }
 
 // "slip until Fdt = 0.2, stick until 0.925; compression ended at Fdt = 0.3625"
@@ -197,7 +189,7 @@ Outcome exact_single(Method method, const multipoint::Configuration& configurati
     ends.push_back(phase.end);
     regimes.append(regimes.empty() ? "" : ", ").append(friction::to_string(phase.regime));
   }
-  o.diagnostics = {{"restitution", std::string(friction::to_string(law.restitution))},
+  o.diagnostics = {{"restitution", std::string(name_of(law.restitution))},
                    {"friction", law.friction},
                    {"elasticity", law.elasticity.value()},
                    {"phases", regimes},

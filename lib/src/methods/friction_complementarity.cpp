@@ -372,7 +372,7 @@ Outcome complementarity_friction(const multipoint::Configuration& configuration,
       {"complementarity_residual", s.residual},
       {"converged", s.status == LcpStatus::solved},
       {"least_norm", s.least_norm},
-      {"restitution", std::string(friction::to_string(options.restitution))},
+      {"restitution", std::string(name_of(options.restitution))},
       {"friction", mu},
       {"slip_after", std::vector<double>(s.u_after.data() + n, s.u_after.data() + 2 * n)}};
   return o;

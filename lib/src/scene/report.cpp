@@ -409,25 +409,13 @@ std::string comparison_text(std::span<const Result> results, std::string_view so
   return compared_text(results, source, colour, compared);
 }
 
-std::string_view law_legend(friction::RestitutionLaw law) {
-  switch (law) {
-    case friction::RestitutionLaw::newton:
-      return "Newton's (the paper's): approach speed after = -(elasticity - 1) x before";
-    case friction::RestitutionLaw::poisson:
-      return "Poisson's: restitution impulse = (elasticity - 1) x compression impulse";
-    case friction::RestitutionLaw::energetic:
-      return "energetic (Stronge's): restitution work = (elasticity - 1)^2 x |compression work|";
-  }
-  return "?";
-}
-
 std::string laws_comparison_text(std::span<const Result> results,
                                  std::span<const friction::RestitutionLaw> laws,
                                  std::string_view source, bool colour) {
   Compared compared{"restitution laws", {}, {}, "How each law got there"};
   for (const friction::RestitutionLaw law : laws) {
-    compared.names.emplace_back(friction::to_string(law));
-    compared.legend.push_back(law_legend(law));
+    compared.names.emplace_back(name_of(law));
+    compared.legend.push_back(row_of(law).definition);
   }
   std::string out = compared_text(results, source, colour, compared);
   return out;

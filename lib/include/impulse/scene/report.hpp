@@ -39,11 +39,6 @@ namespace impulse::scene {
 [[nodiscard]] std::string comparison_text(std::span<const Result> results, std::string_view source,
                                           bool colour);
 
-/// @brief The words of each restitution law in the legend of `--compare restitution`.
-/// @param law the law
-/// @return one line, its definition
-[[nodiscard]] std::string_view law_legend(friction::RestitutionLaw law);
-
 /// @brief The three restitution laws' results for one scene side by side (`solve --compare
 /// restitution`): the tables of comparison_text(), one column per law, with the tangential
 /// impulses and how each contact ended.
