@@ -77,8 +77,7 @@ void check_file(const CheckOptions& options) {
   write_output(options.output, [&](std::FILE* out) { std::fputs(rendered.c_str(), out); });
   if (check::exit_status(report) != 0) {
     for (const auto& e : report.equations) {
-      if (e.verdict == check::Verdict::does_not_follow || e.verdict == check::Verdict::dimensions ||
-          e.verdict == check::Verdict::undecided) {
+      if (check::fails(e.verdict)) {
         throw WorkFailed(path + ": line " + std::to_string(e.line) + " " +
                          std::string(check::to_string(e.verdict)) +
                          " (the first equation that does not pass)");

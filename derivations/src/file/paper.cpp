@@ -906,10 +906,6 @@ void FileRun::define_for_probe(const Group& g, const std::vector<std::size_t>& o
 
 // ---- an equation or a step --------------------------------------------------------------------
 
-bool passing(Verdict v) {
-  return v == Verdict::follows || v == Verdict::follows_one_way || v == Verdict::follows_if;
-}
-
 FileRun::Variant FileRun::run_variant(const Group& g, bool corrected) {
   Variant out;
   DerivationOptions settings;
@@ -953,10 +949,8 @@ FileRun::Variant FileRun::run_variant(const Group& g, bool corrected) {
       continue;
     }
     out.evidence = true;
-    if (r.verdict == Verdict::does_not_follow || r.verdict == Verdict::dimensions) {
-      out.fails = true;
-    } else if (!passing(r.verdict)) {
-      out.unknown = true;
+    if (fails(r.verdict)) {
+      (r.verdict == Verdict::undecided ? out.unknown : out.fails) = true;
     }
     if (r.decided_by == "exact" || r.verdict == Verdict::dimensions) {
       out.methods.insert(Method::symbolic);

@@ -12,10 +12,6 @@ namespace impulse::derivations {
 
 namespace {
 
-bool failing(Verdict v) {
-  return v == Verdict::does_not_follow || v == Verdict::dimensions || v == Verdict::undecided;
-}
-
 std::string value_text(double x, const std::string& exact) {
   return exact.empty() ? num::brief(x, 6) : exact;
 }
@@ -88,7 +84,7 @@ std::string render_text(const DerivationReport& r, bool colour) {
   std::optional<std::size_t> first_failure;
   const std::string indent(34, ' ');
   for (const EquationResult& e : r.equations) {
-    const bool fails = failing(e.verdict);
+    const bool fails = derivations::fails(e.verdict);
     const bool first = fails && !first_failure;
     if (first) {
       first_failure = e.line;
@@ -172,7 +168,7 @@ std::string render_markdown(const DerivationReport& r) {
         details = e.decided_by;
         break;
     }
-    const bool fails = failing(e.verdict);
+    const bool fails = derivations::fails(e.verdict);
     out << "| " << e.line << " | " << (fails ? "**" : "") << to_string(e.verdict)
         << (fails ? "**" : "") << " | $" << escape_markdown(e.latex) << "$ | "
         << escape_markdown(details) << " |\n";
