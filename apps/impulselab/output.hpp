@@ -3,6 +3,7 @@
 // output or, atomically, to a file.
 #pragma once
 
+#include <cstddef>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -17,6 +18,14 @@ namespace impulselab {
 /// @param path a file or "-"
 /// @return the checked scene
 impulse::scene::World read_world(const std::string& path);
+
+/// The whole contents of a file; impulse::InvalidInput (`"<path>: cannot read: <reason>"`) when
+/// it cannot be read, or (`"<path>: holds more than … bytes …"`) when it is larger than
+/// @p max_bytes, which is found without reading more than @p max_bytes + 1 bytes.
+/// @param path the file
+/// @param max_bytes the largest file accepted
+/// @return its bytes
+std::string read_file(const std::string& path, std::size_t max_bytes);
 
 /// How messages name the scene at @p path: the path itself, or "<stdin>" for "-".
 /// @param path a file or "-"

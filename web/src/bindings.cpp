@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The one door from the interactive page into the library (embind): a scene's text in, the
-// library's own answer out. It calls exactly what `impulselab solve --format json` calls (the
-// scene reader, the solver, the JSON report and warnings (lib/scene_json)), so that the page's
+// library's own answer out. It calls exactly what `impulselab solve --format json` calls
+// (scene::solve_to_json: the scene reader, scene::run, the JSON report), so that the page's
 // numbers are the command line's numbers. Everything else the page shows that is not in that
 // report (each body's motion before the collision, its kinetic energy before and after) comes
 // from the same solved result, never from JavaScript.
@@ -15,7 +15,6 @@
 
 #include "impulse/core/error.hpp"
 #include "impulse/scene/json.hpp"
-#include "impulse/scene/scene.hpp"
 
 namespace {
 
@@ -79,20 +78,17 @@ val solve_scene(const std::string& text) {
   std::vector<std::string> warnings;
   std::string error;
   try {
-    // `impulselab solve --format json`'s path (scene::solve_to_json), with the resolved scene
-    // kept for the drawing: the world read and checked, resolved once, and the library's own
-    // report, refusals (numbers that overflow, a method that did not finish) and warnings.
-    const scene::World world = scene::parse_world(text, source);
-    const scene::Result result = scene::resolve(world);
-    const scene::SolveOutput output = scene::solve_output(result, source, scene::Format::json);
-    if (!output.unfinished.empty()) {
-      throw impulse::InvalidInput(output.unfinished);  // the command line's exit 1
+    // `impulselab solve --format json`'s path: the world read and checked, resolved once, and the
+    // library's own report, refusals and warnings.
+    const scene::JsonRun solved = scene::solve_to_json(text, source);
+    if (!solved.run.unfinished.empty()) {
+      throw impulse::InvalidInput(solved.run.unfinished);  // the command line's exit 1
     }
-    for (const std::string& line : output.warnings) {
+    for (const std::string& line : solved.run.warnings) {
       warnings.push_back(without_source(line));
     }
-    result_text = output.report;
-    details_text = details_json(result).dump();
+    result_text = solved.report;
+    details_text = details_json(solved.run.results.front()).dump();
   } catch (const impulse::InvalidInput& e) {
     error = without_source(e.what());
   } catch (const std::exception& e) {

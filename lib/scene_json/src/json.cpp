@@ -3,13 +3,9 @@
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <memory>
 #include <optional>
 #include <set>
 #include <type_traits>
@@ -670,50 +666,6 @@ Scene parse_scene(std::string_view text, std::string_view source, const ReadLimi
   return parse_world(text, source, limits).scene();
 }
 
-std::string read_file(const std::string& path, std::size_t max_bytes) {
-  const auto cannot_read = [&](const std::string& why) {
-    std::string message(path);
-    message.append(": cannot read: ").append(why);
-    return InvalidInput(message);
-  };
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    throw cannot_read("it is a directory");
-  }
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                             &std::fclose);
-  if (!file) {
-    throw cannot_read(std::strerror(errno));
-  }
-  // At most one byte more than the limit is read (a pipe or a device has no size to ask first).
-  std::string text;
-  std::array<char, 65536> buffer{};
-  std::size_t count = 0;
-  const auto room = [&] {  // up to one byte past the limit (no overflow at its largest value)
-    const std::size_t left = max_bytes - text.size();
-    return left < buffer.size() ? left + 1 : buffer.size();
-  };
-  while (text.size() <= max_bytes &&
-         (count = std::fread(buffer.data(), 1, room(), file.get())) > 0) {
-    text.append(buffer.data(), count);
-  }
-  if (std::ferror(file.get()) != 0) {
-    throw cannot_read(std::strerror(errno));
-  }
-  if (text.size() > max_bytes) {
-    throw InvalidInput(too_large_message(path, max_bytes));
-  }
-  return text;
-}
-
-Scene load_scene(const std::string& path, const ReadLimits& limits) {
-  return parse_scene(read_file(path, limits.max_bytes), path, limits);
-}
-
-World load_world(const std::string& path, const ReadLimits& limits) {
-  return parse_world(read_file(path, limits.max_bytes), path, limits);
-}
-
 namespace {
 nlohmann::ordered_json value_json(const methods::Value& value) {
   return std::visit(
@@ -834,183 +786,41 @@ nlohmann::ordered_json to_json(const Result& result) {
   return out;
 }
 
-nlohmann::ordered_json comparison_json(std::span<const Result> results, std::string_view source) {
-  nlohmann::ordered_json out = nlohmann::ordered_json::object();
-  for (const Result& r : results) {
-    const std::string name(name_of(r.method));
-    if (r.outcome.finished) {
-      nlohmann::ordered_json result = to_json(r);
-      if (!result.contains("method")) {
-        result["method"] = name;  // the paper's report names no method; here every one does
-      }
-      out[name] = std::move(result);
-    } else {
-      out[name] = {{"method", name}, {"error", unfinished_message(r, source)}};
-    }
-  }
-  return out;
-}
-
 std::string report_json(const Result& result) {
   return to_json(result).dump(2) + "\n";
 }
 
-namespace {
-// resolve(), with a refusal of the scene (a method that cannot take its friction) naming it.
-template <typename Method>
-auto resolved(const World& world, std::string_view source, const Method& method) {
-  try {
-    return resolve(world, method);
-  } catch (const InvalidInput& e) {
-    std::string message(source);
-    message.append(": ").append(e.what());
-    throw InvalidInput(message);
+std::string report_json(const Run& run, std::string_view source) {
+  const Result& first = run.results.front();
+  if (run.request.compare == Request::Compare::nothing) {
+    return first.outcome.finished ? report_json(first) : "";
   }
-}
-}  // namespace
-
-SolveOutput solve_output(const World& world, std::string_view source,
-                         std::optional<methods::Method> method, Format format, bool colour) {
-  return solve_output(resolved(world, source, method.value_or(world.scene().method)), source,
-                      format, colour);
-}
-
-SolveOutput solve_output(const Result& result, std::string_view source, Format format,
-                         bool colour) {
-  if (result.status != SolveStatus::success) {
-    // Every number of the scene is a valid double, but their products or sums are not: the
-    // input is beyond what double precision can solve, so it is refused like other bad input.
-    throw InvalidInput(overflow_message(result, source, false));
+  // A comparison: one member per method (or law), each naming it, even the paper's method,
+  // whose own report names none.
+  const bool laws = run.request.compare == Request::Compare::laws;
+  const std::string key = laws ? "restitution" : "method";
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (std::size_t k = 0; k < run.results.size(); ++k) {
+    const Result& r = run.results[k];
+    const std::string name(laws ? EnumNames<friction::RestitutionLaw>::table[k].name
+                                : name_of(r.method));
+    if (!r.outcome.finished) {
+      out[name] = {{key, name}, {"error", unfinished_message(r, source)}};
+      continue;
+    }
+    out[name] = to_json(r);
+    if (!out[name].contains(key)) {
+      out[name][key] = name;
+    }
   }
-  SolveOutput output;
-  output.unfinished = unfinished_message(result, source);
-  if (!output.unfinished.empty()) {
-    return output;
-  }
-  output.report =
-      format == Format::json ? report_json(result) : text_report(result, source, colour);
-  output.warnings = impulse_warnings(result);
-  for (std::string& warning : system_warnings(result, source)) {
-    output.warnings.push_back(std::move(warning));
-  }
-  return output;
+  return out.dump(2) + "\n";
 }
 
-SolveOutput compare_output(const World& world, std::string_view source, Format format,
-                           bool colour) {
-  // The methods that can resolve the scene (with friction at several contacts, the paper's
-  // simultaneous method cannot): the others are left out, and the warnings say why. If none can
-  // be compared, resolved() refuses the scene with the first method's reason.
-  std::vector<methods::Method> compared;
-  std::vector<std::string> left_out;
-  const methods::Options options = world.options();
-  for (const methods::Method method : methods::all_methods) {
-    const std::string why = methods::unsupported(method, world.configuration(), options);
-    if (why.empty()) {
-      compared.push_back(method);
-    } else {
-      left_out.push_back(std::string(name_of(method)) + ": not compared: " + why);
-    }
-  }
-  if (compared.size() < 2) {
-    compared.assign(methods::all_methods.begin(), methods::all_methods.end());
-    left_out.clear();
-  }
-  const std::vector<Result> results =
-      resolved(world, source, std::span<const methods::Method>(compared));
-  for (const Result& r : results) {
-    if (r.status != SolveStatus::success) {
-      throw InvalidInput(overflow_message(r, source, true));
-    }
-  }
-  SolveOutput output;
-  output.report = format == Format::json ? comparison_json(results, source).dump(2) + "\n"
-                                         : comparison_text(results, source, colour);
-  // The system A·Fdt = B is the same for every method: one warning about its conditioning.
-  for (const Result& r : results) {
-    if (r.outcome.finished) {
-      output.warnings = system_warnings(r, source);
-      break;
-    }
-  }
-  for (std::string& why : left_out) {
-    output.warnings.push_back(std::move(why));
-  }
-  for (const Result& r : results) {
-    if (r.outcome.finished) {
-      for (std::string& warning : impulse_warnings(r, std::string(name_of(r.method)) + ": ")) {
-        output.warnings.push_back(std::move(warning));
-      }
-    } else {
-      output.unfinished.append(output.unfinished.empty() ? "" : "\n");
-      output.unfinished.append(unfinished_message(r, source));
-    }
-  }
-  return output;
-}
-
-SolveOutput compare_laws_output(const World& world, std::string_view source, Format format,
-                                bool colour) {
-  std::vector<friction::RestitutionLaw> laws;
-  for (const auto& row : EnumNames<friction::RestitutionLaw>::table) {
-    laws.push_back(row.value);
-  }
-  std::vector<Result> results;
-  for (const friction::RestitutionLaw law : laws) {
-    Scene scene = world.scene();
-    scene.restitution = law;
-    try {
-      results.push_back(resolve(World(std::move(scene))));
-    } catch (const InvalidInput& e) {
-      std::string message(source);
-      message.append(": ").append(e.what()).append(" (--compare restitution, the law \"");
-      message.append(name_of(law)).append("\")");
-      throw InvalidInput(message);
-    }
-    if (results.back().status != SolveStatus::success) {
-      throw InvalidInput(overflow_message(results.back(), source, false));
-    }
-  }
-  SolveOutput output;
-  if (format == Format::json) {
-    nlohmann::ordered_json out = nlohmann::ordered_json::object();
-    for (std::size_t k = 0; k < laws.size(); ++k) {
-      const std::string name(name_of(laws[k]));
-      if (results[k].outcome.finished) {
-        nlohmann::ordered_json result = to_json(results[k]);
-        result["restitution"] = name;
-        out[name] = std::move(result);
-      } else {
-        out[name] = {{"restitution", name}, {"error", unfinished_message(results[k], source)}};
-      }
-    }
-    output.report = out.dump(2) + "\n";
-  } else {
-    output.report = laws_comparison_text(results, laws, source, colour);
-  }
-  for (const Result& r : results) {
-    if (r.outcome.finished) {
-      output.warnings = system_warnings(r, source);
-      break;
-    }
-  }
-  for (std::size_t k = 0; k < laws.size(); ++k) {
-    const Result& r = results[k];
-    if (r.outcome.finished) {
-      for (std::string& warning : impulse_warnings(r, std::string(name_of(laws[k])) + ": ")) {
-        output.warnings.push_back(std::move(warning));
-      }
-    } else {
-      output.unfinished.append(output.unfinished.empty() ? "" : "\n");
-      output.unfinished.append(unfinished_message(r, source));
-    }
-  }
-  return output;
-}
-
-SolveOutput solve_to_json(std::string_view text, std::string_view source,
-                          std::optional<methods::Method> method, const ReadLimits& limits) {
-  return solve_output(parse_world(text, source, limits), source, method, Format::json);
+JsonRun solve_to_json(std::string_view text, std::string_view source, const Request& request,
+                      const ReadLimits& limits) {
+  JsonRun out{run(parse_world(text, source, limits), source, request), {}};
+  out.report = report_json(out.run, source);
+  return out;
 }
 
 }  // namespace impulse::scene

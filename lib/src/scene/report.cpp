@@ -85,7 +85,7 @@ std::string text_report(const Result& r, std::string_view source, bool colour) {
   std::string out = scene_line(r, source, colour);
   out.append("\n");
   out.append("Method: ").append(name_of(r.method)).append(" (");
-  out.append(methods::text_of(r.method).description).append(")\n");
+  out.append(row_of(r.method).description).append(")\n");
   for (const std::string& line : o.details) {
     out.append("  ").append(line).append("\n");
   }
@@ -400,25 +400,27 @@ std::string compared_text(std::span<const Result> results, std::string_view sour
 
 }  // namespace
 
-std::string comparison_text(std::span<const Result> results, std::string_view source, bool colour) {
+std::string text(const Run& run, std::string_view source, bool colour) {
+  const std::span<const Result> results = run.results;
   Compared compared{"methods", {}, {}};
-  for (const Result& r : results) {
-    compared.names.emplace_back(name_of(r.method));
-    compared.legend.push_back(methods::text_of(r.method).brief);
+  switch (run.request.compare) {
+    case Request::Compare::nothing:
+      return results.front().outcome.finished ? text_report(results.front(), source, colour) : "";
+    case Request::Compare::methods:
+      for (const Result& r : results) {
+        compared.names.emplace_back(name_of(r.method));
+        compared.legend.push_back(row_of(r.method).brief);
+      }
+      break;
+    case Request::Compare::laws:
+      compared = {"restitution laws", {}, {}, "How each law got there"};
+      for (const auto& law : EnumNames<friction::RestitutionLaw>::table) {
+        compared.names.emplace_back(law.name);
+        compared.legend.push_back(law.definition);
+      }
+      break;
   }
   return compared_text(results, source, colour, compared);
-}
-
-std::string laws_comparison_text(std::span<const Result> results,
-                                 std::span<const friction::RestitutionLaw> laws,
-                                 std::string_view source, bool colour) {
-  Compared compared{"restitution laws", {}, {}, "How each law got there"};
-  for (const friction::RestitutionLaw law : laws) {
-    compared.names.emplace_back(name_of(law));
-    compared.legend.push_back(row_of(law).definition);
-  }
-  std::string out = compared_text(results, source, colour, compared);
-  return out;
 }
 
 std::vector<std::string> impulse_warnings(const Result& result, std::string_view prefix) {
@@ -487,17 +489,6 @@ std::string unfinished_message(const Result& result, std::string_view source) {
     return "";
   }
   return std::string(source).append(": ").append(result.outcome.unfinished);
-}
-
-std::string overflow_message(const Result& result, std::string_view source, bool name_method) {
-  std::string message(source);
-  message.append(": the numbers overflow");
-  if (name_method) {
-    message.append(" (method ").append(name_of(result.method)).append(")");
-  }
-  return message.append(
-      ": A·Fdt = B or the state after the collision is not finite (masses, inertias, velocities "
-      "or elasticities too extreme for double precision)");
 }
 
 }  // namespace impulse::scene

@@ -246,6 +246,24 @@ void validate_contact_law(const Scene& scene, std::size_t v) {
   }
 }
 
+// Coulomb's coefficient at each contact: its own `friction`, else the scene's, else 0.
+std::vector<double> frictions(const Scene& scene) {
+  std::vector<double> mu;
+  for (const Contact& c : scene.contacts) {
+    mu.push_back(c.friction.value_or(scene.friction.value_or(0.0)));
+  }
+  return mu;
+}
+
+// With a contact law beyond the paper's, each contact's elasticity as the exact rule takes it.
+void validate_contact_laws(const Scene& scene) {
+  if (methods::has_contact_law(frictions(scene), scene.restitution)) {
+    for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
+      validate_contact_law(scene, v);
+    }
+  }
+}
+
 // Every rule of the scene format, each with its place.
 void validate_scene(const Scene& scene) {
   if (scene.dimension != 1 && scene.dimension != 2) {
@@ -278,11 +296,7 @@ void validate_scene(const Scene& scene) {
   for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
     validate_contact(scene, v);
   }
-  if (has_contact_law(scene)) {
-    for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
-      validate_contact_law(scene, v);
-    }
-  }
+  validate_contact_laws(scene);
   try {
     require_dense_fits(static_cast<Eigen::Index>(scene.contacts.size()), scene.solver);
   } catch (const InvalidInput& e) {
@@ -503,10 +517,9 @@ methods::Options World::options() const {
   options.complementarity = scene_.complementarity;
   options.serial = scene_.serial;
   options.contact_name = [this](Eigen::Index v) { return contact_name(v); };
-  if (has_contact_law(scene_)) {  // else the paper's frictionless contacts, as always
-    for (std::size_t v = 0; v < scene_.contacts.size(); ++v) {
-      options.friction.push_back(friction_at(scene_, v));
-    }
+  std::vector<double> mu = frictions(scene_);
+  if (methods::has_contact_law(mu, scene_.restitution)) {  // else the paper's contacts
+    options.friction = std::move(mu);
     options.restitution = scene_.restitution;
   }
   return options;
@@ -515,36 +528,12 @@ methods::Options World::options() const {
 World World::with_elasticity(double value) const {
   require_elasticity("elasticity", value);
   Scene scene = scene::with_elasticity(scene_, value);
-  if (has_contact_law(scene)) {
-    for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
-      validate_contact_law(scene, v);
-    }
-  }
+  validate_contact_laws(scene);
   multipoint::Configuration configuration(
       multipoint::Configuration::Trusted{},
       {configuration_.bodies().begin(), configuration_.bodies().end()}, elasticities_of(scene),
       {configuration_.contacts().begin(), configuration_.contacts().end()});
   return {std::move(scene), notes_, std::move(configuration)};
-}
-
-void validate(const Scene& scene) {
-  validate_scene(scene);
-}
-
-double friction_at(const Scene& scene, std::size_t v) {
-  return scene.contacts[v].friction.value_or(scene.friction.value_or(0.0));
-}
-
-bool has_contact_law(const Scene& scene) {
-  if (scene.restitution != friction::RestitutionLaw::newton) {
-    return true;
-  }
-  for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
-    if (friction_at(scene, v) > 0.0) {
-      return true;
-    }
-  }
-  return false;
 }
 
 Scene with_elasticity(Scene scene, double value) {
@@ -558,14 +547,13 @@ Scene with_elasticity(Scene scene, double value) {
 std::vector<Result> resolve(const World& world, std::span<const methods::Method> methods) {
   // The paper's system, assembled and solved once for every method.
   const methods::Paper paper = methods::paper(world.configuration(), world.scene().solver);
-  const methods::Options options = world.options();
   for (const methods::Method method : methods) {
     // Refused before any method runs (friction with several contacts, say).
-    if (const std::string why = methods::unsupported(method, world.configuration(), options);
-        !why.empty()) {
+    if (const std::string why = unsupported(world, method); !why.empty()) {
       refuse("contacts", why);
     }
   }
+  const methods::Options options = world.options();
   std::vector<Result> results;
   for (const methods::Method method : methods) {
     methods::Outcome outcome;
@@ -592,8 +580,8 @@ Result solve(const Scene& scene) {
   return resolve(World(scene));
 }
 
-bool finished(const Result& result) {
-  return result.outcome.finished;
+std::string unsupported(const World& world, methods::Method method) {
+  return row_of(method).unsupported(world.configuration(), world.options());
 }
 
 }  // namespace impulse::scene
