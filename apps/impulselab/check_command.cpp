@@ -53,7 +53,7 @@ void check_file(const CheckOptions& options) {
                       std::to_string(check::max_derivation_bytes >> 20) + " MiB, this one holds " +
                       std::to_string(std::filesystem::file_size(path, error)) + " bytes");
   }
-  std::string text = read_file(path, check::max_derivation_bytes + 1);
+  std::string text = read_file(path, check::max_derivation_bytes);
   check::DerivationOptions settings;
   settings.seed = options.seed;
   if (options.samples_given) {

@@ -79,21 +79,15 @@ std::string read_file(const std::string& path, std::size_t max_bytes) {
   if (!file) {
     throw impulse::InvalidInput(path + ": cannot read: " + std::strerror(errno));
   }
-  std::string text = read_all(file.get(), max_bytes, path + ": cannot read:");
-  if (text.size() > max_bytes) {
-    throw impulse::InvalidInput(impulse::scene::too_large_message(path, max_bytes));
-  }
-  return text;
+  return read_all(file.get(), max_bytes, path + ": cannot read:");
 }
 
 impulse::scene::World read_world(const std::string& path) {
   constexpr std::size_t max_bytes = impulse::scene::ReadLimits{}.max_bytes;
-  const std::string source = scene_name(path);
-  // Standard input is read up to one byte past the limit: the reader then refuses it as too
-  // large.
+  // Read up to one byte past the limit: the reader then refuses the scene as too large.
   return impulse::scene::parse_world(
       path == "-" ? read_all(stdin, max_bytes, "cannot read <stdin>:") : read_file(path, max_bytes),
-      source);
+      scene_name(path));
 }
 
 void print_warnings(const std::vector<std::string>& warnings) {
