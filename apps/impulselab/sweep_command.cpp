@@ -58,9 +58,7 @@ std::string csv_number(double value) {
 // collisions within their bound.
 impulse::scene::Run run_at(const impulse::scene::World& world, double e,
                            const std::string& source) {
-  impulse::scene::Request request;
-  request.elasticity = e;
-  impulse::scene::Run run = impulse::scene::run(world, source, request);
+  impulse::scene::Run run = impulse::scene::run(world, source, {.elasticity = e});
   if (!run.unfinished.empty()) {
     throw WorkFailed(run.unfinished);
   }

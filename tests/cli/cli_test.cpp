@@ -19,13 +19,6 @@ using nlohmann::json;
 
 namespace {
 
-// What `solve --method NAME` asks of the library.
-impulse::scene::Request by(impulse::methods::Method method) {
-  impulse::scene::Request request;
-  request.method = method;
-  return request;
-}
-
 // The scene format's "Result" for its worked example, as the specification prints it.
 const char* const specified_result = R"({
   "impulses": [{"contact": 0, "bumper": "a", "wedge": "b", "magnitude": 1.5,
@@ -165,7 +158,7 @@ TEST_CASE("The library's entry point prints what solve --format json prints, and
     for (const auto method : impulse::methods::all_methods) {
       const std::string name(impulse::name_of(method));
       CAPTURE(scene, name);
-      const sc::JsonRun library = sc::solve_to_json(t::read_text(scene), scene, by(method));
+      const sc::JsonRun library = sc::solve_to_json(t::read_text(scene), scene, {.method = method});
       const auto program = t::run("solve " + t::quote(scene) + " --format json --method " + name);
       std::string warnings;
       for (const std::string& line : library.run.warnings) {

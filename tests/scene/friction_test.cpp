@@ -22,19 +22,6 @@ namespace sc = impulse::scene;
 
 namespace {
 
-// What `solve --method NAME` asks, and what `solve --compare` asks.
-sc::Request by(impulse::methods::Method method) {
-  sc::Request request;
-  request.method = method;
-  return request;
-}
-
-sc::Request compared_methods() {
-  sc::Request request;
-  request.compare = sc::Request::Compare::methods;
-  return request;
-}
-
 // A point mass (mass 1) dropping onto a static floor; the ball is the bumper and its outward
 // normal points down, n = (0, -1), so the tangent is t = [-n_y, n_x] = (1, 0) and the impulse on
 // the ball is -n P_n + t P_t = (P_t, P_n).
@@ -218,8 +205,8 @@ TEST_CASE("Friction: without the keys, or with friction 0 and Newton's law, noth
   const std::string with_keys = R"({"friction": 0, "solver": {"restitution": "newton"},)" +
                                 plain.substr(1) + R"(], "friction": 0}]})";
   for (const auto method : impulse::methods::all_methods) {
-    CHECK(sc::solve_to_json(with_keys, "s.json", by(method)).report ==
-          sc::solve_to_json(without, "s.json", by(method)).report);
+    CHECK(sc::solve_to_json(with_keys, "s.json", {.method = method}).report ==
+          sc::solve_to_json(without, "s.json", {.method = method}).report);
   }
   // And the paper's frictionless impulse 1.9/2.5 = 0.76 is what all three laws give at μ = 0.
   for (const std::string law : {"newton", "poisson", "energetic"}) {
@@ -286,7 +273,7 @@ TEST_CASE("Friction: several contacts: serial collisions, the other methods refu
   // contacts at once: contact 1 separates (the other ball leaves at 5), so the answer is contact
   // 0's alone, as above.
   CHECK_THROWS_MATCHES(
-      sc::run(world, "s.json", by(impulse::methods::Method::simultaneous)), InvalidInput,
+      sc::run(world, "s.json", {.method = impulse::methods::Method::simultaneous}), InvalidInput,
       Message("s.json: contacts: the method \"simultaneous\" cannot resolve 2 contacts with "
               "friction (contacts[0] has 0.2): the paper's simultaneous system has no friction "
               "and only Newton's law; the serial method (solver.method \"serial\", or --method "
@@ -312,7 +299,7 @@ TEST_CASE("Friction: several contacts: serial collisions, the other methods refu
               "exact single-contact rule"));
   // --compare compares the methods that can: serial and complementarity, and says why not the
   // paper's.
-  const sc::Run compared = sc::run(world, "s.json", compared_methods());
+  const sc::Run compared = sc::run(world, "s.json", {.compare = sc::Request::Compare::methods});
   const json j = json::parse(sc::report_json(compared, "s.json"));
   CHECK(!j.contains("simultaneous"));
   CHECK(j.contains("complementarity"));
@@ -384,8 +371,8 @@ TEST_CASE("Friction: several contacts with friction 0 give today's results, byte
   scene["solver"] = {{"restitution", "newton"}};
   const std::string with_keys = scene.dump();
   for (const auto method : impulse::methods::all_methods) {
-    CHECK(sc::solve_to_json(with_keys, "s.json", by(method)).report ==
-          sc::solve_to_json(without, "s.json", by(method)).report);
+    CHECK(sc::solve_to_json(with_keys, "s.json", {.method = method}).report ==
+          sc::solve_to_json(without, "s.json", {.method = method}).report);
   }
 }
 

@@ -27,10 +27,10 @@ struct Request {
   };
   Compare compare = Compare::nothing;
   /// The method instead of the scene's `solver.method` (not with a comparison).
-  std::optional<methods::Method> method;
+  std::optional<methods::Method> method = std::nullopt;
   /// A row of `sweep`: every body at this elasticity (World::with_elasticity). Its warnings
   /// are the system's alone (the same at every elasticity); its messages name the elasticity.
-  std::optional<double> elasticity;
+  std::optional<double> elasticity = std::nullopt;
 };
 
 /// @brief A scene resolved as asked, and what to tell the user about it.
