@@ -471,4 +471,161 @@ std::vector<Point> point_mass_against_three_walls(Probe&, const Settings& settin
   return points;
 }
 
+namespace {
+
+// What the scene models are and the values they give.
+constexpr std::string_view two_bodies_law =
+    "Two point masses (masses 1e-3 to 1e3, any momenta) touching at one to three points, the "
+    "normals of the pair at least 6 degrees apart; their impulses by the law of restitution (the "
+    "contact Jacobian J, A = J M^-1 "
+    "J^T, B = J (e v), the minimum-norm solution), elasticity 2 or 1 as named. A point per contact "
+    "v, seen from the first body: its impulses F_k (mean forces over dt; a slot without a contact "
+    "has none) and outward normals n_k, the impulse it receives at v, the velocities before and "
+    "after, the work of the pair's impulses at v on either body (forces constant over the "
+    "contact), the kinetic energy before and after; and every body's block a_{Bqs}, b_{Bq} (B its "
+    "number) of the coefficients the file defines (its (4.5) or (4.8)), with the impulses G_q "
+    "dt of their sum solved, and the law's momenta after, p' and p_o'. A scene whose system is "
+    "ill-conditioned (impulses 1e4 times what the speeds call for) is left out.";
+constexpr std::string_view scenes_law =
+    "Four point masses (the fourth static one time in four): the first touches the second at one "
+    "to three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
+    "5), the second the third at one (6); impulses and points as for two point masses.";
+constexpr std::string_view scenes_summed =
+    "The scenes of four point masses, their impulses from the file's own coefficients: each "
+    "body's block of its a_{vi(elastic)} and b_{v(elastic)} (or inelastic, as named) at its own "
+    "contacts and normals, the blocks added, the system solved (minimum-norm). A point per "
+    "contact of the scene, seen from its first body: the velocities after, the kinetic energy of "
+    "the scene before and after.";
+constexpr std::string_view two_rigid_law =
+    "Two rigid bodies (radii of gyration fitted to their arms) touching at one to three points, as "
+    "the two point masses are, with their arms r_k and r_v, the turning part of a point's "
+    "velocity v_vr and the work on the turning Delta E_vr.";
+constexpr std::string_view rigid_scenes_summed =
+    "Four rigid bodies (the fourth static one time in four) touching as the point masses do, their "
+    "impulses from the file's a_{vk(elastic)} and b_{v(elastic)} (or inelastic, as named), summed "
+    "and solved; a point per contact of the scene, seen from its first body.";
+constexpr std::string_view rigid_scenes_elasticity =
+    "As the rigid bodies with the inelastic coefficients summed, b_{v(inelastic)} times an "
+    "elasticity: 1, 2 or between, drawn in turn.";
+const std::vector<std::string_view> by_the_law{"m",
+                                               "\\vec{p}",
+                                               "m_o",
+                                               "\\vec{p_o}",
+                                               "dt",
+                                               "F_k",
+                                               "\\vec{n_k}",
+                                               "\\vec{F_k}",
+                                               "\\vec{n_v}",
+                                               "F_v",
+                                               "\\vec{F_v}",
+                                               "\\vec{v_{vt}}",
+                                               "\\vec{v_{vt}'}",
+                                               "\\vec{v_{vo}}",
+                                               "\\vec{v_{vo}'}",
+                                               "\\Delta E_{vt}",
+                                               "\\Delta E_{vo}",
+                                               "E",
+                                               "E'",
+                                               "a_{Bqs}",
+                                               "b_{Bq}"};
+const std::vector<std::string_view> rigid_by_the_law{"m",
+                                                     "I",
+                                                     "\\vec{p}",
+                                                     "L",
+                                                     "m_o",
+                                                     "I_o",
+                                                     "\\vec{p_o}",
+                                                     "L_o",
+                                                     "dt",
+                                                     "F_k",
+                                                     "\\vec{n_k}",
+                                                     "\\vec{r_k}",
+                                                     "\\vec{F_k}",
+                                                     "\\vec{n_v}",
+                                                     "\\vec{r_v}",
+                                                     "F_v",
+                                                     "\\vec{F_v}",
+                                                     "\\vec{v_{vt}}",
+                                                     "\\vec{v_{vr}}",
+                                                     "\\vec{v_{vt}'}",
+                                                     "\\vec{v_{vr}'}",
+                                                     "\\vec{v_{vo}}",
+                                                     "\\vec{v_{vo}'}",
+                                                     "\\Delta E_{vt}",
+                                                     "\\Delta E_{vr}",
+                                                     "\\Delta E_{vo}",
+                                                     "E",
+                                                     "E'"};
+const std::vector<std::string_view> summed{
+    "m", "\\vec{p}", "\\vec{n_v}", "\\vec{v_{vt}'}", "\\vec{v_{vo}'}", "E", "E'"};
+const std::vector<std::string_view> rigid_summed{"m",
+                                                 "I",
+                                                 "\\vec{p}",
+                                                 "L",
+                                                 "\\vec{n_v}",
+                                                 "\\vec{r_v}",
+                                                 "\\vec{v_{vt}'}",
+                                                 "\\vec{v_{vr}'}",
+                                                 "\\vec{v_{vo}'}",
+                                                 "E",
+                                                 "E'"};
+const std::vector<std::string_view> rigid_summed_elasticity{"m",
+                                                            "I",
+                                                            "\\vec{p}",
+                                                            "L",
+                                                            "\\vec{n_v}",
+                                                            "\\vec{r_v}",
+                                                            "\\vec{v_{vt}'}",
+                                                            "\\vec{v_{vr}'}",
+                                                            "\\vec{v_{vo}'}",
+                                                            "E",
+                                                            "E'",
+                                                            "\\mathit{elasticity}"};
+
+}  // namespace
+
+std::vector<Model> scenes_models() {
+  return {
+      {Method::numeric, "two point masses at one to three contacts, elastic", two_bodies_law,
+       by_the_law, two_point_masses_elastic, 1e-8},
+      {Method::numeric, "two point masses at one to three contacts, inelastic", two_bodies_law,
+       by_the_law, two_point_masses_inelastic, 1e-8},
+      {Method::numeric, "point masses in scenes, elastic", scenes_law, by_the_law,
+       point_masses_in_scenes_elastic, 1e-8},
+      {Method::numeric, "point masses in scenes, inelastic", scenes_law, by_the_law,
+       point_masses_in_scenes_inelastic, 1e-8},
+      {Method::numeric, "point masses in scenes, the elastic coefficients summed", scenes_summed,
+       summed, point_masses_summed_elastic, 1e-8},
+      {Method::numeric, "point masses in scenes, the inelastic coefficients summed", scenes_summed,
+       summed, point_masses_summed_inelastic, 1e-8},
+      {Method::numeric, "two rigid bodies at one to three contacts, elastic", two_rigid_law,
+       rigid_by_the_law, two_rigid_bodies_at_three_contacts_elastic, 1e-8},
+      {Method::numeric, "two rigid bodies at one to three contacts, inelastic", two_rigid_law,
+       rigid_by_the_law, two_rigid_bodies_at_three_contacts_inelastic, 1e-8},
+      {Method::numeric, "rigid bodies in scenes, the elastic coefficients summed",
+       rigid_scenes_summed, rigid_summed, rigid_bodies_summed_elastic, 1e-8},
+      {Method::numeric, "rigid bodies in scenes, the inelastic coefficients summed",
+       rigid_scenes_summed, rigid_summed, rigid_bodies_summed_inelastic, 1e-8},
+      {Method::numeric, "rigid bodies in scenes, elasticity times the inelastic coefficients",
+       rigid_scenes_elasticity, rigid_summed_elasticity, rigid_bodies_summed_any_elasticity, 1e-8},
+      {Method::search,
+       "point masses in scenes, an elasticity each",
+       "The scenes of four point masses, each body's block of the file's a_{vi(inelastic)} and "
+       "b_{v(inelastic)} with its b times an elasticity of its own from 0 to 3, summed; rho "
+       "the least-squares residual of the system relative to its terms (scene.hpp's "
+       "inconsistency).",
+       {"\\rho", "\\mathit{elasticity}_1", "\\mathit{elasticity}_2", "\\mathit{elasticity}_3",
+        "\\mathit{elasticity}_4"},
+       point_masses_an_elasticity_each},
+      {Method::search,
+       "a point mass against three walls, the nearest equal impulses",
+       "A point mass against three static walls (first mass 1 at (2, 1) into the corner of "
+       "walls with outward normals (1, 0), (0, 1) and the diagonal, then random ones); f the "
+       "equal impulse over dt = 1 nearest (least squares) to solving the system of the law of "
+       "restitution with elasticity 2 (the contact Jacobian). A point per wall v.",
+       {"m", "\\vec{p}", "\\vec{n_k}", "\\vec{n_v}", "f", "dt"},
+       point_mass_against_three_walls},
+  };
+}
+
 }  // namespace impulse::derivations::models
