@@ -76,10 +76,9 @@ struct Settings {
 
 /// A named model.
 struct Model {
-  Method method = Method::numeric;     ///< ode, quadrature, numeric (`model:`) or search
-  std::string_view name;               ///< what a file writes after the method
-  std::string_view summary;            ///< one sentence: the physics, for the docs and the report
-  std::vector<std::string_view> sets;  ///< the symbols its points give values (for the docs)
+  Method method = Method::numeric;  ///< ode, quadrature, numeric (`model:`) or search
+  std::string_view name;            ///< what a file writes after the method
+  std::string_view summary;         ///< the physics, and the symbols its points give values
   std::vector<Point> (*points)(Probe& probe, const Settings& settings) = nullptr;
   double holds_below = 1e-9;  ///< worst relative residual of a statement that holds on it
   double fails_above = 1e-6;  ///< smallest worst residual of one that does not

@@ -150,8 +150,7 @@ std::vector<Point> pulses_on_a_turning_body(Probe&, const Settings& s) {
 
 std::vector<Model> pulses_models() {
   return {
-      {Method::quadrature,
-       "pulses of force on a body",
+      {Method::quadrature, "pulses of force on a body",
        "A point mass m of momentum p receiving three mean forces F_1, F_2, F_3 over a contact "
        "of duration dt, all shaped by one pulse (constant, half-sine, triangular, or peaking "
        "early, in turn); its motion along the normal n_v integrated in time (GSL rk8pd). At an "
@@ -159,14 +158,8 @@ std::vector<Model> pulses_models() {
        "the momentum and of the velocity along n_v (d S_v, d p_v, d v_v per dt); over the "
        "whole contact, Delta E_vt the change of the kinetic energy of the motion along n_v; "
        "v_v the velocity along n_v before.",
-       {"m", "\\vec{p}", "dt", "\\vec{F_1}", "\\vec{F_2}", "\\vec{F_3}", "\\vec{n_v}", "t", "S_v",
-        "\\mathrm{d}S_v", "\\mathrm{d}p_v", "\\mathrm{d}v_v", "\\Delta E_{vt}", "v_v"},
-       pulses_on_a_body,
-       1e-9,
-       1e-6,
-       true},
-      {Method::quadrature,
-       "pulses of force on a turning body",
+       pulses_on_a_body, 1e-9, 1e-6, true},
+      {Method::quadrature, "pulses of force on a turning body",
        "Three mean forces F_1, F_2, F_3 at arms r_1, r_2, r_3 of a body of inertia I and "
        "angular momentum L, over a contact of duration dt, all shaped by one pulse (constant, "
        "half-sine, triangular, or peaking early, in turn); the body's turning integrated in "
@@ -175,13 +168,7 @@ std::vector<Model> pulses_models() {
        "of the contact, the angle alpha turned so far and the rates of the angle, of the rate "
        "of turning and of the angular momentum (d alpha, d omega, d L per dt); omega the rate "
        "of turning before.",
-       {"I", "L", "dt", "\\vec{r_1}", "\\vec{r_2}", "\\vec{r_3}", "\\vec{F_1}", "\\vec{F_2}",
-        "\\vec{F_3}", "\\vec{r_v}", "\\vec{n_v}", "\\Delta E_{vr}", "t", "\\alpha", "\\omega",
-        "\\mathrm{d}\\alpha", "\\mathrm{d}\\omega", "\\mathrm{d}L"},
-       pulses_on_a_turning_body,
-       1e-9,
-       1e-6,
-       true},
+       pulses_on_a_turning_body, 1e-9, 1e-6, true},
   };
 }
 
