@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Scenes with friction and the three restitution laws (issue 17): the keys `friction` and
+// Scenes with friction and the three restitution laws: the keys `friction` and
 // `solver.restitution` read, checked with their place, and resolved through the pipeline by the
 // exact single-contact rule (impulse::friction::collide). Every expected value is worked by hand
 // in the comment above it.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Scenes and the other methods (issue 9): solver.method and solver.max_collisions read and
+// Scenes and the other methods: solver.method and solver.max_collisions read and
 // refused like the other keys, the result of each method, and its JSON report.
 #include <catch2/catch.hpp>
 #include <string>

@@ -769,8 +769,8 @@ nlohmann::ordered_json to_json(const Result& result) {
   system["condition_estimate"] = s.condition_estimate;
   out["system"] = std::move(system);
 
-  // The method's own diagnostics, after the keys above so that their order stays; the paper's
-  // method has none, so that its report is the one the scene format specifies.
+  // The method's own diagnostics, after the keys the scene format specifies; the paper's method
+  // has none, so that its report is exactly the specified one.
   if (!o.diagnostics.empty()) {
     const std::string name(name_of(result.method));
     out["method"] = name;

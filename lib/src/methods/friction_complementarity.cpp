@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Beyond the paper (issue 17): Coulomb friction at many contacts as one complementarity problem.
+// Beyond the paper: Coulomb friction at many contacts as one complementarity problem.
 #include "impulse/methods/friction_complementarity.hpp"
 
 #include <algorithm>
