@@ -310,6 +310,24 @@ double Compiled::operator()(std::span<const double> arguments) const {
           case Function::abs:
             stack[top - 1] = std::abs(x);
             break;
+          case Function::asin:
+            stack[top - 1] = std::asin(x);
+            break;
+          case Function::acos:
+            stack[top - 1] = std::acos(x);
+            break;
+          case Function::atan:
+            stack[top - 1] = std::atan(x);
+            break;
+          case Function::sinh:
+            stack[top - 1] = std::sinh(x);
+            break;
+          case Function::cosh:
+            stack[top - 1] = std::cosh(x);
+            break;
+          case Function::tanh:
+            stack[top - 1] = std::tanh(x);
+            break;
         }
         break;
       }
@@ -376,8 +394,10 @@ void emit(const ex& e, const std::vector<ex>& symbols,
   if (is_a<GiNaC::function>(e) && e.nops() == 1) {
     using F = Compiled::Function;
     const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
-    const std::pair<const char*, F> known[] = {{"sin", F::sin}, {"cos", F::cos}, {"tan", F::tan},
-                                               {"exp", F::exp}, {"log", F::log}, {"abs", F::abs}};
+    const std::pair<const char*, F> known[] = {
+        {"sin", F::sin},   {"cos", F::cos},   {"tan", F::tan},   {"exp", F::exp},
+        {"log", F::log},   {"abs", F::abs},   {"asin", F::asin}, {"acos", F::acos},
+        {"atan", F::atan}, {"sinh", F::sinh}, {"cosh", F::cosh}, {"tanh", F::tanh}};
     for (const auto& [n, f] : known) {
       if (name == n) {
         emit(e.op(0), symbols, program);

@@ -37,7 +37,7 @@ class Compiled {
   /// A stack machine: operands are pushed, operations pop theirs and push the result.
   enum class Op { constant, variable, add, mul, power, raise, function };
   /// The functions a compiled expression may call.
-  enum class Function { sin, cos, tan, exp, log, abs };
+  enum class Function { sin, cos, tan, exp, log, abs, asin, acos, atan, sinh, cosh, tanh };
   struct Instruction {
     Op op;
     double value;       // constant, or the exponent of power
@@ -56,7 +56,8 @@ class Compiled {
 [[nodiscard]] std::string canonical(const ex& e);
 
 /// Compiles @p e; throws std::invalid_argument on anything but numbers, π, the given symbols,
-/// sums, products, powers and the functions sin, cos, tan, exp, log and abs.
+/// sums, products, powers and the functions sin, cos, tan, exp, log, abs, their inverses and
+/// the hyperbolic sin, cos and tan.
 [[nodiscard]] Compiled compile(const ex& e, const std::vector<ex>& symbols);
 
 }  // namespace impulse::derivations::sym

@@ -104,13 +104,16 @@ struct EquationResult {
   std::string residual_text;           ///< the same in plain text
   std::vector<CounterexampleValue> counterexample;  ///< does-not-follow: values that break it
   bool counterexample_exact = false;  ///< the values are exact (checked with exact arithmetic)
-  std::optional<bool> converse;       ///< follows: whether the step before follows from it
-  std::string dimension_first;        ///< dimensions: the one dimension ("M L T^-1")
-  std::string dimension_second;       ///< dimensions: the other one
-  std::string dimension_what;         ///< dimensions: which terms disagree
-  std::size_t numeric_points = 0;     ///< points of the numeric method
-  double numeric_worst = 0.0;         ///< the worst relative residual it saw
-  double seconds = 0.0;               ///< wall time of its check
+  /// does-not-follow with functions or sums: the formulas or counts the counterexample takes
+  /// ("F(u) = u^2, N = 2")
+  std::string counterexample_functions;
+  std::optional<bool> converse;    ///< follows: whether the step before follows from it
+  std::string dimension_first;     ///< dimensions: the one dimension ("M L T^-1")
+  std::string dimension_second;    ///< dimensions: the other one
+  std::string dimension_what;      ///< dimensions: which terms disagree
+  std::size_t numeric_points = 0;  ///< points of the numeric method
+  double numeric_worst = 0.0;      ///< the worst relative residual it saw
+  double seconds = 0.0;            ///< wall time of its check
 };
 
 /// @brief A checked derivation file.
@@ -129,8 +132,9 @@ struct DerivationReport {
 
 /// @brief Settings of a check.
 struct DerivationOptions {
-  std::uint64_t seed = 1;    ///< the numeric method's random points
-  std::size_t samples = 24;  ///< points per step for the numeric method
+  std::uint64_t seed = 1;     ///< the numeric method's random points
+  std::size_t samples = 24;   ///< points per step for the numeric method
+  double step_seconds = 2.0;  ///< each step's time budget: past it, the step is undecided
 };
 
 /// @brief The largest derivation file read (4 MiB): a longer one is refused with its place.

@@ -140,6 +140,191 @@ std::vector<ex> doubtful_factors(const ex& e, const Facts& facts) {
 
 namespace {
 
+// Whether e holds what the facts may simplify: a power with an exponent that is not a whole
+// number (a root, b^n), or a logarithm.
+bool needs_facts(const ex& e) {
+  for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+    if (is_a<GiNaC::power>(*i) && !i->op(1).info(GiNaC::info_flags::integer)) {
+      return true;
+    }
+    if (is_a<GiNaC::function>(*i) && (GiNaC::ex_to<GiNaC::function>(*i).get_name() == "log" ||
+                                      GiNaC::ex_to<GiNaC::function>(*i).get_name() == "exp" ||
+                                      GiNaC::ex_to<GiNaC::function>(*i).get_name() == "abs")) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool positive(const ex& e, const Facts& facts) {
+  return facts.sign(e) == Sign::positive;
+}
+
+// ln a, with the logarithm of a product of positive factors written as a sum, of a positive
+// base's power as the power times its logarithm, and of an exponential as its argument.
+ex logarithm(const ex& a, const Facts& facts) {
+  if (is_a<GiNaC::mul>(a)) {
+    bool all = true;
+    for (std::size_t i = 0; i < a.nops() && all; ++i) {
+      all = positive(a.op(i), facts);
+    }
+    if (all) {
+      ex sum = 0;
+      for (std::size_t i = 0; i < a.nops(); ++i) {
+        sum += logarithm(a.op(i), facts);
+      }
+      return sum;
+    }
+  }
+  if (is_a<GiNaC::power>(a) && positive(a.op(0), facts)) {
+    return a.op(1) * logarithm(a.op(0), facts);
+  }
+  if (is_a<GiNaC::function>(a) && GiNaC::ex_to<GiNaC::function>(a).get_name() == "exp") {
+    return a.op(0);
+  }
+  return GiNaC::log(a);
+}
+
+// |a|: a or -a where the facts give a's sign, a product's as the product of its factors', an
+// even power's as the power.
+ex magnitude(const ex& a, const Facts& facts) {
+  const Sign s = facts.sign(a);
+  if (s == Sign::positive || s == Sign::nonnegative || s == Sign::zero) {
+    return a;
+  }
+  if (s == Sign::negative || s == Sign::nonpositive) {
+    return -a;
+  }
+  if (is_a<GiNaC::mul>(a)) {
+    ex product = 1;
+    for (std::size_t i = 0; i < a.nops(); ++i) {
+      product *= magnitude(a.op(i), facts);
+    }
+    return product;
+  }
+  if (is_a<GiNaC::power>(a) && a.op(1).info(GiNaC::info_flags::even)) {
+    return a;
+  }
+  return GiNaC::abs(a);
+}
+
+// e^y, with a sum in y as a product of exponentials and e^{k \ln x} as x^k (x > 0).
+ex exponential(const ex& y, const Facts& facts) {
+  const ex expanded = GiNaC::expand(y);
+  const auto one = [&](const ex& term) -> ex {
+    // k ln x: x^k
+    ex k = 1;
+    std::optional<ex> argument;
+    const auto factor = [&](const ex& f) {
+      if (is_a<GiNaC::function>(f) && GiNaC::ex_to<GiNaC::function>(f).get_name() == "log" &&
+          !argument && positive(f.op(0), facts)) {
+        argument = f.op(0);
+      } else {
+        k *= f;
+      }
+    };
+    if (is_a<GiNaC::mul>(term)) {
+      for (std::size_t i = 0; i < term.nops(); ++i) {
+        factor(term.op(i));
+      }
+    } else {
+      factor(term);
+    }
+    return argument ? GiNaC::pow(*argument, k) : GiNaC::exp(term);
+  };
+  if (is_a<GiNaC::add>(expanded)) {
+    ex product = 1;
+    for (std::size_t i = 0; i < expanded.nops(); ++i) {
+      product *= one(expanded.op(i));
+    }
+    return product;
+  }
+  return one(expanded);
+}
+
+// (Π f^k)^(p/q): each factor whose power k is a multiple of q comes out as |f|^(k p/q), the
+// absolute value dropped where the facts give f's sign.
+ex root_taken(const ex& base, const numeric& exponent, const Facts& facts) {
+  const numeric q = exponent.denom();
+  ex outside = 1;
+  ex inside = 1;
+  const auto one = [&](const ex& factor) {
+    if (is_a<GiNaC::power>(factor) && is_a<numeric>(factor.op(1)) &&
+        GiNaC::ex_to<numeric>(factor.op(1)).is_integer() &&
+        GiNaC::mod(GiNaC::ex_to<numeric>(factor.op(1)), q).is_zero()) {
+      const ex f = factor.op(0);
+      const Sign s = facts.sign(f);
+      const ex magnitude = (s == Sign::positive || s == Sign::nonnegative)   ? f
+                           : (s == Sign::negative || s == Sign::nonpositive) ? ex(-f)
+                                                                             : GiNaC::abs(f);
+      outside *= GiNaC::pow(magnitude, factor.op(1) * exponent);
+    } else {
+      inside *= factor;
+    }
+  };
+  if (is_a<GiNaC::mul>(base)) {
+    for (std::size_t i = 0; i < base.nops(); ++i) {
+      one(base.op(i));
+    }
+  } else {
+    one(base);
+  }
+  if (outside.is_equal(1)) {
+    return GiNaC::pow(base, exponent);
+  }
+  return outside * GiNaC::pow(inside, exponent);
+}
+
+}  // namespace
+
+ex by_facts(const ex& e, const Facts& facts) {
+  if (e.nops() == 0 || !needs_facts(e)) {
+    return e;
+  }
+  struct Each : GiNaC::map_function {
+    const Facts& facts;
+    explicit Each(const Facts& f) : facts(f) {}
+    ex operator()(const ex& part) override { return by_facts(part, facts); }
+  } each(facts);
+  const ex x = e.map(each);
+  if (is_a<GiNaC::power>(x)) {
+    const ex base = x.op(0);
+    const ex exponent = x.op(1);
+    // (b^k)^n = b^(k n) for b > 0.
+    if (is_a<GiNaC::power>(base) && positive(base.op(0), facts)) {
+      return by_facts(GiNaC::pow(base.op(0), base.op(1) * exponent), facts);
+    }
+    // b^y with y no number, b > 0: e^{y \ln b}, so that logarithms and exponentials meet.
+    if (!is_a<numeric>(exponent) && positive(base, facts)) {
+      return exponential(exponent * logarithm(base, facts), facts);
+    }
+    if (is_a<numeric>(exponent) && !GiNaC::ex_to<numeric>(exponent).is_integer() &&
+        GiNaC::ex_to<numeric>(exponent).is_rational()) {
+      return root_taken(base, GiNaC::ex_to<numeric>(exponent), facts);
+    }
+    return x;
+  }
+  if (is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "log") {
+    return logarithm(x.op(0), facts);
+  }
+  if (is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "exp") {
+    return exponential(x.op(0), facts);
+  }
+  if (is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "abs") {
+    return magnitude(x.op(0), facts);
+  }
+  return x;
+}
+
+ex safe_numerator(const ex& e, double terms) {
+  if (expanded_terms(e) > terms) {
+    return e;
+  }
+  return GiNaC::normal(e).numer();
+}
+
+namespace {
+
 struct Solved {
   ex symbol;
   ex value;
@@ -166,7 +351,7 @@ struct Found {
 };
 
 ex numerator(const ex& e) {
-  return GiNaC::normal(e).numer();
+  return safe_numerator(e);
 }
 
 bool same_up_to_constant(const ex& a, const ex& b) {
@@ -198,6 +383,10 @@ class Decider {
     if (++frames_ > budget_.frames) {
       return unknown(frame, "the exact search reached its limit of cases");
     }
+    if (past(budget_.deadline)) {
+      return unknown(frame, "the step's time ran out");
+    }
+    frame.target = by_facts(frame.target, facts_);
     if (expanded_terms(frame.target) > budget_.terms) {
       return unknown(frame, "the step is too large to expand exactly");
     }
@@ -331,7 +520,14 @@ class Decider {
                             " the equations are not defined");
       return outside;
     }
+    // What the facts say of the symbol they say of its value now (u > 0 with u = \omega L / 2:
+    // \omega L / 2 > 0, and with L > 0, \omega > 0).
+    const Facts outer = facts_;
+    if (const Sign sign = facts_.of_symbol(choice.symbol); sign != Sign::unknown) {
+      facts_.add_relation(value, sign);
+    }
     Found found = run(child);
+    facts_ = outer;
     const std::string solved_for = "solved for " + text(choice.symbol);
     found.how.insert(found.how.begin(), solved_for);
     if (found.outcome != Implied::holds && found.outcome != Implied::holds_if) {
@@ -395,7 +591,24 @@ class Decider {
       combined.how.push_back(cases_text + ": the step holds in each case");
       return combined;
     }
-    if (first_failure && !any_unknown && failing.size() < factors.size()) {
+    // Where the step fails on some of the cases and holds on the others, it follows only if it
+    // is the equation before divided by the failing factors (the condition is that division's):
+    // holding on a case the equation before allows as much as the failing one is no following.
+    const auto divided = [&] {
+      ex rest = 1;
+      for (std::size_t i = 0; i < factors.size(); ++i) {
+        if (std::none_of(failing.begin(), failing.end(),
+                         [&](const ex& f) { return f.is_equal(factors[i]); })) {
+          rest *= factors[i];
+        }
+      }
+      const ex target = numerator(frame.target);
+      if (const auto quotient = divides(GiNaC::expand(rest), target)) {
+        return is_a<numeric>(*quotient) || doubtful_factors(*quotient, facts_).empty();
+      }
+      return false;
+    };
+    if (first_failure && !any_unknown && failing.size() < factors.size() && divided()) {
       combined.outcome = Implied::holds_if;
       for (const ex& f : failing) {
         combined.conditions.push_back(f);
@@ -667,6 +880,9 @@ class Decider {
         }
       }
     }
+    if (!facts_.satisfied(point)) {
+      return false;  // a fact on an expression, or an equality (a unit vector)
+    }
     for (const ex& d : problem_.premise_denominators) {
       if (is_zero_value(d.subs(point))) {
         return false;
@@ -686,7 +902,7 @@ class Decider {
   }
 
   const Problem& problem_;
-  const Facts& facts_;
+  Facts facts_;  // the facts, and what they say of the symbols solved for in the current case
   const Budget& budget_;
   std::vector<ex> symbols_;
   std::size_t frames_ = 0;
@@ -826,8 +1042,17 @@ class Trig {
 
 }  // namespace
 
-Implication implies(const Problem& original, const Facts& facts, const Budget& budget) {
+Implication implies(const Problem& given, const Facts& facts, const Budget& budget) {
   Implication result;
+  // Roots, powers and logarithms simplified where the facts allow it.
+  Problem original = given;
+  for (std::vector<ex>* list :
+       {&original.premises, &original.premise_denominators, &original.target_denominators}) {
+    for (ex& e : *list) {
+      e = by_facts(e, facts);
+    }
+  }
+  original.target = by_facts(original.target, facts);
   // Sines and cosines become rational functions of tangents of half angles.
   std::vector<ex> all{original.target};
   all.insert(all.end(), original.premises.begin(), original.premises.end());

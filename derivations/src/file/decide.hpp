@@ -9,6 +9,7 @@
 
 #include <ginac/ginac.h>
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,7 +48,22 @@ struct Budget {
   double terms = 4000;         ///< terms of an expanded polynomial
   std::size_t attempts = 160;  ///< candidate points for a counterexample
   std::size_t candidates = 6;  ///< counterexamples found before the simplest is chosen
+  /// When the step's time runs out: past it, the search answers "unknown".
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
+
+/// Whether @p deadline has passed.
+[[nodiscard]] inline bool past(std::chrono::steady_clock::time_point deadline) {
+  return std::chrono::steady_clock::now() > deadline;
+}
+
+/// @p e simplified where the facts allow it: \sqrt{V^2} is V when V > 0 (-V when V < 0, |V|
+/// otherwise), (b^k)^n is b^{k n} and \ln(a b^k) is \ln a + k \ln b for positive a and b.
+[[nodiscard]] GiNaC::ex by_facts(const GiNaC::ex& e, const Facts& facts);
+
+/// The numerator of @p e over one denominator, or @p e itself when bringing it over one
+/// denominator would expand more than @p terms terms (then @p e is taken as it stands).
+[[nodiscard]] GiNaC::ex safe_numerator(const GiNaC::ex& e, double terms = 4000);
 
 /// Decides whether @p problem's target follows from its premises under @p facts.
 [[nodiscard]] Implication implies(const Problem& problem, const Facts& facts,

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "file/facts.hpp"
 
+#include <cmath>
+#include <functional>
+#include <limits>
+
 namespace impulse::derivations::file {
 
 using GiNaC::ex;
@@ -36,6 +40,20 @@ bool at_least_zero(Sign s) {
 }
 bool at_most_zero(Sign s) {
   return s == Sign::negative || s == Sign::nonpositive || s == Sign::zero;
+}
+Sign flipped(Sign s) {
+  switch (s) {
+    case Sign::positive:
+      return Sign::negative;
+    case Sign::negative:
+      return Sign::positive;
+    case Sign::nonnegative:
+      return Sign::nonpositive;
+    case Sign::nonpositive:
+      return Sign::nonnegative;
+    default:
+      return s;
+  }
 }
 // The sign of a product of two quantities of known signs.
 Sign times(Sign a, Sign b) {
@@ -74,7 +92,113 @@ Sign plus(Sign a, Sign b) {
   return Sign::unknown;
 }
 
+// ---- ranges ------------------------------------------------------------------------------------
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+// [low, high], each end open or closed; rounding is kept outward by a relative 1e-12.
+struct Range {
+  double low = -infinity;
+  double high = infinity;
+  bool low_open = true;
+  bool high_open = true;
+};
+
+double down(double x) {
+  return std::isfinite(x) ? x - 1e-12 * (1 + std::abs(x)) : x;
+}
+double up(double x) {
+  return std::isfinite(x) ? x + 1e-12 * (1 + std::abs(x)) : x;
+}
+
+Range point(double x) {
+  return {x, x, false, false};
+}
+
+Range range_sum(const Range& a, const Range& b) {
+  return {down(a.low + b.low), up(a.high + b.high), a.low_open || b.low_open,
+          a.high_open || b.high_open};
+}
+
+Range multiply(const Range& a, const Range& b) {
+  // The four products of the ends, with 0 · ∞ as 0; the ends are closed (a safe widening).
+  const auto product = [](double x, double y) { return (x == 0 || y == 0) ? 0.0 : x * y; };
+  const double c[4] = {product(a.low, b.low), product(a.low, b.high), product(a.high, b.low),
+                       product(a.high, b.high)};
+  Range r{c[0], c[0], false, false};
+  for (const double v : c) {
+    r.low = std::min(r.low, v);
+    r.high = std::max(r.high, v);
+  }
+  // Strictly positive times strictly positive stays away from 0.
+  const bool a_positive = a.low > 0 || (a.low == 0 && a.low_open);
+  const bool b_positive = b.low > 0 || (b.low == 0 && b.low_open);
+  if (a_positive && b_positive && r.low == 0) {
+    r.low_open = true;
+  }
+  return {down(r.low), up(r.high), r.low_open, false};
+}
+
+Range power(const Range& a, long k) {
+  if (k == 0) {
+    return point(1);
+  }
+  Range r = point(1);
+  for (long i = 0; i < k; ++i) {
+    r = multiply(r, a);
+  }
+  if (k % 2 == 0) {
+    // An even power is at least 0; of a range that holds 0, from 0.
+    const bool holds_zero = a.low < 0 && a.high > 0;
+    const bool touches_zero = (a.low == 0 && !a.low_open) || (a.high == 0 && !a.high_open);
+    if (holds_zero || touches_zero) {
+      r.low = 0;
+      r.low_open = false;
+    } else if (r.low <= 0) {
+      r.low = 0;
+      r.low_open = true;
+    }
+  }
+  return r;
+}
+
+Range inverse(const Range& a) {
+  const bool positive = a.low > 0 || (a.low == 0 && a.low_open);
+  const bool negative = a.high < 0 || (a.high == 0 && a.high_open);
+  if (positive) {
+    return {a.high == infinity ? 0 : down(1 / a.high), a.low == 0 ? infinity : up(1 / a.low),
+            a.high == infinity ? true : a.high_open, true};
+  }
+  if (negative) {
+    return {a.high == 0 ? -infinity : down(1 / a.high), a.low == -infinity ? 0 : up(1 / a.low),
+            true, a.low == -infinity ? true : a.low_open};
+  }
+  return {};
+}
+
+Sign sign_of(const Range& r) {
+  if (r.low > 0 || (r.low == 0 && r.low_open)) {
+    return Sign::positive;
+  }
+  if (r.high < 0 || (r.high == 0 && r.high_open)) {
+    return Sign::negative;
+  }
+  if (r.low == 0) {
+    return Sign::nonnegative;
+  }
+  if (r.high == 0) {
+    return Sign::nonpositive;
+  }
+  return Sign::unknown;
+}
+
+bool function_named(const ex& e, const char* name) {
+  return is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == name;
+}
+
 }  // namespace
+
+// ---- adding facts ------------------------------------------------------------------------------
 
 bool Facts::add(const ex& symbol, Sign sign) {
   const Sign old = of_symbol(symbol);
@@ -97,12 +221,151 @@ bool Facts::add(const ex& symbol, Sign sign) {
   return true;
 }
 
-Sign Facts::of_symbol(const ex& symbol) const {
-  const auto found = signs_.find(symbol);
-  return found == signs_.end() ? Sign::unknown : found->second;
+void Facts::add_relation(const ex& e, Sign sign) {
+  const ex expanded = GiNaC::expand(e);
+  if (is_a<GiNaC::symbol>(expanded)) {
+    add(expanded, sign);
+    return;
+  }
+  // c x with c a number: a fact on x (0 \le e is -e \le 0, that is e \geq 0).
+  if (is_a<GiNaC::mul>(expanded) && expanded.nops() == 2 && is_a<GiNaC::symbol>(expanded.op(0)) &&
+      is_a<GiNaC::numeric>(expanded.op(1)) && !expanded.op(1).is_zero()) {
+    add(expanded.op(0),
+        GiNaC::ex_to<GiNaC::numeric>(expanded.op(1)).is_positive() ? sign : flipped(sign));
+    return;
+  }
+  // A product with one factor of unknown sign, a symbol, the others of strict signs: a fact on
+  // that symbol (\omega L / 2 > 0 with L > 0: \omega > 0).
+  const ex product = is_a<GiNaC::mul>(e) ? e : expanded;
+  if (is_a<GiNaC::mul>(product) && (sign == Sign::positive || sign == Sign::negative)) {
+    std::optional<ex> unknown;
+    bool negative = sign == Sign::negative;
+    bool usable = true;
+    for (std::size_t i = 0; i < product.nops() && usable; ++i) {
+      const ex f = product.op(i);
+      const Sign s = this->sign(f);
+      if (s == Sign::positive) {
+        continue;
+      }
+      if (s == Sign::negative) {
+        negative = !negative;
+        continue;
+      }
+      if (is_a<GiNaC::symbol>(f) && !unknown) {
+        unknown = f;
+        continue;
+      }
+      usable = false;
+    }
+    if (usable && unknown) {
+      add(*unknown, negative ? Sign::negative : Sign::positive);
+    }
+  }
+  if (is_a<GiNaC::numeric>(expanded)) {
+    return;  // a number: its sign is what it is
+  }
+  relations_.emplace_back(expanded, sign);
+  // x - c (or c - x) with c a number bounds x.
+  if (is_a<GiNaC::add>(expanded) && expanded.nops() == 2) {
+    for (std::size_t k = 0; k < 2; ++k) {
+      const ex variable_part = expanded.op(k);
+      const ex number = expanded.op(1 - k);
+      if (!is_a<GiNaC::numeric>(number)) {
+        continue;
+      }
+      const double c = -GiNaC::ex_to<GiNaC::numeric>(number).to_double();
+      ex symbol = variable_part;
+      Sign s = sign;
+      if (is_a<GiNaC::mul>(variable_part) && variable_part.nops() == 2 &&
+          is_a<GiNaC::numeric>(variable_part.op(1)) && variable_part.op(1).is_equal(-1)) {
+        symbol = variable_part.op(0);
+        s = flipped(sign);
+      }
+      if (!is_a<GiNaC::symbol>(symbol)) {
+        continue;
+      }
+      const double bound = s == sign ? c : -c;
+      const bool sharp = s == Sign::positive || s == Sign::negative;
+      auto& [low, high] = bounds_[symbol];
+      auto& [low_strict, high_strict] = strict_[symbol];
+      if (s == Sign::positive || s == Sign::nonnegative) {
+        if (!low || bound > *low || (bound == *low && sharp)) {
+          low = bound;
+          low_strict = sharp;
+        }
+      } else if (s == Sign::negative || s == Sign::nonpositive) {
+        if (!high || bound < *high || (bound == *high && sharp)) {
+          high = bound;
+          high_strict = sharp;
+        }
+      }
+    }
+  }
 }
 
-Sign Facts::sign(const ex& e) const {
+void Facts::add_equality(const ex& e) {
+  equalities_.push_back(GiNaC::expand(e));
+}
+
+Facts Facts::carried(const std::vector<std::pair<ex, ex>>& renamed) const {
+  Facts copy = *this;
+  for (const auto& [from, to] : renamed) {
+    if (const auto found = signs_.find(from); found != signs_.end()) {
+      copy.add(to, found->second);
+    }
+    if (const auto found = bounds_.find(from); found != bounds_.end()) {
+      copy.bounds_[to] = found->second;
+      copy.strict_[to] = strict_.at(from);
+    }
+  }
+  return copy;
+}
+
+// ---- what the facts prove ----------------------------------------------------------------------
+
+Sign Facts::of_symbol(const ex& symbol) const {
+  const auto found = signs_.find(symbol);
+  if (found != signs_.end()) {
+    return found->second;
+  }
+  const auto bound = bounds_.find(symbol);
+  if (bound != bounds_.end()) {
+    const auto& [low, high] = bound->second;
+    if (low && *low > 0) {
+      return Sign::positive;
+    }
+    if (high && *high < 0) {
+      return Sign::negative;
+    }
+    if (low && *low == 0) {
+      return Sign::nonnegative;
+    }
+    if (high && *high == 0) {
+      return Sign::nonpositive;
+    }
+  }
+  return Sign::unknown;
+}
+
+Sign Facts::of_relation(const ex& e) const {
+  for (const auto& [r, sign] : relations_) {
+    if (r.is_zero() || e.is_zero()) {
+      continue;
+    }
+    ex ratio;
+    try {
+      ratio = GiNaC::normal(e / r);
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (is_a<GiNaC::numeric>(ratio) && !ratio.is_zero()) {
+      return GiNaC::ex_to<GiNaC::numeric>(ratio).is_positive() ? sign : flipped(sign);
+    }
+  }
+  return Sign::unknown;
+}
+
+Sign Facts::structural(const ex& e) const {
   if (is_a<GiNaC::numeric>(e)) {
     const auto& n = GiNaC::ex_to<GiNaC::numeric>(e);
     if (!n.is_real()) {
@@ -115,6 +378,11 @@ Sign Facts::sign(const ex& e) const {
   }
   if (is_a<GiNaC::symbol>(e)) {
     return of_symbol(e);
+  }
+  if (!relations_.empty() && !is_a<GiNaC::function>(e) && e.nops() <= 16) {
+    if (const Sign s = of_relation(e); s != Sign::unknown) {
+      return s;
+    }
   }
   if (is_a<GiNaC::mul>(e)) {
     Sign s = Sign::positive;
@@ -155,20 +423,131 @@ Sign Facts::sign(const ex& e) const {
     }
     return base == Sign::positive ? Sign::positive : Sign::unknown;
   }
-  if (is_a<GiNaC::function>(e)) {
-    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
-    if (name == "exp") {
-      return Sign::positive;
-    }
-    if (name == "abs") {
-      const Sign inner = sign(e.op(0));
-      return inner == Sign::unknown                      ? Sign::nonnegative
-             : inner == Sign::zero                       ? Sign::zero
-             : (strict(inner) || inner == Sign::nonzero) ? Sign::positive
-                                                         : Sign::nonnegative;
-    }
+  if (function_named(e, "exp")) {
+    return Sign::positive;
+  }
+  if (function_named(e, "abs")) {
+    const Sign inner = sign(e.op(0));
+    return inner == Sign::unknown                      ? Sign::nonnegative
+           : inner == Sign::zero                       ? Sign::zero
+           : (strict(inner) || inner == Sign::nonzero) ? Sign::positive
+                                                       : Sign::nonnegative;
+  }
+  if (function_named(e, "indexed_sum")) {
+    // A sum of at least one term (its upper limit is at least its lower): as its terms.
+    const Sign body = sign(e.op(0));
+    return body == Sign::positive || body == Sign::negative || at_least_zero(body) ||
+                   at_most_zero(body)
+               ? body
+               : Sign::unknown;
+  }
+  if (function_named(e, "indexed_product")) {
+    const Sign body = sign(e.op(0));
+    return body == Sign::positive ? Sign::positive : Sign::unknown;
   }
   return Sign::unknown;
+}
+
+Sign Facts::sign(const ex& e) const {
+  const Sign s = structural(e);
+  if (s != Sign::unknown && s != Sign::nonnegative && s != Sign::nonpositive) {
+    return s;
+  }
+  const Sign r = of_range(e);
+  if (r == Sign::positive || r == Sign::negative) {
+    return r;
+  }
+  return s != Sign::unknown ? s : r;
+}
+
+Sign Facts::of_range(const ex& e) const {
+  const std::function<Range(const ex&)> range = [&](const ex& x) -> Range {
+    if (is_a<GiNaC::numeric>(x)) {
+      const auto& n = GiNaC::ex_to<GiNaC::numeric>(x);
+      if (!n.is_real()) {
+        return {};
+      }
+      const double v = n.to_double();
+      return {down(v), up(v), false, false};
+    }
+    if (is_a<GiNaC::constant>(x)) {
+      return {3.14159265358979, 3.14159265358980, false, false};
+    }
+    if (is_a<GiNaC::symbol>(x)) {
+      Range r;
+      switch (of_symbol(x)) {
+        case Sign::positive:
+          r.low = 0;
+          break;
+        case Sign::nonnegative:
+          r.low = 0;
+          r.low_open = false;
+          break;
+        case Sign::negative:
+          r.high = 0;
+          break;
+        case Sign::nonpositive:
+          r.high = 0;
+          r.high_open = false;
+          break;
+        default:
+          break;
+      }
+      if (const auto found = bounds_.find(x); found != bounds_.end()) {
+        const auto [low_strict, high_strict] = strict_.at(x);
+        if (found->second.first && *found->second.first >= r.low) {
+          r.low_open = *found->second.first == r.low ? (r.low_open || low_strict) : low_strict;
+          r.low = *found->second.first;
+        }
+        if (found->second.second && *found->second.second <= r.high) {
+          r.high_open =
+              *found->second.second == r.high ? (r.high_open || high_strict) : high_strict;
+          r.high = *found->second.second;
+        }
+      }
+      return r;
+    }
+    if (is_a<GiNaC::add>(x)) {
+      Range r = point(0);
+      for (std::size_t i = 0; i < x.nops(); ++i) {
+        r = range_sum(r, range(x.op(i)));
+      }
+      return r;
+    }
+    if (is_a<GiNaC::mul>(x)) {
+      Range r = point(1);
+      for (std::size_t i = 0; i < x.nops(); ++i) {
+        r = multiply(r, range(x.op(i)));
+      }
+      return r;
+    }
+    if (is_a<GiNaC::power>(x) && x.op(1).info(GiNaC::info_flags::integer)) {
+      const long k = GiNaC::ex_to<GiNaC::numeric>(x.op(1)).to_long();
+      if (k > 12 || k < -12) {
+        return {};
+      }
+      const Range base = range(x.op(0));
+      return k >= 0 ? power(base, k) : inverse(power(base, -k));
+    }
+    if (function_named(x, "sin") || function_named(x, "cos")) {
+      return {-1, 1, false, false};
+    }
+    if (function_named(x, "log")) {
+      const Range a = range(x.op(0));
+      if (a.low < 0 || (a.low == 0 && !a.low_open)) {
+        return {};
+      }
+      const auto log_down = [](double v) { return v == 1 ? 0.0 : down(std::log(v)); };
+      const auto log_up = [](double v) { return v == 1 ? 0.0 : up(std::log(v)); };
+      return {a.low == 0 ? -infinity : log_down(a.low),
+              a.high == infinity ? infinity : log_up(a.high), a.low_open, a.high_open};
+    }
+    if (function_named(x, "exp")) {
+      return {0, infinity, true, true};
+    }
+    return {};
+  };
+  return sign_of(range(e));
 }
 
 bool Facts::nonzero(const ex& e) const {
@@ -176,21 +555,113 @@ bool Facts::nonzero(const ex& e) const {
   return strict(s) || s == Sign::nonzero;
 }
 
+std::pair<std::optional<double>, std::optional<double>> Facts::bounds(const ex& symbol) const {
+  const auto found = bounds_.find(symbol);
+  return found == bounds_.end() ? std::pair<std::optional<double>, std::optional<double>>{}
+                                : found->second;
+}
+
 bool Facts::satisfied(const ex& symbol, const GiNaC::numeric& value) const {
+  bool ok = true;
   switch (of_symbol(symbol)) {
     case Sign::positive:
-      return value.is_positive();
+      ok = value.is_positive();
+      break;
     case Sign::negative:
-      return value.is_negative();
+      ok = value.is_negative();
+      break;
     case Sign::nonnegative:
-      return !value.is_negative();
+      ok = !value.is_negative();
+      break;
     case Sign::nonpositive:
-      return !value.is_positive();
+      ok = !value.is_positive();
+      break;
     case Sign::nonzero:
-      return !value.is_zero();
+      ok = !value.is_zero();
+      break;
     default:
-      return true;
+      break;
   }
+  if (const auto found = bounds_.find(symbol); ok && found != bounds_.end()) {
+    const double v = value.to_double();
+    const auto [low_strict, high_strict] = strict_.at(symbol);
+    const auto& [low, high] = found->second;
+    ok = (!low || v > *low || (!low_strict && v == *low)) &&
+         (!high || v < *high || (!high_strict && v == *high));
+  }
+  return ok;
+}
+
+bool Facts::satisfied(const GiNaC::exmap& point) const {
+  const auto judged = [&](const ex& e) -> std::optional<GiNaC::numeric> {
+    const ex value = GiNaC::evalf(e.subs(point));
+    if (!is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real()) {
+      return std::nullopt;
+    }
+    return GiNaC::ex_to<GiNaC::numeric>(value);
+  };
+  for (const auto& [r, sign] : relations_) {
+    const auto v = judged(r);
+    if (!v) {
+      continue;
+    }
+    const bool ok = sign == Sign::positive      ? v->is_positive()
+                    : sign == Sign::negative    ? v->is_negative()
+                    : sign == Sign::nonnegative ? !v->is_negative()
+                    : sign == Sign::nonpositive ? !v->is_positive()
+                    : sign == Sign::nonzero     ? !v->is_zero()
+                                                : true;
+    if (!ok) {
+      return false;
+    }
+  }
+  for (const ex& q : equalities_) {
+    const ex value = GiNaC::normal(q.subs(point));
+    if (is_a<GiNaC::numeric>(value) && !value.is_zero()) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool Facts::satisfied_numerically(const std::vector<ex>& symbols,
+                                  const std::vector<double>& values) const {
+  if (relations_.empty() && equalities_.empty()) {
+    return true;
+  }
+  GiNaC::exmap point;
+  for (std::size_t i = 0; i < symbols.size(); ++i) {
+    point[symbols[i]] = values[i];
+  }
+  const auto value_of = [&](const ex& e) -> std::optional<double> {
+    const ex v = GiNaC::evalf(e.subs(point));
+    if (!is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
+      return std::nullopt;
+    }
+    return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+  };
+  for (const auto& [r, sign] : relations_) {
+    const auto v = value_of(r);
+    if (!v) {
+      continue;
+    }
+    const bool ok = sign == Sign::positive      ? *v > 0
+                    : sign == Sign::negative    ? *v < 0
+                    : sign == Sign::nonnegative ? *v >= 0
+                    : sign == Sign::nonpositive ? *v <= 0
+                    : sign == Sign::nonzero     ? *v != 0
+                                                : true;
+    if (!ok) {
+      return false;
+    }
+  }
+  for (const ex& q : equalities_) {
+    const auto v = value_of(q);
+    if (v && std::abs(*v) > 1e-9) {
+      return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace impulse::derivations::file

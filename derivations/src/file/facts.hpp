@@ -1,14 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The facts of `assume:` (signs of symbols) and what they prove about an expression's sign: a
-// product of non-zero factors is non-zero, a sum of positive terms is positive, an even power of
-// a non-zero quantity is positive. Nothing else is inferred: a fact the rules cannot show is
-// "unknown", never assumed.
+// The facts of `assume:` and what they prove about an expression's sign. A fact is the sign of
+// a symbol (m > 0), the sign of an expression (m_1 + m_2 > 0, b - a > 0 for a < b; a range
+// 0 \le e \le 1 is two of them and bounds e), or an equality (a unit vector: n_x^2 + n_y^2 = 1).
+// What they prove: a product of non-zero factors is non-zero, a sum of positive terms is
+// positive, an even power of a non-zero quantity is positive, an expression that is a fact has
+// its sign, and the range of an expression computed from the bounds of its symbols (sines and
+// cosines between -1 and 1) decides where it excludes zero. Nothing else is inferred: what the
+// rules cannot show is "unknown", never assumed.
 #pragma once
 
 #include <ginac/ginac.h>
 
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace impulse::derivations::file {
 
@@ -26,25 +33,61 @@ enum class Sign {
 /// The LaTeX relation of a sign fact about @p what ("m_1 > 0").
 [[nodiscard]] std::string relation_latex(const std::string& what, Sign sign);
 
-/// Facts on the signs of symbols.
+/// Facts on the signs of symbols and expressions, and equalities.
 class Facts {
  public:
   /// Adds a fact; facts on one symbol combine (≥ 0 and ≠ 0 give > 0). Returns false when the
   /// new fact contradicts an earlier one (x > 0 then x < 0).
   bool add(const GiNaC::ex& symbol, Sign sign);
+  /// Adds a fact on an expression (e > 0, e ≥ 0, e ≠ 0, …). A fact on a symbol plus or minus
+  /// a number also bounds the symbol (e - 1 \leq 0: e \leq 1).
+  void add_relation(const GiNaC::ex& e, Sign sign);
+  /// Adds an equality e = 0 (a unit vector's n_x^2 + n_y^2 - 1).
+  void add_equality(const GiNaC::ex& e);
+
   /// The fact on a symbol (unknown if none).
   [[nodiscard]] Sign of_symbol(const GiNaC::ex& symbol) const;
   /// What the facts prove about the sign of @p e.
   [[nodiscard]] Sign sign(const GiNaC::ex& e) const;
   /// Whether the facts prove @p e ≠ 0.
   [[nodiscard]] bool nonzero(const GiNaC::ex& e) const;
-  /// Whether a number satisfies the fact on @p symbol.
+  /// Whether a number satisfies the facts on @p symbol (its sign and its bounds).
   [[nodiscard]] bool satisfied(const GiNaC::ex& symbol, const GiNaC::numeric& value) const;
-  /// Every fact, by symbol.
+  /// Whether a point (every symbol of the facts it names) satisfies the facts on expressions
+  /// and the equalities; symbols the point does not give are not judged.
+  [[nodiscard]] bool satisfied(const GiNaC::exmap& point) const;
+  /// The same at a point of doubles (equalities within a relative 1e-9).
+  [[nodiscard]] bool satisfied_numerically(const std::vector<GiNaC::ex>& symbols,
+                                           const std::vector<double>& values) const;
+  /// The bounds of a symbol, [low, high] (either may be absent): from ranges.
+  [[nodiscard]] std::pair<std::optional<double>, std::optional<double>> bounds(
+      const GiNaC::ex& symbol) const;
+
+  /// Every fact on a symbol.
   [[nodiscard]] const std::map<GiNaC::ex, Sign, GiNaC::ex_is_less>& all() const { return signs_; }
+  /// Every fact on an expression.
+  [[nodiscard]] const std::vector<std::pair<GiNaC::ex, Sign>>& relations() const {
+    return relations_;
+  }
+  /// Every equality.
+  [[nodiscard]] const std::vector<GiNaC::ex>& equalities() const { return equalities_; }
+
+  /// A copy where the facts on symbols named in @p renamed (a symbol, the symbol it came from)
+  /// hold for the new symbols too (m_i > 0 gives m_2 > 0).
+  [[nodiscard]] Facts carried(const std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& renamed) const;
 
  private:
+  [[nodiscard]] Sign structural(const GiNaC::ex& e) const;
+  [[nodiscard]] Sign of_relation(const GiNaC::ex& e) const;
+  [[nodiscard]] Sign of_range(const GiNaC::ex& e) const;
+
   std::map<GiNaC::ex, Sign, GiNaC::ex_is_less> signs_;
+  std::vector<std::pair<GiNaC::ex, Sign>> relations_;
+  std::vector<GiNaC::ex> equalities_;
+  std::map<GiNaC::ex, std::pair<std::optional<double>, std::optional<double>>, GiNaC::ex_is_less>
+      bounds_;
+  // Whether each bound is strict (a < b), by symbol: low, high.
+  std::map<GiNaC::ex, std::pair<bool, bool>, GiNaC::ex_is_less> strict_;
 };
 
 }  // namespace impulse::derivations::file

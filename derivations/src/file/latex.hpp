@@ -45,27 +45,38 @@ struct SymbolName {
 
 /// The kinds of node of an expression tree.
 enum class NodeKind {
-  number,    ///< a decimal literal, exact: `text`
-  symbol,    ///< `symbol`
-  pi,        ///< \pi, the constant
-  sum,       ///< children with `ops` '+' or '-' (the first may be '-': unary minus)
-  product,   ///< children with `ops`: ' ' (first, or juxtaposition), '.' (\cdot), 'x' (\times),
-             ///< '*' and '/' (division by the child)
-  fraction,  ///< \frac{children[0]}{children[1]}
-  power,     ///< children[0]^children[1]
-  function,  ///< `text` ("sin", "cos", "tan", "exp", "ln") of children[0]
-  root,      ///< \sqrt{children[0]}, or the children[1]-th root when there are two
-  norm,      ///< \|children[0]\|
-  abs,       ///< |children[0]|
-  det,       ///< \det(children[0], children[1])
-  vector,    ///< [children[0], children[1]]
-  // Accepted beyond the contract (the paper's files):
-  sum_over,  ///< \sum_{text} children[0]: the index `text` runs over its declared range
-  integral,  ///< \int: children[0] the integrand (a 1-form: it holds its differential), then
-             ///< the lower and upper limits when written (`ops`: "l", "u", "lu" or "")
-  bar,       ///< children[0]\Big|_{children[1]}^{children[2]}; `text`: the variable ("t", or
-             ///< the symbol of a lower limit written x = a, whose value is then children[1])
-  dots,      ///< \cdots between the terms of a sum: the terms whose subscripts lie between
+  number,        ///< a decimal literal, exact: `text`
+  symbol,        ///< `symbol`
+  pi,            ///< \pi, the constant
+  sum,           ///< children with `ops` '+' or '-' (the first may be '-': unary minus)
+  product,       ///< children with `ops`: ' ' (first, or juxtaposition), '.' (\cdot), 'x' (\times),
+                 ///< '*' and '/' (division by the child)
+  fraction,      ///< \frac{children[0]}{children[1]}
+  power,         ///< children[0]^children[1]
+  function,      ///< `text` ("sin", "cos", "tan", "cot", "sec", "csc", "arcsin", "arccos",
+                 ///< "arctan", "exp", "ln", "log") of children[0]; log: children[1] its base
+  root,          ///< \sqrt{children[0]}, or the children[1]-th root when there are two
+  norm,          ///< \|children[0]\|
+  abs,           ///< |children[0]|
+  det,           ///< \det(children[0], children[1])
+  vector,        ///< [children[0], children[1]]
+  call,          ///< a name right before a parenthesised list, F(t) or f(a, b): children[0] the
+                 ///< name (a symbol), then one child per argument. A declared function's value,
+                 ///< or a product (m(v_1 - v_2)): the meaning layer decides, or refuses
+  derivative,    ///< \frac{d children[0]}{d x}, \frac{d}{dx}(children[0]): `symbol` the variable
+                 ///< x, `text` the order ("1", "2")
+  factorial,     ///< children[0]!
+  sum_over,      ///< \sum_{text} children[0] over the index `text`: its declared range, or the
+                 ///< limits children[1] (ops "l") and children[2] (ops "u") of \sum_{i=1}^{N}
+  product_over,  ///< \prod, as sum_over
+  integral,      ///< \int: children[0] the integrand, then the lower and upper limits when
+                 ///< written (`ops`: "l", "u"); ops "d": the differential d`symbol` was written
+                 ///< after the integrand and taken from it; without "d" the integrand is a
+                 ///< 1-form that holds dt (the paper's files)
+  bar,           ///< children[0]\Big|_{children[1]}^{children[2]}; `text`: the variable ("t",
+                 ///< or the symbol of a lower limit written x = a, whose value is then
+                 ///< children[1])
+  dots,          ///< \cdots between the terms of a sum: the terms whose subscripts lie between
 };
 
 /// A node of an expression tree, with the span of the file it was read from.
@@ -86,10 +97,18 @@ struct Side {
   std::size_t offset = 0;  ///< where it begins in the file
 };
 
+/// How a row of a display block is joined to the row before it.
+enum class Join {
+  row,          ///< `\\`, or the first row: the row is a step from the one before
+  arrow,        ///< \Rightarrow, \implies, \therefore: the same
+  equivalence,  ///< \iff, \Leftrightarrow: a step that must be an equivalence
+};
+
 /// One row of a display block (between `\\`): `a = b = c` has three sides.
 struct Row {
   std::vector<Side> sides;  ///< two or more; when `continues`, the first is the empty side
   bool continues = false;   ///< the row began with `=`: its left side is the row before's right
+  Join join = Join::row;    ///< how it follows the row before
   std::optional<std::string> tag;  ///< `\tag{k}`: "k"
   /// `\label{k}`: "k" (accepted beyond the contract: it names the row for `from:` as a tag does,
   /// without a number in print)
@@ -138,6 +157,12 @@ struct ClaimRow {
                                                      std::size_t content_offset,
                                                      std::string_view content,
                                                      const Limits& limits);
+
+/// Reads the relations of a directive's LaTeX, separated by commas (`assume:`): each chain
+/// `a \leq b \leq c` gives a relation per link. Throws ReadError with the place of what is not
+/// understood, or of a piece without a relation.
+[[nodiscard]] std::vector<Relation> read_relation_list(const Source& source, std::size_t offset,
+                                                       std::string_view text, const Limits& limits);
 
 /// Reads one expression (the LaTeX of a directive: a `let:` right side), spanning the whole
 /// of @p text.

@@ -10,13 +10,16 @@ namespace impulse::derivations::file {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, DirectiveKind>, 24> directive_words{{
+constexpr std::array<std::pair<std::string_view, DirectiveKind>, 27> directive_words{{
     {"assume", DirectiveKind::assume},
     {"let", DirectiveKind::let},
     {"given", DirectiveKind::given},
     {"from", DirectiveKind::from},
     {"vector", DirectiveKind::vector},
     {"units", DirectiveKind::units},
+    {"function", DirectiveKind::function},
+    {"unit", DirectiveKind::unit},
+    {"target", DirectiveKind::target},
     {"also", DirectiveKind::also},
     {"section", DirectiveKind::section},
     {"check", DirectiveKind::check},
@@ -60,6 +63,9 @@ class Scanner {
   std::size_t line(std::size_t start) {
     const std::size_t end = line_end(start);
     if (const auto fence = fence_at(start, end)) {
+      if (fence->math) {
+        return math_fence(start, end, *fence);
+      }
       return skip_fence(start, end, *fence);
     }
     if (directive_at(start, end)) {
@@ -77,6 +83,7 @@ class Scanner {
   struct Fence {
     char mark;
     std::size_t length;
+    bool math = false;  // ```math: a display block (GitHub's and GitLab's notation)
   };
 
   // A fenced code block opens with up to three spaces and ``` or ~~~ (three or more).
@@ -96,7 +103,109 @@ class Scanner {
     if (length < 3) {
       return std::nullopt;
     }
-    return Fence{mark, length};
+    std::size_t info = i + length;
+    while (info < end && blank(text_[info])) {
+      ++info;
+    }
+    std::size_t info_end = end;
+    while (info_end > info && blank(text_[info_end - 1])) {
+      --info_end;
+    }
+    return Fence{mark, length,
+                 text_.compare(info, info_end - info, "math") == 0 && info_end - info == 4};
+  }
+
+  // A ```math fence: its lines are one display block.
+  std::size_t math_fence(std::size_t start, std::size_t end, Fence fence) {
+    const std::size_t content = next_line(end);
+    std::size_t i = content;
+    while (i < text_.size()) {
+      const std::size_t e = line_end(i);
+      if (const auto close = fence_at(i, e);
+          close && close->mark == fence.mark && close->length >= fence.length) {
+        add_block(start, content, i);
+        return next_line(e);
+      }
+      i = next_line(e);
+    }
+    throw source_.error(start, "expected the math block opened here to be closed by " +
+                                   std::string(fence.length, fence.mark));
+  }
+
+  void add_block(std::size_t open, std::size_t content, std::size_t close) {
+    if (items_.size() >= limits_.equations) {
+      throw source_.error(open, "expected at most " + std::to_string(limits_.equations) +
+                                    " display blocks in one file (this checker's limit)");
+    }
+    if (close - content > limits_.equation_characters) {
+      throw source_.error(open, "expected a display block of at most " +
+                                    std::to_string(limits_.equation_characters) +
+                                    " characters (this checker's limit)");
+    }
+    items_.push_back(
+        Block{open, content, std::string_view(text_).substr(content, close - content)});
+  }
+
+  // \[ … \]: a display block; returns the offset of the closing \].
+  std::size_t bracket_block(std::size_t open) {
+    const std::size_t content = open + 2;
+    const std::size_t close = text_.find("\\]", content);
+    if (close == std::string::npos) {
+      throw source_.error(open, "expected the display block opened here to be closed by \\]");
+    }
+    add_block(open, content, close);
+    return close;
+  }
+
+  // The environments that are display blocks outside $$, and the math environments that are
+  // not read there (refused rather than skipped).
+  static bool display_environment(std::string_view name) {
+    for (const char* e : {"equation", "equation*", "align", "align*", "gather", "gather*",
+                          "multline", "multline*"}) {
+      if (name == e) {
+        return true;
+      }
+    }
+    return false;
+  }
+  static bool other_math_environment(std::string_view name) {
+    for (const char* e : {"eqnarray", "eqnarray*", "displaymath", "math", "flalign", "flalign*",
+                          "alignat", "alignat*", "dmath", "dmath*", "aligned", "gathered", "split",
+                          "array", "cases", "subequations"}) {
+      if (name == e) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // \begin{equation} … \end{equation} (and align, gather, multline): a display block; returns
+  // the offset after \end{…}, or nothing when the environment is not one of math.
+  std::optional<std::size_t> environment_block(std::size_t open) {
+    const std::size_t name_start = open + 7;  // after \begin{
+    const std::size_t name_end = text_.find('}', name_start);
+    if (name_end == std::string::npos) {
+      return std::nullopt;
+    }
+    const std::string_view name = std::string_view(text_).substr(name_start, name_end - name_start);
+    if (other_math_environment(name)) {
+      throw source_.error(open,
+                          "expected a display written as $$ … $$, \\[ … \\] or one of "
+                          "the environments equation, align, gather, multline (with or "
+                          "without *), found \\begin{" +
+                              std::string(name) + "}: it is not read, and would be skipped");
+    }
+    if (!display_environment(name)) {
+      return std::nullopt;
+    }
+    const std::string end_marker = "\\end{" + std::string(name) + "}";
+    const std::size_t close = text_.find(end_marker, name_end + 1);
+    if (close == std::string::npos) {
+      throw source_.error(
+          open, "expected \\end{" + std::string(name) + "} to close the display opened here");
+    }
+    add_block(open, name_end + 1, close);
+    return close + end_marker.size();
   }
 
   std::size_t skip_fence(std::size_t start, std::size_t end, Fence fence) {
@@ -156,7 +265,18 @@ class Scanner {
     std::size_t end = line_end(i);
     while (i < end) {
       const char c = text_[i];
-      if (c == '\\' && i + 1 < end) {
+      if (text_.compare(i, 2, "\\[") == 0) {
+        const std::size_t close = bracket_block(i);
+        end = std::max(end, line_end(close));
+        i = close + 2;
+      } else if (text_.compare(i, 7, "\\begin{") == 0) {
+        if (const auto after = environment_block(i)) {
+          end = std::max(end, line_end(*after - 1));
+          i = *after;
+        } else {
+          i += 7;  // an environment of prose
+        }
+      } else if (c == '\\' && i + 1 < end) {
         i += 2;
       } else if (c == '`') {
         i = skip_code_span(i, end);
@@ -213,17 +333,7 @@ class Scanner {
         k = close + 1;
         continue;
       }
-      if (items_.size() >= limits_.equations) {
-        throw source_.error(open, "expected at most " + std::to_string(limits_.equations) +
-                                      " display blocks in one file (this checker's limit)");
-      }
-      if (close - content > limits_.equation_characters) {
-        throw source_.error(open, "expected a display block of at most " +
-                                      std::to_string(limits_.equation_characters) +
-                                      " characters (this checker's limit)");
-      }
-      items_.push_back(
-          Block{open, content, std::string_view(text_).substr(content, close - content)});
+      add_block(open, content, close);
       return close;
     }
   }

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The Markdown layer of a derivation file: display blocks ($$ … $$) and directive lines, in the
-// order they stand, with their byte offsets. Prose, inline math, code and HTML comments are
-// skipped (a $$ inside a code span, a fenced code block or a comment is not a display block).
+// The Markdown layer of a derivation file: display blocks and directive lines, in the order
+// they stand, with their byte offsets. A display block is $$ … $$, \[ … \], one of the
+// environments equation, align, gather, multline (and their starred forms) outside $$, or a
+// fenced ```math block; a display written any other way (\begin{eqnarray}, …) is refused at its
+// line. Prose, inline math, code and HTML comments are skipped (a $$ inside a code span, a
+// fenced code block or a comment is not a display block).
 #pragma once
 
 #include <cstddef>
@@ -22,6 +25,10 @@ enum class DirectiveKind {
   from,
   vector,
   units,
+  // part two of the contract: what students write
+  function,
+  unit,
+  target,
   // beyond the contract
   also,
   section,
@@ -51,7 +58,8 @@ struct Directive {
   std::string_view content;        ///< the LaTeX after the colon, trimmed
 };
 
-/// A display block: the text between `$$` and `$$`.
+/// A display block: the text between `$$` and `$$` (or `\[` and `\]`, or an environment's
+/// \begin and \end).
 struct Block {
   std::size_t offset = 0;          ///< where the opening `$$` stands
   std::size_t content_offset = 0;  ///< the first byte after it

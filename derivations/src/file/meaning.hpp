@@ -41,6 +41,15 @@ struct Value {
 struct Meaning {
   Value value;
   std::vector<GiNaC::ex> denominators;
+  std::vector<std::string> written;  ///< each denominator's LaTeX as the file wrote it
+};
+
+/// A function the file declares with `function:` (accepted beyond part one of the contract):
+/// F(t) is its value at t; its derivatives and integrals are read.
+struct FunctionDeclaration {
+  SymbolName name;
+  std::vector<SymbolName> variables;  ///< t unless the file writes others: function: u(x, t)
+  unsigned serial = 0;                ///< the GiNaC function that stands for it
 };
 
 /// A dimension M^a L^b T^c with rational exponents.
@@ -75,10 +84,18 @@ struct SymbolInfo {
 /// symbols (subscripts of up to three letters and digits: a_{vi} with i = 2 is a_{v2}), except
 /// inside a sum over the same index.
 [[nodiscard]] Node with_index(const Node& node, const std::string& index, long value);
+/// The same with the index written as @p value ("N", "N-1").
+[[nodiscard]] Node with_index_text(const Node& node, const std::string& index,
+                                   const std::string& value);
 /// How much of a subscript can hold indices: all of a plain one (one to three letters and
 /// digits), or the plain part before a word in parentheses (a_{vi(elastic)}, the paper's names of
 /// its coefficients); 0 for none.
 [[nodiscard]] std::size_t index_part(const std::string& subscript);
+
+/// The factors of a product, with d and a symbol declared with `differentials:` merged into
+/// that symbol's differential (the operator before each factor: ' ', '.', 'x', '*', '/').
+[[nodiscard]] std::vector<std::pair<Node, char>> merged_factors(
+    const Node& product, const std::function<bool(const SymbolName&)>& differential);
 
 /// The symbols, vectors, definitions and units of one file, as its lines declare them.
 class Symbols {
@@ -112,6 +129,31 @@ class Symbols {
   /// The name as the file's declarations read it (an accent over an `arrow:` letter).
   [[nodiscard]] SymbolName resolve(SymbolName name) const;
 
+  /// `function: F` or `function: F(x)`: F(a) is a function's value from here on.
+  void declare_function(const SymbolName& name, std::vector<SymbolName> variables,
+                        std::size_t offset);
+  /// The function @p name is declared as, if it is one.
+  [[nodiscard]] const FunctionDeclaration* function(const SymbolName& name) const;
+  /// The symbols that stand as the upper limit of a sum over an index (whole numbers at least
+  /// the lower limit: the number of terms), with that lower limit.
+  [[nodiscard]] const std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& counts() const {
+    return counts_;
+  }
+  /// @p body (a sum's term over @p index) at a value of the index: the symbols whose subscript
+  /// holds the index letter renamed (m_i at 2 is m_2), the index itself the value. The symbols
+  /// renamed, with the symbol they came from, are added to @p renamed when given.
+  [[nodiscard]] GiNaC::ex at_index(const GiNaC::ex& body, const GiNaC::ex& index, long value,
+                                   std::vector<std::pair<GiNaC::ex, GiNaC::ex>>* renamed = nullptr);
+  /// The same at a value that is a letter (another index, N) or a letter plus a whole number
+  /// (N - 1): m_i at N - 1 is the symbol m_{N-1}.
+  [[nodiscard]] GiNaC::ex at_index(const GiNaC::ex& body, const GiNaC::ex& index,
+                                   const GiNaC::ex& value,
+                                   std::vector<std::pair<GiNaC::ex, GiNaC::ex>>* renamed = nullptr);
+  /// How a value of an index is written in a subscript ("2", "N", "N-1"), if it can be.
+  [[nodiscard]] std::optional<std::string> index_text(const GiNaC::ex& value) const;
+  /// Whether the symbol @p s is indexed by the index @p index (m_i by i).
+  [[nodiscard]] bool indexed_by(const GiNaC::ex& s, const GiNaC::ex& index) const;
+
   /// `vector: name` from here on.
   void declare_vector(const SymbolName& name);
   /// `units: name [D]`.
@@ -120,6 +162,9 @@ class Symbols {
   /// its kind (scalar, vector) contradicts a `vector:` declaration.
   void define(const SymbolName& name, const Side& definition, std::size_t offset);
 
+  /// @p node with each name before parentheses read: a declared function's value stays a call,
+  /// anything else becomes a product. Throws ReadError where the reading is ambiguous.
+  [[nodiscard]] Node resolved(const Node& node) const;
   /// The meaning of a tree under the declarations so far (definitions are not substituted:
   /// `substitutions()` does that when a step is decided).
   [[nodiscard]] Meaning meaning(const Node& node);
@@ -155,6 +200,9 @@ class Symbols {
                                  int component = 0);
 
  private:
+  friend class Evaluator;
+  friend class DimensionWalk;
+  friend class CallResolver;
   bool is_vector(const SymbolName& name) const;
   std::optional<std::pair<SymbolName, int>> component_of(const SymbolName& name) const;
   Value symbol_value(const SymbolName& name);
@@ -172,7 +220,6 @@ class Symbols {
   std::vector<std::pair<Node, char>> expanded_terms(const Node& sum);
   Value block_product(const Value& a, const Value& b, char op, std::size_t offset,
                       std::vector<GiNaC::ex>& denominators) const;
-  GiNaC::ex integral_value(const Node& n, const std::function<Value(const Node&)>& eval);
   std::vector<std::string> indices_in(const Node& node) const;
 
   const Source& source_;
@@ -188,6 +235,9 @@ class Symbols {
   std::map<std::string, Dimension> units_;  // latex key → dimension
   std::map<std::string, std::optional<Dimension>> defined_dimensions_;
   GiNaC::exmap substitutions_;
+  std::map<std::string, FunctionDeclaration> functions_;  // latex key → declaration
+  std::vector<std::pair<GiNaC::ex, GiNaC::ex>> counts_;   // a sum's upper limit, its lower
+  std::optional<SymbolName> integration_variable_;        // of the last integral read (for a bar)
 };
 
 /// Reads the dimension of `units:` ("M L T^-1", "M L^{2}", "1").

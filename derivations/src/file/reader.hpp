@@ -45,6 +45,7 @@ struct Equation {
   std::optional<DimensionIssue> dimension_issue;
   std::size_t group = static_cast<std::size_t>(-1);  ///< its check, if any
   Role role = Role::plain;
+  bool equivalence = false;  ///< written after \iff: it must be an equivalence
 };
 
 /// A model a check names: `ode: NAME`, `quadrature: NAME`, `model: NAME`, `search: NAME`.
@@ -77,13 +78,17 @@ struct Group {
   GiNaC::exmap claim_substitutions;
 };
 
-/// A file read: its equations and checks.
+/// A file read: its equations and checks, and a task's target (`target:`).
 struct ReadFile {
   std::vector<Equation> equations;
   std::vector<Group> groups;
+  std::vector<Equation> targets;  ///< the equations of the block after target: (a task file)
 };
 
-/// Reads a derivation file (throws ReadError at the first place not understood).
+/// Reads a derivation file (throws ReadError at the first place not understood). Its parts:
+/// reader.cpp (display blocks into equations), directives.cpp (the directives of a derivation:
+/// assume:, let:, vector:, function: …) and groups.cpp (the paper's checks: check:, claim:,
+/// correction: …).
 class Reader {
  public:
   Reader(const Source& source, const Limits& limits);
@@ -91,23 +96,57 @@ class Reader {
   Symbols& symbols() { return symbols_; }
 
  private:
+  // ---- directives (directives.cpp) ----
   void read_directive(const Directive& d);
-  void assume(const Directive& d);
-  void fact(std::size_t at, const SymbolName& name, Sign sign);
-  void let(const Directive& d);
-  void from(const Directive& d);
+  void on_assume(const Directive& d);
+  void on_unit(const Directive& d);
+  void on_let(const Directive& d);
+  void on_given(const Directive& d);
+  void on_target(const Directive& d);
+  void on_from(const Directive& d);
+  void on_also(const Directive& d);
+  void on_vector(const Directive& d);
+  void on_function(const Directive& d);
+  void on_units(const Directive& d);
+  void on_index(const Directive& d);
+  void on_arrow(const Directive& d);
+  void on_differentials(const Directive& d);
+  void on_forces(const Directive& d);
+  void on_block(const Directive& d);
+  void fact(std::size_t at, const Relation& relation);
+  void symbol_fact(std::size_t at, const SymbolName& name, Sign sign);
   std::vector<std::size_t> named(const Directive& d);
-  void units(const Directive& d);
-  void index(const Directive& d);
-  void block_declaration(const Directive& d, bool matrix);
-  void open_group(const Directive& d);
+
+  // ---- the paper's checks (groups.cpp) ----
+  void on_section(const Directive& d);
+  void on_check(const Directive& d);
+  void on_correction(const Directive& d);
+  void on_evidence(const Directive& d);
+  void on_test(const Directive& d);
+  void on_explanation(const Directive& d);
+  void on_model(const Directive& d);
+  void in_group(const Directive& d, const std::string& word) const;
   void close_group();
-  void note_used(const Node& node);
-  void read_block(const Block& block);
   void read_claim(const Block& block);
+  void finish_group_block(const Block& block, Role role, std::size_t first_equation);
+  Group* group();
+
+  // ---- display blocks (reader.cpp) ----
+  /// How a block's equations are read: their role in a check, whether they are premises.
+  struct BlockRole {
+    Role role = Role::plain;
+    bool given = false;
+  };
+  BlockRole block_role(const Block& block);
+  void read_block(const Block& block);
+  void read_target(const Block& block);
+  void read_row(const Row& row, const BlockRole& how);
+  using IndexValues = std::vector<std::pair<std::string, long>>;
+  std::vector<IndexValues> index_copies(const Row& row) const;
+  void name_row(const Row& row, Role role, const std::vector<std::size_t>& last_links);
+  void note_used(const Node& node);
   void dimension(Equation& e, const Node& left, const Node& right);
   bool used_scalar(const SymbolName& name) const;
-  Group* group();
 
   const Source& source_;
   const Limits& limits_;
@@ -115,9 +154,11 @@ class Reader {
   Facts facts_;
   std::vector<Equation> equations_;
   std::vector<Group> groups_;
+  std::vector<Equation> targets_;
   std::map<std::string, std::vector<std::size_t>> tags_;
   std::set<std::string> used_;
   std::optional<std::size_t> given_;
+  std::optional<std::size_t> target_;
   std::optional<std::pair<std::size_t, std::vector<std::size_t>>> from_;
   std::optional<std::pair<std::size_t, std::vector<std::size_t>>> also_;
   std::vector<std::size_t> previous_;

@@ -269,7 +269,7 @@ Solver::Solver(const std::vector<ex>& equations, const std::vector<ex>& unknowns
                                  [&](const ex& s) { return s.is_equal(unknowns[i]); });
     const auto k = static_cast<std::size_t>(at - symbols.begin());
     Unknown u{i, k, {}};
-    const ex numerator = GiNaC::normal(equations[i]).numer();
+    const ex numerator = safe_numerator(equations[i]);
     const ex& s = unknowns[i];
     if (numerator.is_polynomial(s) && numerator.degree(s) <= 4 && numerator.degree(s) >= 1) {
       for (int d = 0; d <= numerator.degree(s); ++d) {
@@ -381,7 +381,7 @@ class Sampler {
   bool choose_unknowns() {
     std::vector<bool> taken(symbols_.size(), false);
     for (std::size_t i = 0; i < problem_.premises.size(); ++i) {
-      const ex numerator = GiNaC::normal(problem_.premises[i]).numer();
+      const ex numerator = safe_numerator(problem_.premises[i]);
       double best_score = -1e9;
       std::optional<std::size_t> best;
       for (const ex& s : symbols_of(problem_.premises[i])) {
@@ -437,6 +437,9 @@ class Sampler {
       if (!std::isfinite(v)) {
         return false;
       }
+    }
+    if (!facts_.satisfied_numerically(symbols_, values_)) {
+      return false;  // a fact on an expression (m_1 + m_2 > 0, e \leq 1)
     }
     for (std::size_t i = 0; i < premises_.size(); ++i) {
       const double value = premises_[i](values_);

@@ -2,10 +2,12 @@
 #include "file/step.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <functional>
 #include <map>
 #include <sstream>
 
+#include "file/calculus.hpp"
 #include "file/decide.hpp"
 #include "file/sample.hpp"
 #include "file/time.hpp"
@@ -48,26 +50,6 @@ void merge(Implication& total, const Implication& one) {
   }
 }
 
-std::optional<bool> converse_holds(const Scalars& before, const Scalars& step, const Facts& facts) {
-  using O = Implication::Outcome;
-  // Only whether the converse fails matters here, not the nicest point that shows it.
-  Budget budget;
-  budget.attempts = 48;
-  budget.candidates = 1;
-  bool all = true;
-  for (const ex& target : before.differences) {
-    const Implication back =
-        implies({step.differences, step.denominators, target, before.denominators}, facts, budget);
-    if (back.outcome == O::fails || back.outcome == O::holds_if) {
-      return false;
-    }
-    if (back.outcome == O::unknown) {
-      all = false;
-    }
-  }
-  return all ? std::optional<bool>(true) : std::nullopt;
-}
-
 std::string trimmed(std::string text) {
   const std::size_t first = text.find_first_not_of(' ');
   const std::size_t last = text.find_last_not_of(' ');
@@ -75,6 +57,9 @@ std::string trimmed(std::string text) {
 }
 
 ex readable(const ex& e) {
+  if (expanded_terms(e) > 4000) {
+    return e;  // too large to bring over one denominator: shown as it stands
+  }
   const ex n = GiNaC::normal(e);
   if (!factorable(n.numer()) || !factorable(n.denom())) {
     return n;  // shown over one denominator, unfactored
@@ -90,6 +75,123 @@ std::string number_text(const GiNaC::numeric& n) {
   std::ostringstream out;
   out << n;
   return out.str();
+}
+
+// Whether e is a polynomial in its symbols: numbers, symbols, sums, products and powers with
+// whole non-negative exponents.
+bool polynomial(const ex& e) {
+  for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+    if (GiNaC::is_a<GiNaC::numeric>(*i) || GiNaC::is_a<GiNaC::symbol>(*i) ||
+        GiNaC::is_a<GiNaC::add>(*i) || GiNaC::is_a<GiNaC::mul>(*i)) {
+      continue;
+    }
+    if (GiNaC::is_a<GiNaC::power>(*i) && i->op(1).info(GiNaC::info_flags::nonnegint)) {
+      continue;
+    }
+    return false;
+  }
+  return true;
+}
+
+// The constant c ≠ 0 with target = c · premise, shown at random rational points, before
+// anything is expanded: (a + b + c)^{1000} against (c + b + a)^{999} (a + b + c) at once. Both
+// are polynomials of degree at most d; where they differ, a random point with coordinates from
+// 2^20 values shows it with probability at least 1 - d / 2^20 (Schwartz and Zippel), and eight
+// points together miss it with probability below (d / 2^20)^8 (below 10^-24 for d = 1000).
+std::optional<ex> proportional(const ex& target, const ex& premise, std::uint64_t seed) {
+  if (!polynomial(target) || !polynomial(premise)) {
+    return std::nullopt;
+  }
+  const std::vector<ex> symbols = symbols_of(std::vector<ex>{target, premise});
+  std::uint64_t state = seed * 0x9E3779B97F4A7C15ULL + 1;
+  const auto draw = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<long>((state >> 40) % (1UL << 20)) + 1;
+  };
+  std::optional<GiNaC::numeric> ratio;
+  for (int k = 0; k < 8; ++k) {
+    GiNaC::exmap point;
+    for (const ex& s : symbols) {
+      point[s] = GiNaC::numeric(draw(), 1 + draw() % 1024);
+    }
+    const ex p = premise.subs(point);
+    const ex t = target.subs(point);
+    if (!GiNaC::is_a<GiNaC::numeric>(p) || !GiNaC::is_a<GiNaC::numeric>(t) || p.is_zero()) {
+      return std::nullopt;
+    }
+    const GiNaC::numeric here = GiNaC::ex_to<GiNaC::numeric>(t) / GiNaC::ex_to<GiNaC::numeric>(p);
+    if (here.is_zero() || (ratio && here != *ratio)) {
+      return std::nullopt;
+    }
+    ratio = here;
+  }
+  return ratio ? std::optional<ex>(*ratio) : std::nullopt;
+}
+
+// The scalars with the functions the rules write out replaced (three rounds: a rule's value may
+// hold a function another rule writes out).
+Scalars by_rules(Scalars s, const std::vector<Rule>& rules) {
+  for (std::vector<ex>* list : {&s.differences, &s.scales, &s.denominators}) {
+    for (ex& d : *list) {
+      for (int round = 0; round < 3 && has_atoms(d); ++round) {
+        d = rewritten(d, rules);
+      }
+    }
+  }
+  return s;
+}
+
+// e with tangents, cotangents and secants written through sines and cosines, over one
+// denominator, its numerator (3 \cos^2 \tan^2 - 4 is 3 \sin^2 - 4: its range shows its sign).
+ex in_sines(const ex& e) {
+  if (expanded_terms(e) > 200) {
+    return e;
+  }
+  struct Sines : GiNaC::map_function {
+    ex operator()(const ex& x) override {
+      if (GiNaC::is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "tan") {
+        return GiNaC::sin(x.op(0)) / GiNaC::cos(x.op(0));
+      }
+      return x.map(*this);
+    }
+  } sines;
+  try {
+    return GiNaC::normal(sines(e)).numer();
+  } catch (const std::exception&) {
+    return e;
+  }
+}
+
+// e reduced by equalities, each a polynomial with a whole-number leading coefficient in one of
+// its symbols: the remainder of e's numerator and denominator on division by it.
+ex reduced(const ex& e, const std::vector<ex>& equalities) {
+  if (equalities.empty() || expanded_terms(e) > 2000) {
+    return e;
+  }
+  ex parts;
+  try {
+    parts = GiNaC::normal(e).numer_denom();
+  } catch (const std::exception&) {
+    return e;
+  }
+  ex numerator = GiNaC::expand(parts.op(0));
+  ex denominator = GiNaC::expand(parts.op(1));
+  for (const ex& q : equalities) {
+    const ex p = GiNaC::expand(q);
+    for (const ex& v : symbols_of(p)) {
+      if (!p.is_polynomial(v) || p.degree(v) < 1 || !GiNaC::is_a<GiNaC::numeric>(p.lcoeff(v)) ||
+          !numerator.is_polynomial(v) || !denominator.is_polynomial(v)) {
+        continue;
+      }
+      numerator = GiNaC::expand(GiNaC::rem(numerator, p, v));
+      denominator = GiNaC::expand(GiNaC::rem(denominator, p, v));
+      break;
+    }
+  }
+  if (denominator.is_zero()) {
+    return e;
+  }
+  return numerator / denominator;
 }
 
 }  // namespace
@@ -135,6 +237,13 @@ void for_each_scalar(const Equation& e, const std::function<void(const ex&, cons
   }
 }
 
+void Scalars::append(const Scalars& other) {
+  differences.insert(differences.end(), other.differences.begin(), other.differences.end());
+  scales.insert(scales.end(), other.scales.begin(), other.scales.end());
+  denominators.insert(denominators.end(), other.denominators.begin(), other.denominators.end());
+  written.insert(written.end(), other.written.begin(), other.written.end());
+}
+
 Scalars scalars_of(const Equation& e, const GiNaC::exmap& substitutions) {
   Scalars s;
   for_each_scalar(e, [&](const ex& l, const ex& r) {
@@ -143,11 +252,11 @@ Scalars scalars_of(const Equation& e, const GiNaC::exmap& substitutions) {
     s.differences.push_back(left - right);
     s.scales.push_back(term_scale(left) + term_scale(right));
   });
-  for (const ex& d : e.lhs.denominators) {
-    s.denominators.push_back(d.subs(substitutions));
-  }
-  for (const ex& d : e.rhs.denominators) {
-    s.denominators.push_back(d.subs(substitutions));
+  for (const Meaning* m : {&e.lhs, &e.rhs}) {
+    for (std::size_t k = 0; k < m->denominators.size(); ++k) {
+      s.denominators.push_back(exact_reading(m->denominators[k].subs(substitutions)));
+      s.written.push_back(k < m->written.size() ? m->written[k] : std::string());
+    }
   }
   return s;
 }
@@ -181,44 +290,473 @@ EquationResult Checker::check(const std::vector<Equation>& equations, std::size_
     r.verdict = Verdict::premise;
     return r;
   }
-  decide(equations, e, index, r);
+  try {
+    decide(equations, e, index, r);
+  } catch (const std::exception& failure) {
+    // GiNaC or CLN gave up on an expression (an internal error of theirs): no verdict.
+    EquationResult fresh;
+    fresh.line = r.line;
+    fresh.column = r.column;
+    fresh.tag = r.tag;
+    fresh.latex = r.latex;
+    fresh.from = r.from;
+    r = std::move(fresh);
+    r.verdict = Verdict::undecided;
+    r.how = std::string("the computer algebra stopped on this step: ") + failure.what();
+  }
   return r;
 }
 
 void Checker::decide(const std::vector<Equation>& equations, const Equation& e, std::size_t index,
                      EquationResult& r) {
+  Budget budget;
+  budget.deadline = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                        std::chrono::duration<double>(std::max(options_.step_seconds, 0.0)));
   const Scalars step = scalars_of(e, e.substitutions);
   Scalars before;
   for (const std::size_t p : e.premises) {
-    const Scalars s = scalars_of(equations[p], e.substitutions);
-    before.differences.insert(before.differences.end(), s.differences.begin(), s.differences.end());
-    before.scales.insert(before.scales.end(), s.scales.begin(), s.scales.end());
-    before.denominators.insert(before.denominators.end(), s.denominators.begin(),
-                               s.denominators.end());
+    before.append(scalars_of(equations[p], e.substitutions));
   }
-
-  // The exact method, component by component.
-  Implication forward;
-  forward.outcome = Implication::Outcome::holds;
-  for (const ex& target : step.differences) {
-    Implication one =
-        implies({before.differences, before.denominators, target, step.denominators}, e.facts);
-    merge(forward, one);
+  // Equal before anything is expanded: the step is the equation before times a number.
+  std::optional<ex> multiple;
+  if (before.differences.size() == 1 && step.differences.size() == 1 &&
+      before.denominators.empty() && step.denominators.empty()) {
+    multiple = proportional(step.differences[0], before.differences[0], options_.seed);
   }
-
-  // The numeric method, as a second opinion. Where the exact method found conditions, the
-  // points where one of them is zero are left out like those where a denominator is.
-  NumericOpinion numeric;
-  for (std::size_t k = 0; k < step.differences.size(); ++k) {
-    std::vector<ex> denominators = before.denominators;
-    denominators.insert(denominators.end(), step.denominators.begin(), step.denominators.end());
-    if (forward.outcome == Implication::Outcome::holds_if) {
-      denominators.insert(denominators.end(), forward.conditions.begin(), forward.conditions.end());
+  Forward forward;
+  if (multiple) {
+    forward.implication.outcome = Implication::Outcome::holds;
+    forward.implication.how = "the step is the equation before times " + latex_of(*multiple) +
+                              ", the two equal at 8 random rational points (polynomials: an "
+                              "identity that fails would pass all 8 with a probability below "
+                              "10^-24)";
+  } else {
+    forward = exact(before, step, e.facts, budget);
+  }
+  const NumericOpinion opinion = numeric(before, step, forward, e.facts, index);
+  r.numeric_points = opinion.points;
+  r.numeric_worst = opinion.worst;
+  if (multiple && !opinion.counterexample) {
+    // A number times the equation before: the converse holds too.
+    r.verdict = Verdict::follows;
+    r.decided_by = "exact";
+    r.converse = true;
+    r.how = "exact: " + forward.implication.how + "; numeric: " + opinion.how;
+  } else {
+    conclude(before, step, forward, opinion, e.facts, budget, r);
+  }
+  if (e.equivalence &&
+      (r.verdict == Verdict::follows_one_way || r.verdict == Verdict::follows_if)) {
+    // Written as an equivalence (\iff): the converse must hold too.
+    const std::optional<Implication> back = converse(before, step, e.facts, budget);
+    r.verdict = Verdict::does_not_follow;
+    r.how =
+        "written as an equivalence (\\iff), but the equation before does not follow from "
+        "this one: " +
+        r.how;
+    if (back && back->point) {
+      residual(back->residual, r);
+      exact_point(*back->point, r);
+    } else {
+      r.verdict = Verdict::undecided;
     }
-    NumericProblem problem{before.differences, before.scales, denominators, step.differences[k],
-                           step.scales[k]};
+  }
+  if (past(budget.deadline) && r.verdict == Verdict::undecided) {
+    r.how = "the step's time budget of " + num::brief(options_.step_seconds, 3) +
+            " s ran out (--step-seconds): " + r.how;
+  }
+}
+
+// Sums over an index in one form: from 1 to the letter of the upper limit (\sum_{i=1}^{N-1} is
+// \sum_{i=1}^{N} less its last term), over the index of the first sum with those limits
+// (\sum_j m_j is \sum_i m_i, the facts on m_j carried to m_i).
+void Checker::sums_in_one_form(Scalars& before, Scalars& step, Facts& facts) {
+  std::vector<std::vector<ex>*> lists{&before.differences, &before.denominators, &step.differences,
+                                      &step.denominators};
+  std::vector<std::pair<std::string, ex>> sums;
+  for (const std::vector<ex>* list : lists) {
+    for (const ex& e : *list) {
+      for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+        if (GiNaC::is_a<GiNaC::function>(*i) &&
+            GiNaC::ex_to<GiNaC::function>(*i).get_name() == "indexed_sum") {
+          std::ostringstream text;
+          text << *i;
+          sums.emplace_back(text.str(), *i);
+        }
+      }
+    }
+  }
+  if (sums.empty()) {
+    return;
+  }
+  std::sort(sums.begin(), sums.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  GiNaC::exmap replaced;
+  std::vector<std::pair<ex, ex>> renamed;
+  std::map<std::string, ex> first_index;  // limits → the index of the first sum with them
+  for (const auto& [text, sum] : sums) {
+    if (replaced.count(sum) != 0) {
+      continue;
+    }
+    const ex body = sum.op(0);
+    const ex index = sum.op(1);
+    ex lower = sum.op(2);
+    ex upper = GiNaC::expand(sum.op(3));
+    ex outside = 0;
+    // The limits: lower 1, upper a letter.
+    long k = 0;
+    if (GiNaC::is_a<GiNaC::add>(upper) && GiNaC::is_a<GiNaC::numeric>(upper.op(upper.nops() - 1)) &&
+        GiNaC::ex_to<GiNaC::numeric>(upper.op(upper.nops() - 1)).is_integer()) {
+      k = GiNaC::ex_to<GiNaC::numeric>(upper.op(upper.nops() - 1)).to_long();
+      upper = upper - k;
+    }
+    const bool whole_lower =
+        GiNaC::is_a<GiNaC::numeric>(lower) && GiNaC::ex_to<GiNaC::numeric>(lower).is_integer();
+    if (whole_lower && std::abs(k) <= 3 && !GiNaC::is_a<GiNaC::numeric>(upper)) {
+      const long l = GiNaC::ex_to<GiNaC::numeric>(lower).to_long();
+      if (l >= -3 && l <= 4) {
+        for (long j = 1; j < l; ++j) {
+          outside -= symbols_.at_index(body, index, ex(j), &renamed);
+        }
+        for (long j = l; j < 1; ++j) {
+          outside += symbols_.at_index(body, index, ex(j), &renamed);
+        }
+        for (long j = 1; j <= k; ++j) {
+          outside += symbols_.at_index(body, index, upper + j, &renamed);
+        }
+        for (long j = 0; j < -k; ++j) {
+          outside -= symbols_.at_index(body, index, upper - j, &renamed);
+        }
+        lower = 1;
+      } else {
+        upper = upper + k;
+      }
+    } else {
+      upper = upper + k;
+    }
+    // The index: the first one seen with these limits.
+    std::ostringstream limits;
+    limits << lower << ".." << upper;
+    ex canonical_body = body;
+    ex canonical_index = index;
+    const auto [at, fresh] = first_index.emplace(limits.str(), index);
+    if (!fresh && !at->second.is_equal(index) && !body.has(at->second)) {
+      canonical_index = at->second;
+      canonical_body = symbols_.at_index(body, index, canonical_index, &renamed);
+    }
+    replaced[sum] = indexed_sum(canonical_body, canonical_index, lower, upper) + outside;
+  }
+  for (std::vector<ex>* list : lists) {
+    for (ex& e : *list) {
+      e = e.subs(replaced, GiNaC::subs_options::no_pattern);
+    }
+  }
+  facts = facts.carried(renamed);
+}
+
+// e under an instance, and the symbols that name a sum's limit renamed too (m_N at N = 2 is
+// m_2).
+ex Checker::instantiated(const ex& e, const Instance& instance,
+                         std::vector<std::pair<ex, ex>>& renamed) {
+  ex x = instantiate(e, instance, at_index(renamed));
+  for (const auto& [limit, value] : instance.limits) {
+    x = symbols_.at_index(x, limit, value, &renamed);
+  }
+  return x;
+}
+
+AtIndex Checker::at_index(std::vector<std::pair<ex, ex>>& renamed) {
+  return [this, &renamed](const ex& body, const ex& index, long value) {
+    return symbols_.at_index(body, index, value, &renamed);
+  };
+}
+
+// The exact method on each component; functions, integrals and sums that cannot be done are
+// unknowns of their own (atoms), which is sound for a step that holds whatever they are. A
+// failure among them is only reported when a formula for them shows it (instance_failure).
+Checker::Forward Checker::exact(const Scalars& given_before, const Scalars& given_step,
+                                const Facts& given_facts, const Budget& budget) {
+  Scalars before = given_before;
+  Scalars step = given_step;
+  Facts facts = given_facts;
+  sums_in_one_form(before, step, facts);
+  Atoms atoms;
+  // A function an equation before writes out (F(t) = \frac{dp}{dt}) is replaced by what it is
+  // equal to, inside integrals and derivatives too.
+  const std::vector<Rule> rules = rules_of(before.differences);
+  Scalars hidden_before = by_rules(before, rules);
+  Scalars hidden_step = by_rules(step, rules);
+  for (Scalars* s : {&hidden_before, &hidden_step}) {
+    for (std::vector<ex>* list : {&s->differences, &s->denominators}) {
+      for (ex& d : *list) {
+        d = atoms.hide(d);
+      }
+    }
+  }
+  const auto run = [&](const std::vector<ex>& extra) {
+    Implication total;
+    total.outcome = Implication::Outcome::holds;
+    std::vector<ex> premises = hidden_before.differences;
+    premises.insert(premises.end(), extra.begin(), extra.end());
+    for (const ex& target : hidden_step.differences) {
+      merge(total, implies({premises, hidden_before.denominators, target, hidden_step.denominators},
+                           facts, budget));
+    }
+    return total;
+  };
+  Forward forward{run({}), ""};
+  using O = Implication::Outcome;
+  if (forward.implication.outcome != O::holds && !facts.equalities().empty()) {
+    // The facts' equalities (a unit vector) as equations before, where the step needs them;
+    // and everything reduced by them (n_x^2 is 1 - n_y^2 where n_x^2 + n_y^2 = 1).
+    std::vector<ex> equalities;
+    for (const ex& q : facts.equalities()) {
+      equalities.push_back(atoms.hide(q));
+    }
+    const Scalars plain_before = hidden_before;
+    const Scalars plain_step = hidden_step;
+    for (Scalars* s : {&hidden_before, &hidden_step}) {
+      for (std::vector<ex>* list : {&s->differences, &s->denominators}) {
+        for (ex& d : *list) {
+          d = reduced(d, equalities);
+        }
+      }
+    }
+    Forward with{run(equalities), ""};
+    hidden_before = plain_before;
+    hidden_step = plain_step;
+    if (with.implication.outcome == O::holds || with.implication.outcome == O::holds_if ||
+        forward.implication.outcome == O::unknown) {
+      forward = with;
+    }
+  }
+  if (forward.implication.outcome == O::holds_if) {
+    drop_given_conditions(forward.implication, hidden_before, hidden_step, facts, budget);
+  }
+  if (atoms.any()) {
+    Implication& i = forward.implication;
+    for (ex& c : i.conditions) {
+      c = atoms.show(c);
+    }
+    i.residual = atoms.show(i.residual);
+    if (i.outcome == O::fails || i.outcome == O::unknown) {
+      // Values of the atoms alone may be no values of any function: a formula must show it.
+      Forward failure = instance_failure(before, step, facts, budget);
+      if (failure.implication.outcome == O::fails) {
+        return failure;
+      }
+      i.outcome = O::unknown;
+      i.point.reset();
+      i.how += std::string(i.how.empty() ? "" : "; ") +
+               "no formula tried for the functions, integrals or sums shows the step failing";
+    }
+  }
+  return forward;
+}
+
+// Small formulas for the file's functions and values for the numbers of terms of its sums, in
+// turn: a failure under one of them is a real counterexample.
+Checker::Forward Checker::instance_failure(const Scalars& given_before, const Scalars& given_step,
+                                           const Facts& facts, const Budget& budget) {
+  const std::vector<Rule> rules = rules_of(given_before.differences);
+  const Scalars before = by_rules(given_before, rules);
+  const Scalars step = by_rules(given_step, rules);
+  std::vector<ex> all = before.differences;
+  all.insert(all.end(), step.differences.begin(), step.differences.end());
+  for (const Instance& instance : instances(all, 6)) {
+    if (past(budget.deadline)) {
+      break;
+    }
+    std::vector<std::pair<ex, ex>> renamed;
+    const AtIndex at = at_index(renamed);
+    const auto apply = [&](std::vector<ex> list) {
+      for (ex& x : list) {
+        x = instantiated(x, instance, renamed);
+      }
+      return list;
+    };
+    // An equation that names a function at its variable (F(t) = …) holds for every value of
+    // it: under the formulas, each power of the variable on its own.
+    std::vector<ex> premises;
+    for (const ex& p : before.differences) {
+      ex written = instantiated(p, instance, renamed);
+      std::vector<ex> parts{written};
+      for (const ex& v : function_variables(p)) {
+        std::vector<ex> split;
+        for (const ex& part : parts) {
+          const ex expanded = GiNaC::expand(GiNaC::normal(part).numer());
+          if (!expanded.has(v) || !expanded.is_polynomial(v)) {
+            split.push_back(part);
+            continue;
+          }
+          for (int k = 0; k <= expanded.degree(v); ++k) {
+            split.push_back(expanded.coeff(v, k));
+          }
+        }
+        parts = split;
+      }
+      premises.insert(premises.end(), parts.begin(), parts.end());
+    }
+    const std::vector<ex> premise_denominators = apply(before.denominators);
+    const std::vector<ex> targets = apply(step.differences);
+    const std::vector<ex> target_denominators = apply(step.denominators);
+    std::vector<ex> everything = premises;
+    everything.insert(everything.end(), targets.begin(), targets.end());
+    if (std::any_of(everything.begin(), everything.end(),
+                    [](const ex& x) { return has_atoms(x); })) {
+      continue;
+    }
+    const Facts carried = facts.carried(renamed);
+    for (const ex& target : targets) {
+      Implication one =
+          implies({premises, premise_denominators, target, target_denominators}, carried, budget);
+      if (one.outcome == Implication::Outcome::fails) {
+        one.how = "with " + instance.text + ": " + one.how;
+        return {one, instance.text};
+      }
+    }
+  }
+  Implication none;
+  none.outcome = Implication::Outcome::unknown;
+  return {none, ""};
+}
+
+// A condition c ≠ 0 that the facts give (m_1 + m_2 > 0), or that the equations before give
+// (no values satisfy them where c = 0), is no condition.
+void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
+                                    const Scalars& step, const Facts& facts,
+                                    const Budget& budget) const {
+  std::vector<ex> kept;
+  Budget quick = budget;
+  quick.attempts = 24;
+  quick.candidates = 1;
+  // The denominators as written (and their factors): I + m (r_x n_y - r_y n_x)^2 shows its
+  // sign as written, not once expanded.
+  std::vector<ex> written;
+  for (const Scalars* s : {&before, &step}) {
+    for (const ex& d : s->denominators) {
+      written.push_back(d);
+      if (GiNaC::is_a<GiNaC::mul>(d)) {
+        for (std::size_t i = 0; i < d.nops(); ++i) {
+          written.push_back(d.op(i));
+        }
+      }
+    }
+  }
+  const auto given_as_written = [&](const ex& c) {
+    for (const ex& d : written) {
+      if (expanded_terms(d) > 200 || expanded_terms(c) > 200 || !facts.nonzero(d)) {
+        continue;
+      }
+      // c is d times something the facts keep from zero (1/m + …/I and I m (…)).
+      if (facts.nonzero(GiNaC::factor(GiNaC::normal(c / d)))) {
+        return true;
+      }
+    }
+    return false;
+  };
+  // c reduced by the facts' equalities is a number: n_x^2 + n_y^2 where n_x^2 + n_y^2 = 1.
+  const auto given_by_equality = [&](const ex& c) {
+    const ex rest = reduced(c, facts.equalities());
+    return GiNaC::is_a<GiNaC::numeric>(rest) && !rest.is_zero();
+  };
+  for (const ex& c : forward.conditions) {
+    if (facts.nonzero(c) || given_as_written(c) || given_by_equality(c) ||
+        facts.nonzero(in_sines(c)) ||
+        (expanded_terms(c) <= 200 && facts.nonzero(GiNaC::factor(GiNaC::normal(c))))) {
+      continue;
+    }
+    std::vector<ex> premises = before.differences;
+    premises.push_back(c);
+    premises.insert(premises.end(), facts.equalities().begin(), facts.equalities().end());
+    const Implication there = implies({premises, before.denominators, 1, {}}, facts, quick);
+    if (there.outcome == Implication::Outcome::holds) {
+      continue;  // where c = 0, the equations before and the facts have no solution
+    }
+    kept.push_back(c);
+  }
+  forward.conditions = kept;
+  if (kept.empty()) {
+    forward.outcome = Implication::Outcome::holds;
+  }
+}
+
+// The numeric method, as a second opinion, at random points on the equations before. Where the
+// exact method found conditions, the points where one of them is zero are left out like those
+// where a denominator is. Functions and sums get the first instance's formulas.
+NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, const Forward& forward,
+                                const Facts& facts, std::size_t index) {
+  const std::vector<Rule> rules = rules_of(before.differences);
+  Scalars b = by_rules(before, rules);
+  Scalars s = by_rules(step, rules);
+  Facts f = facts;
+  std::vector<ex> all = before.differences;
+  all.insert(all.end(), step.differences.begin(), step.differences.end());
+  if (std::any_of(all.begin(), all.end(), [](const ex& x) { return has_atoms(x); })) {
+    const std::vector<Instance> list = instances(all, 1);
+    std::vector<std::pair<ex, ex>> renamed;
+    const AtIndex at = at_index(renamed);
+    std::vector<ex> premises;
+    std::vector<ex> scales;
+    for (std::size_t k = 0; k < b.differences.size(); ++k) {
+      // An equation that names a function at its variable holds for every value of it: each
+      // power of the variable on its own, under the formulas.
+      const ex written =
+          list.empty() ? b.differences[k] : instantiated(b.differences[k], list[0], renamed);
+      std::vector<ex> parts{written};
+      for (const ex& v : function_variables(b.differences[k])) {
+        std::vector<ex> split;
+        for (const ex& part : parts) {
+          const ex expanded = GiNaC::expand(GiNaC::normal(part).numer());
+          if (!expanded.has(v) || !expanded.is_polynomial(v)) {
+            split.push_back(part);
+            continue;
+          }
+          for (int d = 0; d <= expanded.degree(v); ++d) {
+            split.push_back(expanded.coeff(v, d));
+          }
+        }
+        parts = split;
+      }
+      for (const ex& p : parts) {
+        premises.push_back(p);
+        scales.push_back(term_scale(p));
+      }
+    }
+    b.differences = premises;
+    b.scales = scales;
+    for (Scalars* x : {&b, &s}) {
+      for (std::vector<ex>* v : {&x->denominators}) {
+        for (ex& e : *v) {
+          e = list.empty() ? e : instantiated(e, list[0], renamed);
+        }
+      }
+    }
+    for (std::vector<ex>* v : {&s.differences, &s.scales}) {
+      for (ex& e : *v) {
+        e = list.empty() ? e : instantiated(e, list[0], renamed);
+      }
+    }
+    f = facts.carried(renamed);
+  }
+  NumericOpinion numeric;
+  std::vector<ex> premises = b.differences;
+  std::vector<ex> scales = b.scales;
+  for (const ex& q : f.equalities()) {
+    premises.push_back(q);
+    scales.push_back(term_scale(q));
+  }
+  for (std::size_t k = 0; k < s.differences.size(); ++k) {
+    std::vector<ex> denominators = b.denominators;
+    denominators.insert(denominators.end(), s.denominators.begin(), s.denominators.end());
+    if (forward.implication.outcome == Implication::Outcome::holds_if) {
+      denominators.insert(denominators.end(), forward.implication.conditions.begin(),
+                          forward.implication.conditions.end());
+    }
+    NumericProblem problem{premises, scales, denominators, s.differences[k], s.scales[k]};
     const NumericOpinion one =
-        sample(problem, e.facts, options_.seed * 7919 + index * 31 + k, options_.samples);
+        sample(problem, f, options_.seed * 7919 + index * 31 + k, options_.samples);
     numeric.points += one.points;
     numeric.worst = std::max(numeric.worst, one.worst);
     if (!numeric.counterexample && one.counterexample) {
@@ -227,20 +765,83 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
     }
     numeric.how = one.how;
   }
-  r.numeric_points = numeric.points;
-  r.numeric_worst = numeric.worst;
+  return numeric;
+}
 
+std::optional<Implication> Checker::converse(const Scalars& given_before, const Scalars& given_step,
+                                             const Facts& facts, const Budget& budget) {
   using O = Implication::Outcome;
+  // Only whether the converse fails matters here, not the nicest point that shows it.
+  Budget quick = budget;
+  quick.attempts = 48;
+  quick.candidates = 1;
+  // The step is the equation before now: the functions it writes out are replaced.
+  Scalars one_before = given_before;
+  Scalars one_step = given_step;
+  Facts one_facts = facts;
+  sums_in_one_form(one_before, one_step, one_facts);
+  const std::vector<Rule> rules = rules_of(one_step.differences);
+  const Scalars before = by_rules(one_before, rules);
+  const Scalars step = by_rules(one_step, rules);
+  Atoms atoms;
+  std::vector<ex> equalities;
+  for (const ex& q : facts.equalities()) {
+    equalities.push_back(atoms.hide(q));
+  }
+  const auto hidden = [&](const std::vector<ex>& list) {
+    std::vector<ex> out;
+    for (const ex& d : list) {
+      out.push_back(reduced(atoms.hide(d), equalities));
+    }
+    return out;
+  };
+  std::vector<ex> premises = hidden(step.differences);
+  premises.insert(premises.end(), equalities.begin(), equalities.end());
+  const std::vector<ex> premise_denominators = hidden(step.denominators);
+  const std::vector<ex> target_denominators = hidden(before.denominators);
+  bool all = true;
+  for (const ex& target : hidden(before.differences)) {
+    Implication back =
+        implies({premises, premise_denominators, target, target_denominators}, facts, quick);
+    if (back.outcome == O::holds_if) {
+      drop_given_conditions(back, Scalars{premises, {}, premise_denominators, {}},
+                            Scalars{{}, {}, target_denominators, {}}, facts, quick);
+    }
+    if ((back.outcome == O::fails || back.outcome == O::unknown) && atoms.any()) {
+      // Values of atoms alone are no counterexample: a formula must show it.
+      Forward failure = instance_failure(given_step, given_before, facts, quick);
+      back = failure.implication.outcome == O::fails ? failure.implication : Implication{};
+    }
+    if (back.outcome == O::fails || back.outcome == O::holds_if) {
+      return back;
+    }
+    if (back.outcome == O::unknown) {
+      all = false;
+    }
+  }
+  if (!all) {
+    return std::nullopt;
+  }
+  Implication holds;
+  holds.outcome = O::holds;
+  return holds;
+}
+
+void Checker::conclude(const Scalars& before, const Scalars& step, const Forward& forward,
+                       const NumericOpinion& numeric, const Facts& facts, const Budget& budget,
+                       EquationResult& r) {
+  using O = Implication::Outcome;
+  const Implication& exact = forward.implication;
   const std::string numeric_note =
       numeric.points == 0
           ? "numeric: " + numeric.how
           : "numeric: " + numeric.how + ", worst relative residual " + num::brief(numeric.worst, 2);
-  switch (forward.outcome) {
+  switch (exact.outcome) {
     case O::holds:
     case O::holds_if: {
       if (numeric.counterexample) {
         r.verdict = Verdict::undecided;
-        r.how = "the exact method finds that it follows (" + forward.how +
+        r.how = "the exact method finds that it follows (" + exact.how +
                 "), but the numeric method finds a point where it fails (relative residual " +
                 num::brief(numeric.counterexample_residual, 2) +
                 "): the two disagree, so no verdict is given";
@@ -248,32 +849,25 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
         return;
       }
       r.decided_by = "exact";
-      if (forward.outcome == O::holds_if) {
+      if (exact.outcome == O::holds_if) {
         r.verdict = Verdict::follows_if;
-        ex product = 1;
-        std::string text;
-        for (const ex& c : forward.conditions) {
-          product *= c;
-        }
-        product = sym::up_to_sign(product);  // its sign does not matter: one form in every run
-        r.condition = latex_of(product) + " \\neq 0";
-        r.condition_text = plain_of(product) + " != 0";
-        r.condition_needed = forward.conditions_needed;
-        r.how = "exact: " + forward.how + "; " + numeric_note;
-        if (!forward.conditions_needed) {
+        condition(exact, before, step, r);
+        r.condition_needed = exact.conditions_needed;
+        r.how = "exact: " + exact.how + "; " + numeric_note;
+        if (!exact.conditions_needed) {
           r.how += "; whether the condition is needed was not decided";
         }
         return;
       }
-      const std::optional<bool> converse = converse_holds(before, step, e.facts);
-      r.converse = converse;
-      r.verdict = converse.value_or(false) ? Verdict::follows : Verdict::follows_one_way;
-      r.how = "exact: " + (forward.how.empty() ? std::string("it holds once the equations "
-                                                             "before are used")
-                                               : forward.how);
-      if (!converse) {
+      const std::optional<Implication> back = converse(before, step, facts, budget);
+      r.converse = back ? std::optional<bool>(back->outcome == O::holds) : std::nullopt;
+      r.verdict = r.converse.value_or(false) ? Verdict::follows : Verdict::follows_one_way;
+      r.how = "exact: " + (exact.how.empty() ? std::string("it holds once the equations "
+                                                           "before are used")
+                                             : exact.how);
+      if (!r.converse) {
         r.how += "; whether the equations before follow from it was not decided";
-      } else if (!*converse) {
+      } else if (!*r.converse) {
         r.how += "; the equations before do not follow from it";
       }
       r.how += "; " + numeric_note;
@@ -282,12 +876,12 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
     case O::fails: {
       r.verdict = Verdict::does_not_follow;
       r.decided_by = "exact";
-      residual(forward.residual, r);
-      exact_point(*forward.point, r);
+      residual(exact.residual, r);
+      exact_point(*exact.point, r);
+      r.counterexample_functions = forward.instance;
       r.how = "exact: " +
-              (forward.how.empty() ? std::string("what is left of the step does "
-                                                 "not vanish")
-                                   : forward.how) +
+              (exact.how.empty() ? std::string("what is left of the step does not vanish")
+                                 : exact.how) +
               "; the counterexample satisfies the equations before and the facts exactly";
       return;
     }
@@ -297,17 +891,74 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
   if (numeric.counterexample) {
     r.verdict = Verdict::does_not_follow;
     r.decided_by = "numeric";
-    residual(forward.residual, r);
+    residual(exact.residual, r);
     numeric_point(*numeric.counterexample, r);
-    r.how = "exact: undecided (" + forward.how +
-            "); numeric: a point on the equations before "
-            "where the step fails (relative residual " +
+    r.how = "exact: undecided (" + exact.how +
+            "); numeric: a point on the equations before where the step fails (relative "
+            "residual " +
             num::brief(numeric.counterexample_residual, 2) + ")";
     return;
   }
   r.verdict = Verdict::undecided;
-  r.how = "exact: " + forward.how + "; " + numeric_note +
-          " (agreement at random points is not a proof)";
+  r.how =
+      "exact: " + exact.how + "; " + numeric_note + " (agreement at random points is not a proof)";
+}
+
+// The condition as the file wrote it where it is one of the denominators written (or a
+// constant times one), else as computed.
+void Checker::condition(const Implication& forward, const Scalars& before, const Scalars& step,
+                        EquationResult& r) const {
+  std::vector<std::pair<ex, std::string>> written;
+  for (const Scalars* s : {&step, &before}) {
+    for (std::size_t k = 0; k < s->denominators.size(); ++k) {
+      if (k < s->written.size() && !s->written[k].empty()) {
+        written.emplace_back(s->denominators[k], s->written[k]);
+      }
+    }
+  }
+  std::vector<std::string> latex;
+  ex product = 1;
+  for (const ex& c : forward.conditions) {
+    product *= c;
+    std::string text = latex_of(sym::up_to_sign(c));
+    for (const auto& [d, w] : written) {
+      if (expanded_terms(d) > 200 || expanded_terms(c) > 200) {
+        continue;
+      }
+      const ex ratio = GiNaC::normal(c / d);
+      if (GiNaC::is_a<GiNaC::numeric>(ratio) && !ratio.is_zero()) {
+        text = trimmed(w);
+        break;
+      }
+    }
+    latex.push_back(text + " \\neq 0");
+  }
+  product = sym::up_to_sign(product);  // its sign does not matter: one form in every run
+  std::string joined;
+  for (const std::string& l : latex) {
+    joined += (joined.empty() ? "" : ", \\quad ") + l;
+  }
+  r.condition = joined;
+  r.condition_text = plain_of(product) + " != 0";
+}
+
+bool Checker::equivalent(const std::vector<const Equation*>& premises, const Equation& target,
+                         double seconds) {
+  Budget budget;
+  budget.deadline = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                        std::chrono::duration<double>(seconds));
+  Scalars before;
+  for (const Equation* p : premises) {
+    before.append(scalars_of(*p, target.substitutions));
+  }
+  const Scalars step = scalars_of(target, target.substitutions);
+  const Forward forward = exact(before, step, target.facts, budget);
+  if (forward.implication.outcome != Implication::Outcome::holds) {
+    return false;
+  }
+  const std::optional<Implication> back = converse(before, step, target.facts, budget);
+  return back && back->outcome == Implication::Outcome::holds;
 }
 
 void Checker::residual(const ex& e, EquationResult& r) const {

@@ -1,17 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Deciding one equation of a derivation file: its dimensions, then the exact method (does it
 // follow from the equations before, under the facts?) with the numeric method as a second
-// opinion, into a verdict with its condition, residual or counterexample.
+// opinion, into a verdict with its condition, residual or counterexample. Each step has a time
+// budget; past it the step is undecided, with the reason.
 #pragma once
 
 #include <ginac/ginac.h>
 
+#include <chrono>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "derivations/derivation.hpp"
+#include "file/calculus.hpp"
+#include "file/decide.hpp"
 #include "file/reader.hpp"
+#include "file/sample.hpp"
 
 namespace impulse::derivations::file {
 
@@ -21,11 +27,14 @@ void for_each_scalar(const Equation& e,
                      const std::function<void(const GiNaC::ex&, const GiNaC::ex&)>& each);
 
 /// The scalar equations an equation stands for (one per component or entry), each with the size
-/// of its terms, read exactly (forces constant over the contact), and the denominators written.
+/// of its terms, read exactly (forces constant over the contact), and the denominators written
+/// (with the LaTeX the file wrote them in).
 struct Scalars {
   std::vector<GiNaC::ex> differences;  ///< each = 0
   std::vector<GiNaC::ex> scales;
   std::vector<GiNaC::ex> denominators;
+  std::vector<std::string> written;  ///< each denominator as written ("" when unknown)
+  void append(const Scalars& other);
 };
 [[nodiscard]] Scalars scalars_of(const Equation& e, const GiNaC::exmap& substitutions);
 
@@ -45,9 +54,33 @@ class Checker {
   EquationResult check(const std::vector<Equation>& equations, std::size_t index,
                        const Source& source, const std::vector<std::size_t>* premises = nullptr);
 
+  /// Whether @p target follows from @p premises and back (an equivalent equation, a task's
+  /// target reached), within @p seconds.
+  [[nodiscard]] bool equivalent(const std::vector<const Equation*>& premises,
+                                const Equation& target, double seconds);
+
  private:
+  struct Forward {
+    Implication implication;
+    std::string instance;  ///< the functions' formulas under which it fails ("F(u) = u")
+  };
   void decide(const std::vector<Equation>& equations, const Equation& e, std::size_t index,
               EquationResult& r);
+  Forward exact(const Scalars& before, const Scalars& step, const Facts& facts,
+                const Budget& budget);
+  Forward instance_failure(const Scalars& before, const Scalars& step, const Facts& facts,
+                           const Budget& budget);
+  NumericOpinion numeric(const Scalars& before, const Scalars& step, const Forward& forward,
+                         const Facts& facts, std::size_t index);
+  std::optional<Implication> converse(const Scalars& before, const Scalars& step,
+                                      const Facts& facts, const Budget& budget);
+  void drop_given_conditions(Implication& forward, const Scalars& before, const Scalars& step,
+                             const Facts& facts, const Budget& budget) const;
+  void conclude(const Scalars& before, const Scalars& step, const Forward& forward,
+                const NumericOpinion& numeric, const Facts& facts, const Budget& budget,
+                EquationResult& r);
+  void condition(const Implication& forward, const Scalars& before, const Scalars& step,
+                 EquationResult& r) const;
   void residual(const GiNaC::ex& e, EquationResult& r) const;
   template <typename Value>
   void point(const std::vector<std::pair<GiNaC::ex, Value>>& values, EquationResult& r,
@@ -56,6 +89,10 @@ class Checker {
   void exact_point(const GiNaC::exmap& values, EquationResult& r) const;
   void numeric_point(const std::vector<std::pair<GiNaC::ex, double>>& values,
                      EquationResult& r) const;
+  [[nodiscard]] AtIndex at_index(std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& renamed);
+  void sums_in_one_form(Scalars& before, Scalars& step, Facts& facts);
+  [[nodiscard]] GiNaC::ex instantiated(const GiNaC::ex& e, const Instance& instance,
+                                       std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& renamed);
 
   Symbols& symbols_;
   const DerivationOptions& options_;

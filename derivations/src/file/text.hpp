@@ -36,7 +36,7 @@ struct Limits {
   std::size_t equations = 2000;              ///< display equations per file
   std::size_t equation_characters = 20000;   ///< characters of one display block
   std::size_t nesting = 100;                 ///< groups, fractions, functions inside one another
-  std::size_t number_digits = 60;            ///< characters of one number
+  std::size_t number_digits = 400;           ///< characters of one number (100! has 158)
   long exponent = 1000;                      ///< largest integer exponent written
 };
 

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "file/calculus.hpp"
 #include "symbolic.hpp"
 
 namespace impulse::derivations::file {
@@ -55,20 +56,9 @@ GiNaC::ex exact_reading(const GiNaC::ex& e) {
     return 1;
   }
   if (GiNaC::is_a<GiNaC::integral>(e)) {
-    const GiNaC::ex x = e.op(0);
-    const GiNaC::ex a = exact_reading(e.op(1));
-    const GiNaC::ex b = exact_reading(e.op(2));
-    const GiNaC::ex f = GiNaC::expand(exact_reading(e.op(3)));
-    if (!f.is_polynomial(x)) {
-      throw std::invalid_argument("the exact reading integrates polynomials in the variable only");
-    }
-    // ∫_a^b Σ c_k x^k dx, term by term.
-    GiNaC::ex sum = 0;
-    for (int k = f.ldegree(x); k <= f.degree(x); ++k) {
-      const GiNaC::ex c = f.coeff(x, k);
-      sum += c * (GiNaC::pow(b, k + 1) - GiNaC::pow(a, k + 1)) / (k + 1);
-    }
-    return sum;
+    // Done where a formula is known (calculus.hpp); otherwise left as an integral.
+    return integrate(exact_reading(e.op(3)), e.op(0), exact_reading(e.op(1)),
+                     exact_reading(e.op(2)));
   }
   return e.map([](const GiNaC::ex& part) { return exact_reading(part); });
 }

@@ -26,9 +26,9 @@ DECLARE_FUNCTION_1P(contact_pulse)
 /// Whether @p e holds an integral or a pulse (it then has two readings).
 [[nodiscard]] bool timed(const GiNaC::ex& e);
 
-/// The exact reading: every pulse is 1 (forces constant over the contact) and the integrals of
-/// polynomials are done. Throws std::invalid_argument naming the integrand when an integral is
-/// not of a polynomial.
+/// The exact reading: every pulse is 1 (forces constant over the contact) and the integrals are
+/// done where a formula is known (calculus.hpp: polynomials, sines, cosines and exponentials of
+/// linear arguments, …); an integral of anything else stays an integral.
 [[nodiscard]] GiNaC::ex exact_reading(const GiNaC::ex& e);
 
 /// @p e with the symbols of @p shaped replaced by their values, except inside integrals (a

@@ -1,0 +1,574 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "file/calculus.hpp"
+
+#include <algorithm>
+#include <mutex>
+#include <set>
+#include <sstream>
+
+namespace impulse::derivations::file {
+
+using GiNaC::ex;
+using GiNaC::is_a;
+
+namespace {
+
+void indexed_sum_latex(const ex& body, const ex& index, const ex& lower, const ex& upper,
+                       const GiNaC::print_context& c) {
+  c.s << "\\sum_{" << index << " = " << lower << "}^{" << upper << "} \\left(" << body
+      << "\\right)";
+}
+void indexed_product_latex(const ex& body, const ex& index, const ex& lower, const ex& upper,
+                           const GiNaC::print_context& c) {
+  c.s << "\\prod_{" << index << " = " << lower << "}^{" << upper << "} \\left(" << body
+      << "\\right)";
+}
+void indexed_sum_plain(const ex& body, const ex& index, const ex& lower, const ex& upper,
+                       const GiNaC::print_context& c) {
+  c.s << "sum(" << body << ", " << index << "=" << lower << ".." << upper << ")";
+}
+void indexed_product_plain(const ex& body, const ex& index, const ex& lower, const ex& upper,
+                           const GiNaC::print_context& c) {
+  c.s << "product(" << body << ", " << index << "=" << lower << ".." << upper << ")";
+}
+
+// The functions registered for the files, by (name, arguments): serials are for the process.
+struct Registry {
+  std::mutex lock;
+  std::map<std::pair<std::string, unsigned>, unsigned> serials;
+  std::set<unsigned> abstract;
+};
+
+Registry& registry() {
+  static Registry r;
+  return r;
+}
+
+// GiNaC's map with a function.
+struct Mapper : GiNaC::map_function {
+  std::function<ex(const ex&)> f;
+  explicit Mapper(std::function<ex(const ex&)> g) : f(std::move(g)) {}
+  ex operator()(const ex& e) override { return f(e); }
+};
+
+ex map_parts(const ex& e, std::function<ex(const ex&)> f) {
+  Mapper m(std::move(f));
+  return e.map(m);
+}
+
+bool registered_abstract(unsigned serial) {
+  Registry& r = registry();
+  const std::lock_guard<std::mutex> hold(r.lock);
+  return r.abstract.contains(serial);
+}
+
+}  // namespace
+
+REGISTER_FUNCTION(indexed_sum, print_func<GiNaC::print_latex>(indexed_sum_latex)
+                                   .print_func<GiNaC::print_dflt>(indexed_sum_plain))
+REGISTER_FUNCTION(indexed_product, print_func<GiNaC::print_latex>(indexed_product_latex)
+                                       .print_func<GiNaC::print_dflt>(indexed_product_plain))
+
+unsigned abstract_function(const std::string& name, const std::string& latex, unsigned arguments) {
+  Registry& r = registry();
+  const std::lock_guard<std::mutex> hold(r.lock);
+  const auto key = std::pair{name, arguments};
+  if (const auto found = r.serials.find(key); found != r.serials.end()) {
+    return found->second;
+  }
+  // GiNaC's own functions (S, G, H, psi, zeta, …) keep their names: a file's takes a prefix
+  // where the name is taken.
+  std::string registered = name;
+  try {
+    (void)GiNaC::function::find_function(registered, arguments);
+    registered = "fn_" + name;
+  } catch (const std::exception&) {
+  }
+  const unsigned serial = GiNaC::function::register_new(
+      GiNaC::function_options(registered, arguments).latex_name(latex));
+  r.serials.emplace(key, serial);
+  r.abstract.insert(serial);
+  return serial;
+}
+
+bool is_abstract(const ex& e) {
+  if (is_a<GiNaC::fderivative>(e) || is_a<GiNaC::function>(e)) {
+    return registered_abstract(GiNaC::ex_to<GiNaC::function>(e).get_serial());
+  }
+  return false;
+}
+
+namespace {
+
+bool is_indexed(const ex& e) {
+  if (!is_a<GiNaC::function>(e)) {
+    return false;
+  }
+  const unsigned serial = GiNaC::ex_to<GiNaC::function>(e).get_serial();
+  return serial == indexed_sum_SERIAL::serial || serial == indexed_product_SERIAL::serial;
+}
+
+bool is_atom(const ex& e) {
+  return is_a<GiNaC::integral>(e) || is_abstract(e) || is_indexed(e);
+}
+
+// The terms of an expanded expression.
+std::vector<ex> terms(const ex& e) {
+  std::vector<ex> list;
+  if (is_a<GiNaC::add>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      list.push_back(e.op(i));
+    }
+  } else {
+    list.push_back(e);
+  }
+  return list;
+}
+
+// A term as (the factors that do not depend, the factors that do).
+std::pair<ex, ex> split_term(const ex& term, const std::function<bool(const ex&)>& depends) {
+  ex constant = 1;
+  ex varying = 1;
+  if (is_a<GiNaC::mul>(term)) {
+    for (std::size_t i = 0; i < term.nops(); ++i) {
+      (depends(term.op(i)) ? varying : constant) *= term.op(i);
+    }
+  } else {
+    (depends(term) ? varying : constant) *= term;
+  }
+  return {constant, varying};
+}
+
+}  // namespace
+
+bool has_atoms(const ex& e) {
+  if (is_atom(e)) {
+    return true;
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (has_atoms(e.op(i))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+ex sum_over(const ex& body, const ex& index, const ex& lower, const ex& upper,
+            const std::function<bool(const ex&)>& depends) {
+  const ex count = upper - lower + 1;
+  ex total = 0;
+  std::map<ex, ex, GiNaC::ex_is_less> grouped;  // varying part → its constant factor
+  for (const ex& term : terms(GiNaC::expand(body))) {
+    const auto [constant, varying] = split_term(term, depends);
+    if (varying.is_equal(1)) {
+      total += constant * count;
+    } else {
+      grouped[varying] += constant;
+    }
+  }
+  for (const auto& [varying, constant] : grouped) {
+    total += constant * indexed_sum(varying, index, lower, upper);
+  }
+  return total;
+}
+
+ex product_over(const ex& body, const ex& index, const ex& lower, const ex& upper,
+                const std::function<bool(const ex&)>& depends) {
+  const auto [constant, varying] = split_term(body, depends);
+  const ex outside = GiNaC::pow(constant, upper - lower + 1);
+  return varying.is_equal(1) ? outside : outside * indexed_product(varying, index, lower, upper);
+}
+
+// ---- integrals ---------------------------------------------------------------------------------
+
+namespace {
+
+// k and m when e = k x + m with k ≠ 0 and neither depending on x.
+std::optional<std::pair<ex, ex>> linear_in(const ex& e, const ex& x) {
+  const ex expanded = GiNaC::expand(e);
+  if (!expanded.is_polynomial(x) || expanded.degree(x) != 1) {
+    return std::nullopt;
+  }
+  return std::pair{expanded.coeff(x, 1), expanded.coeff(x, 0)};
+}
+
+bool named(const ex& e, const char* name) {
+  return is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == name;
+}
+
+// An antiderivative of g in x (g depends on x), where a formula is known.
+std::optional<ex> antiderivative(const ex& g, const ex& x, int depth = 0) {
+  if (depth > 8) {
+    return std::nullopt;
+  }
+  const auto& s = GiNaC::ex_to<GiNaC::symbol>(x);
+  if (g.is_polynomial(x)) {
+    ex sum = 0;
+    const ex expanded = GiNaC::expand(g);
+    for (int k = expanded.ldegree(x); k <= expanded.degree(x); ++k) {
+      sum += expanded.coeff(x, k) * GiNaC::pow(x, k + 1) / (k + 1);
+    }
+    return sum;
+  }
+  if (is_a<GiNaC::add>(g)) {
+    ex sum = 0;
+    for (std::size_t i = 0; i < g.nops(); ++i) {
+      const ex part = g.op(i);
+      if (!part.has(x)) {
+        sum += part * x;
+        continue;
+      }
+      const auto a = antiderivative(part, x, depth + 1);
+      if (!a) {
+        return std::nullopt;
+      }
+      sum += *a;
+    }
+    return sum;
+  }
+  if (is_a<GiNaC::mul>(g)) {
+    // A constant factor comes out; a polynomial times sin, cos or exp of a linear argument is
+    // done by parts.
+    ex constant = 1;
+    ex polynomial = 1;
+    std::vector<ex> rest;
+    for (std::size_t i = 0; i < g.nops(); ++i) {
+      const ex f = g.op(i);
+      if (!f.has(x)) {
+        constant *= f;
+      } else if (f.is_polynomial(x)) {
+        polynomial *= f;
+      } else {
+        rest.push_back(f);
+      }
+    }
+    if (!constant.is_equal(1)) {
+      const auto a = antiderivative(g / constant, x, depth + 1);
+      return a ? std::optional<ex>(constant * *a) : std::nullopt;
+    }
+    if (rest.size() == 1 && !polynomial.is_equal(1)) {
+      const ex f = rest[0];
+      const bool trig = named(f, "sin") || named(f, "cos") || named(f, "exp");
+      const auto km = trig ? linear_in(f.op(0), x) : std::nullopt;
+      if (km && GiNaC::expand(polynomial).degree(x) <= 6) {
+        // ∫ P f = P F − ∫ P' F, with F an antiderivative of f.
+        const auto outer = antiderivative(f, x, depth + 1);
+        if (!outer) {
+          return std::nullopt;
+        }
+        const auto inner = antiderivative(GiNaC::expand(polynomial.diff(s) * *outer), x, depth + 1);
+        if (!inner) {
+          return std::nullopt;
+        }
+        return polynomial * *outer - *inner;
+      }
+    }
+    return std::nullopt;
+  }
+  if (is_a<GiNaC::power>(g)) {
+    const ex base = g.op(0);
+    const ex exponent = g.op(1);
+    const auto km = linear_in(base, x);
+    if (km && !exponent.has(x)) {
+      if (exponent.is_equal(-1)) {
+        return GiNaC::log(base) / km->first;
+      }
+      return GiNaC::pow(base, exponent + 1) / (km->first * (exponent + 1));
+    }
+    return std::nullopt;
+  }
+  if (is_a<GiNaC::function>(g) && g.nops() == 1) {
+    const auto km = linear_in(g.op(0), x);
+    if (named(g, "sin") && km) {
+      return -GiNaC::cos(g.op(0)) / km->first;
+    }
+    if (named(g, "cos") && km) {
+      return GiNaC::sin(g.op(0)) / km->first;
+    }
+    if (named(g, "exp") && km) {
+      return GiNaC::exp(g.op(0)) / km->first;
+    }
+  }
+  // The derivative of a declared function of x: the fundamental theorem.
+  if (is_a<GiNaC::fderivative>(g) && g.nops() == 1 && g.op(0).is_equal(x) && is_abstract(g)) {
+    const auto& d = GiNaC::ex_to<GiNaC::fderivative>(g);
+    // Differentiated once or more: the antiderivative differentiates once less.
+    const std::size_t order = d.derivatives().size();
+    const ex f = GiNaC::function(d.get_serial(), x);
+    return order <= 1 ? f : f.diff(s, static_cast<unsigned>(order - 1));
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+ex integrate(const ex& f, const ex& x, const ex& a, const ex& b) {
+  if (!f.has(x)) {
+    return f * (b - a);
+  }
+  ex total = 0;
+  ex undone = 0;
+  for (const ex& term : terms(GiNaC::expand(f))) {
+    const auto [constant, varying] = split_term(term, [&](const ex& e) { return e.has(x); });
+    const auto a_of = antiderivative(varying, x);
+    if (a_of) {
+      total += constant * (a_of->subs(x == b) - a_of->subs(x == a));
+    } else {
+      undone += term;
+    }
+  }
+  if (!undone.is_zero()) {
+    total += GiNaC::integral(x, a, b, undone);
+  }
+  return total;
+}
+
+// ---- atoms -------------------------------------------------------------------------------------
+
+ex Atoms::hide(const ex& e) {
+  if (is_atom(e)) {
+    if (const auto found = forward_.find(e); found != forward_.end()) {
+      return found->second;
+    }
+    std::ostringstream plain;
+    std::ostringstream latex;
+    plain << GiNaC::dflt << e;
+    latex << GiNaC::latex << e;
+    const ex symbol = GiNaC::realsymbol(plain.str(), latex.str());
+    forward_[e] = symbol;
+    backward_[symbol] = e;
+    return symbol;
+  }
+  if (e.nops() == 0) {
+    return e;
+  }
+  return map_parts(e, [this](const ex& part) { return hide(part); });
+}
+
+ex Atoms::show(const ex& e) const {
+  return backward_.empty() ? e : e.subs(backward_);
+}
+
+// ---- instances ---------------------------------------------------------------------------------
+
+const GiNaC::symbol& instance_variable() {
+  static const GiNaC::symbol u("u");
+  return u;
+}
+
+namespace {
+
+void collect(const ex& e, std::set<unsigned>& functions, std::set<ex, GiNaC::ex_is_less>& limits,
+             std::map<unsigned, std::string>& names) {
+  if (is_abstract(e)) {
+    const auto& f = GiNaC::ex_to<GiNaC::function>(e);
+    functions.insert(f.get_serial());
+    names[f.get_serial()] = f.get_name();
+  }
+  if (is_indexed(e)) {
+    for (const ex& limit : {e.op(2), e.op(3)}) {
+      for (auto i = limit.preorder_begin(); i != limit.preorder_end(); ++i) {
+        if (is_a<GiNaC::symbol>(*i)) {
+          limits.insert(*i);
+        }
+      }
+    }
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    collect(e.op(i), functions, limits, names);
+  }
+}
+
+std::string text_of(const ex& e) {
+  std::ostringstream out;
+  out << GiNaC::dflt << e;
+  return out.str();
+}
+
+}  // namespace
+
+std::vector<Instance> instances(const std::vector<ex>& expressions, std::size_t most) {
+  std::set<unsigned> functions;
+  std::set<ex, GiNaC::ex_is_less> limits;
+  std::map<unsigned, std::string> names;
+  for (const ex& e : expressions) {
+    collect(e, functions, limits, names);
+  }
+  const ex u = instance_variable();
+  const std::vector<ex> formulas{1, u, u * u, 1 + u, 2 - u, u * u * u - u, 1 + 2 * u + u * u};
+  const std::vector<long> counts{2, 3, 1};
+  std::vector<Instance> list;
+  for (std::size_t k = 0; k < most; ++k) {
+    Instance instance;
+    std::size_t f = 0;
+    for (const unsigned serial : functions) {
+      const ex formula = formulas[(k + f) % formulas.size()];
+      instance.formulas[serial] = formula;
+      std::string name = names[serial];
+      if (name.starts_with("fn_")) {
+        name = name.substr(3);
+      }
+      instance.text += (instance.text.empty() ? "" : ", ") + name + "(u) = " + text_of(formula);
+      ++f;
+    }
+    std::size_t l = 0;
+    for (const ex& limit : limits) {
+      const long value = counts[(k + l) % counts.size()];
+      instance.limits[limit] = value;
+      instance.text +=
+          (instance.text.empty() ? "" : ", ") + text_of(limit) + " = " + std::to_string(value);
+      ++l;
+    }
+    list.push_back(std::move(instance));
+    if (functions.empty() && k + 1 >= counts.size()) {
+      break;
+    }
+  }
+  return list;
+}
+
+ex instantiate(const ex& e, const Instance& instance, const AtIndex& at_index) {
+  const ex u = instance_variable();
+  const std::function<ex(const ex&)> walk = [&](const ex& x) -> ex {
+    if (is_abstract(x)) {
+      const auto& f = GiNaC::ex_to<GiNaC::function>(x);
+      const auto formula = instance.formulas.find(f.get_serial());
+      if (formula == instance.formulas.end() || x.nops() != 1) {
+        return x;
+      }
+      const ex argument = walk(x.op(0));
+      ex value = formula->second;
+      if (is_a<GiNaC::fderivative>(x)) {
+        const auto order =
+            static_cast<unsigned>(GiNaC::ex_to<GiNaC::fderivative>(x).derivatives().size());
+        value = value.diff(GiNaC::ex_to<GiNaC::symbol>(u), order);
+      }
+      return value.subs(u == argument);
+    }
+    if (is_indexed(x)) {
+      const ex lower = walk(x.op(2)).subs(instance.limits);
+      const ex upper = walk(x.op(3)).subs(instance.limits);
+      if (!is_a<GiNaC::numeric>(lower) || !is_a<GiNaC::numeric>(upper) ||
+          !GiNaC::ex_to<GiNaC::numeric>(lower).is_integer() ||
+          !GiNaC::ex_to<GiNaC::numeric>(upper).is_integer()) {
+        return x;
+      }
+      const long from = GiNaC::ex_to<GiNaC::numeric>(lower).to_long();
+      const long to = GiNaC::ex_to<GiNaC::numeric>(upper).to_long();
+      const bool sum = GiNaC::ex_to<GiNaC::function>(x).get_serial() == indexed_sum_SERIAL::serial;
+      ex total = sum ? ex(0) : ex(1);
+      for (long k = from; k <= to && k - from < 100; ++k) {
+        const ex term = walk(at_index(x.op(0), x.op(1), k));
+        total = sum ? total + term : total * term;
+      }
+      return total;
+    }
+    if (is_a<GiNaC::integral>(x)) {
+      const ex variable = x.op(0);
+      return integrate(walk(x.op(3)), variable, walk(x.op(1)), walk(x.op(2)));
+    }
+    if (x.nops() == 0) {
+      return x.subs(instance.limits);
+    }
+    return map_parts(x, walk);
+  };
+  return walk(e);
+}
+
+// ---- rules ------------------------------------------------------------------------------------
+
+std::vector<ex> function_variables(const ex& e) {
+  std::vector<ex> found;
+  for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+    if (is_abstract(*i) && i->nops() == 1 && is_a<GiNaC::symbol>(i->op(0)) &&
+        std::none_of(found.begin(), found.end(),
+                     [&](const ex& v) { return v.is_equal(i->op(0)); })) {
+      found.push_back(i->op(0));
+    }
+  }
+  return found;
+}
+
+std::vector<Rule> rules_of(const std::vector<ex>& equations) {
+  std::vector<Rule> rules;
+  for (const ex& equation : equations) {
+    const ex e = GiNaC::expand(equation);
+    // The candidates in one order in every run: values before derivatives, then by their text.
+    std::vector<std::pair<std::pair<std::size_t, std::string>, ex>> candidates;
+    for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+      if (!is_abstract(*i) || i->nops() != 1 || !is_a<GiNaC::symbol>(i->op(0))) {
+        continue;
+      }
+      const std::size_t order = is_a<GiNaC::fderivative>(*i)
+                                    ? GiNaC::ex_to<GiNaC::fderivative>(*i).derivatives().size()
+                                    : 0;
+      std::ostringstream text;
+      text << GiNaC::dflt << *i;
+      candidates.push_back({{order, text.str()}, *i});
+    }
+    std::sort(candidates.begin(), candidates.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [key, atom] : candidates) {
+      const unsigned serial = GiNaC::ex_to<GiNaC::function>(atom).get_serial();
+      // Linear in the atom with a number as the coefficient, and no other value of F.
+      const GiNaC::symbol slot("slot");
+      const ex replaced = e.subs(atom == slot);
+      bool other = false;
+      for (auto j = replaced.preorder_begin(); j != replaced.preorder_end(); ++j) {
+        other =
+            other || (is_abstract(*j) && GiNaC::ex_to<GiNaC::function>(*j).get_serial() == serial);
+      }
+      if (other || !replaced.is_polynomial(slot) || replaced.degree(slot) != 1) {
+        continue;
+      }
+      const ex coefficient = replaced.coeff(slot, 1);
+      if (!is_a<GiNaC::numeric>(coefficient) || coefficient.is_zero()) {
+        continue;
+      }
+      rules.push_back({serial, key.first, atom.op(0), -replaced.coeff(slot, 0) / coefficient});
+      break;
+    }
+  }
+  return rules;
+}
+
+ex rewritten(const ex& e, const std::vector<Rule>& rules) {
+  if (rules.empty() || !has_atoms(e)) {
+    return e;
+  }
+  const std::function<ex(const ex&)> walk = [&](const ex& x) -> ex {
+    if (is_abstract(x) && x.nops() == 1) {
+      const unsigned serial = GiNaC::ex_to<GiNaC::function>(x).get_serial();
+      const std::size_t order = is_a<GiNaC::fderivative>(x)
+                                    ? GiNaC::ex_to<GiNaC::fderivative>(x).derivatives().size()
+                                    : 0;
+      // The rule of the highest order not above the atom's: F'' from a rule for F'.
+      const Rule* best = nullptr;
+      for (const Rule& r : rules) {
+        if (r.serial == serial && r.order <= order && (best == nullptr || r.order > best->order)) {
+          best = &r;
+        }
+      }
+      if (best == nullptr) {
+        return x;
+      }
+      const ex argument = walk(x.op(0));
+      ex value = best->value;
+      if (order > best->order) {
+        value = value.diff(GiNaC::ex_to<GiNaC::symbol>(best->variable),
+                           static_cast<unsigned>(order - best->order));
+      }
+      return value.subs(best->variable == argument);
+    }
+    if (is_a<GiNaC::integral>(x)) {
+      return integrate(walk(x.op(3)), x.op(0), walk(x.op(1)), walk(x.op(2)));
+    }
+    if (x.nops() == 0) {
+      return x;
+    }
+    return map_parts(x, walk);
+  };
+  return walk(e);
+}
+
+}  // namespace impulse::derivations::file

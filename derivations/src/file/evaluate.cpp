@@ -1,0 +1,1066 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What a tree means: a GiNaC expression (or a vector, or a block) for each kind of node, one
+// method each, with the denominators the expression divides by. The variables of the integrals,
+// derivatives and sums a node stands inside are bound: F(t) inside an integral over t is F of
+// t when F is a declared function, and refused otherwise (F times t, or F of t?).
+#include <algorithm>
+
+#include "file/calculus.hpp"
+#include "file/meaning.hpp"
+#include "file/time.hpp"
+
+namespace impulse::derivations::file {
+
+using GiNaC::ex;
+using GiNaC::numeric;
+
+namespace {
+
+numeric decimal(const std::string& text) {
+  const std::size_t dot = text.find('.');
+  if (dot == std::string::npos) {
+    return numeric(text.c_str());
+  }
+  const std::string digits = text.substr(0, dot) + text.substr(dot + 1);
+  const std::string integer = digits.find_first_not_of('0') == std::string::npos
+                                  ? "0"
+                                  : digits.substr(digits.find_first_not_of('0'));
+  return numeric(integer.c_str()) /
+         GiNaC::pow(numeric(10), numeric(static_cast<long>(text.size() - dot - 1)));
+}
+
+std::string kind_name(const Value& v) {
+  if (v.block()) {
+    return v.cols > 1 ? "a matrix" : "a column";
+  }
+  return v.vector ? "a vector" : "a scalar";
+}
+
+Value negated(Value v) {
+  v.x = -v.x;
+  v.y = -v.y;
+  for (ex& e : v.entries) {
+    e = -e;
+  }
+  return v;
+}
+
+Value scaled_value(const Value& v, const ex& k) {
+  Value r = v;
+  r.x = v.x * k;
+  r.y = v.vector ? v.y * k : ex(0);
+  for (ex& e : r.entries) {
+    e = e * k;
+  }
+  return r;
+}
+
+// Applies f to each scalar of a value (both components of a vector).
+Value each_component(const Value& v, const std::function<ex(const ex&)>& f) {
+  Value r = v;
+  r.x = f(v.x);
+  if (v.vector) {
+    r.y = f(v.y);
+  }
+  for (ex& e : r.entries) {
+    e = f(e);
+  }
+  return r;
+}
+
+bool all_digits(const std::string& text) {
+  return !text.empty() &&
+         std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+bool whole(const ex& e) {
+  return GiNaC::is_a<numeric>(e) && GiNaC::ex_to<numeric>(e).is_integer();
+}
+
+}  // namespace
+
+// d followed by a symbol declared with `differentials:` is that symbol's differential.
+std::vector<std::pair<Node, char>> merged_factors(
+    const Node& product, const std::function<bool(const SymbolName&)>& differential) {
+  std::vector<std::pair<Node, char>> factors;
+  for (std::size_t i = 0; i < product.children.size(); ++i) {
+    const Node& c = product.children[i];
+    const bool d = c.kind == NodeKind::symbol && c.symbol.base == "d" &&
+                   c.symbol.subscript.empty() && c.symbol.primes == 0 && !c.symbol.delta;
+    if (d && i + 1 < product.children.size() && product.ops[i + 1] == ' ' &&
+        product.children[i + 1].kind == NodeKind::symbol &&
+        !product.children[i + 1].symbol.differential &&
+        differential(product.children[i + 1].symbol)) {
+      Node merged = product.children[i + 1];
+      merged.symbol.differential = true;
+      merged.offset = c.offset;
+      factors.emplace_back(std::move(merged), product.ops[i]);
+      ++i;
+      continue;
+    }
+    factors.emplace_back(c, product.ops[i]);
+  }
+  return factors;
+}
+
+std::vector<std::pair<Node, char>> Symbols::expanded_terms(const Node& sum) {
+  std::vector<std::pair<Node, char>> terms;
+  for (std::size_t i = 0; i < sum.children.size(); ++i) {
+    terms.emplace_back(sum.children[i], sum.ops[i]);
+  }
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    if (terms[i].first.kind != NodeKind::dots) {
+      continue;
+    }
+    // A_2 + \cdots + A_M: the terms A_3 … A_{M-1}, M a number or a symbol defined as one.
+    const std::size_t at = terms[i].first.offset;
+    Node& left = terms[i - 1].first;
+    Node& right = terms[i + 1].first;
+    if (left.kind != NodeKind::symbol || right.kind != NodeKind::symbol ||
+        left.symbol.base != right.symbol.base) {
+      throw error(at,
+                  "expected \\cdots between two terms of one name with numbered subscripts "
+                  "(A_2 + \\cdots + A_M)");
+    }
+    const auto number = [&](const std::string& sub) -> std::optional<long> {
+      if (all_digits(sub) && sub.size() < 6) {
+        return std::stol(sub);
+      }
+      if (sub.size() == 1) {
+        const ex v = scalar(SymbolName{sub, "", 0, false}).subs(substitutions_);
+        if (GiNaC::is_a<numeric>(v) && GiNaC::ex_to<numeric>(v).is_integer() &&
+            GiNaC::abs(GiNaC::ex_to<numeric>(v)) < 1000) {
+          return GiNaC::ex_to<numeric>(v).to_long();
+        }
+      }
+      return std::nullopt;
+    };
+    const auto from = number(left.symbol.subscript);
+    const auto to = number(right.symbol.subscript);
+    if (!from || !to || *to <= *from) {
+      throw error(at,
+                  "expected \\cdots between numbered terms (A_2 + \\cdots + A_M, with M "
+                  "a number or defined by let: as one, larger than 2)");
+    }
+    right.symbol.subscript = std::to_string(*to);
+    std::vector<std::pair<Node, char>> between;
+    for (long k = *from + 1; k < *to; ++k) {
+      Node term = left;
+      term.symbol.subscript = std::to_string(k);
+      term.offset = at;
+      between.emplace_back(std::move(term), '+');
+    }
+    terms.erase(terms.begin() + static_cast<std::ptrdiff_t>(i));
+    terms.insert(terms.begin() + static_cast<std::ptrdiff_t>(i), between.begin(), between.end());
+    i += between.size();
+  }
+  return terms;
+}
+
+Value Symbols::block_product(const Value& a, const Value& b, char op, std::size_t offset,
+                             std::vector<ex>& denominators) const {
+  if (op == '/') {
+    if (b.vector || b.block()) {
+      throw error(offset, "expected a number to divide by, found " + kind_name(b));
+    }
+    denominators.push_back(b.x);
+    return scaled_value(a, 1 / b.x);
+  }
+  if (a.vector || b.vector) {
+    throw error(offset, "expected a number or a block with a block, found a vector");
+  }
+  if (!a.block()) {
+    return scaled_value(b, a.x);
+  }
+  if (!b.block()) {
+    return scaled_value(a, b.x);
+  }
+  if (a.cols != b.rows) {
+    throw error(offset, "expected blocks that multiply: " + std::to_string(a.rows) + " by " +
+                            std::to_string(a.cols) + " times " + std::to_string(b.rows) + " by " +
+                            std::to_string(b.cols));
+  }
+  Value r;
+  r.rows = a.rows;
+  r.cols = b.cols;
+  for (std::size_t i = 0; i < a.rows; ++i) {
+    for (std::size_t j = 0; j < b.cols; ++j) {
+      ex sum = 0;
+      for (std::size_t k = 0; k < a.cols; ++k) {
+        sum += a.entries[i * a.cols + k] * b.entries[k * b.cols + j];
+      }
+      r.entries.push_back(sum);
+    }
+  }
+  return r;
+}
+
+class Evaluator {
+ public:
+  explicit Evaluator(Symbols& symbols) : s_(symbols) {}
+
+  Meaning run(const Node& node) {
+    Value value = eval(node);
+    return {std::move(value), std::move(denominators_), std::move(written_)};
+  }
+
+ private:
+  // A variable bound by an enclosing integral, derivative or sum: its name, and what it stands
+  // for inside (the file's symbol, or a value of a sum's index).
+  struct Bound {
+    std::string key;
+    ex value;
+  };
+
+  ReadError error(std::size_t offset, const std::string& message) const {
+    return s_.error(offset, message);
+  }
+
+  Value unblocked(Value v, std::size_t at) const {
+    if (v.block()) {
+      throw error(at, "expected a number or a vector here, found " + kind_name(v));
+    }
+    return v;
+  }
+
+  ex scalar_of(const Node& n) {
+    const Value v = unblocked(eval(n), n.offset);
+    if (v.vector) {
+      throw error(n.offset, "expected a number here, found a vector");
+    }
+    return v.x;
+  }
+
+  // A denominator no one wrote (the cosine under a tangent): shown as computed.
+  void divides_by(const ex& d) {
+    denominators_.push_back(d);
+    written_.emplace_back();
+  }
+
+  void divides_by(const ex& d, const Node& written) {
+    denominators_.push_back(d);
+    written_.push_back(
+        written.end > written.offset
+            ? std::string(s_.source_.text().substr(written.offset, written.end - written.offset))
+            : std::string());
+  }
+
+  const Bound* bound(const SymbolName& name) const {
+    const std::string key = s_.resolve(name).latex();
+    for (auto b = bound_.rbegin(); b != bound_.rend(); ++b) {
+      if (b->key == key) {
+        return &*b;
+      }
+    }
+    return nullptr;
+  }
+
+  struct Binding {
+    Evaluator& evaluator;
+    Binding(Evaluator& e, const SymbolName& name, const ex& value) : evaluator(e) {
+      e.bound_.push_back({e.s_.resolve(name).latex(), value});
+    }
+    ~Binding() { evaluator.bound_.pop_back(); }
+    Binding(const Binding&) = delete;
+    Binding& operator=(const Binding&) = delete;
+  };
+
+  Value eval(const Node& n) {
+    try {
+      return dispatch(n);
+    } catch (const ReadError&) {
+      throw;
+    } catch (const std::exception& e) {
+      // GiNaC refuses 1/0 and the like when it builds the expression.
+      const std::string what = e.what();
+      throw error(n.offset, what.find("division by zero") != std::string::npos
+                                ? "expected an expression that can be evaluated, found a "
+                                  "division by zero"
+                                : "expected an expression that can be evaluated (" + what + ")");
+    }
+  }
+
+  Value dispatch(const Node& n) {
+    switch (n.kind) {
+      case NodeKind::number:
+        return {false, decimal(n.text), 0};
+      case NodeKind::pi:
+        return {false, GiNaC::Pi, 0};
+      case NodeKind::symbol:
+        return symbol(n);
+      case NodeKind::sum:
+        return sum(n);
+      case NodeKind::product:
+        return product(n);
+      case NodeKind::fraction:
+        return fraction(n);
+      case NodeKind::power:
+        return power(n);
+      case NodeKind::function:
+        return function(n);
+      case NodeKind::root:
+        return root(n);
+      case NodeKind::norm:
+      case NodeKind::abs:
+        return size(n);
+      case NodeKind::det:
+        return det(n);
+      case NodeKind::vector:
+        return vector(n);
+      case NodeKind::sum_over:
+      case NodeKind::product_over:
+        return over_index(n);
+      case NodeKind::integral:
+        return integral(n);
+      case NodeKind::bar:
+        return bar(n);
+      case NodeKind::call:
+        return call(n);
+      case NodeKind::derivative:
+        return derivative(n);
+      case NodeKind::factorial:
+        return factorial(n);
+      case NodeKind::dots:
+        throw error(n.offset, "expected \\cdots between two terms of a sum");
+    }
+    throw error(n.offset, "expected an expression");
+  }
+
+  // ---- symbols and functions ----
+
+  Value symbol(const Node& n) {
+    const SymbolName name = s_.resolve(n.symbol);
+    if (const Bound* b = bound(name)) {
+      return {false, b->value, 0};
+    }
+    if (const auto block = s_.blocks_.find(name.unprimed().latex()); block != s_.blocks_.end()) {
+      return s_.block_value(block->second, n.offset, [this](const Node& x) { return eval(x); });
+    }
+    if (const FunctionDeclaration* f = s_.function(name)) {
+      // F alone is F of its variable: F(t).
+      std::vector<ex> arguments;
+      for (const SymbolName& v : f->variables) {
+        const Bound* b = bound(v);
+        arguments.push_back(b != nullptr ? b->value : s_.scalar(v));
+      }
+      return {false, GiNaC::function(f->serial, GiNaC::exvector(arguments)), 0};
+    }
+    if (const auto dotted = dotted_function(name)) {
+      return {false, *dotted, 0};
+    }
+    return s_.symbol_value(n.symbol);
+  }
+
+  // \dot x and \ddot x of a declared function x: its derivatives in t.
+  std::optional<ex> dotted_function(const SymbolName& name) {
+    const bool dot = name.base.starts_with("\\dot{");
+    const bool ddot = name.base.starts_with("\\ddot{");
+    if (!dot && !ddot) {
+      return std::nullopt;
+    }
+    SymbolName under = name;
+    under.base = name.base.substr(dot ? 5 : 6, name.base.size() - (dot ? 6 : 7));
+    const FunctionDeclaration* f = s_.function(under);
+    if (f == nullptr) {
+      return std::nullopt;  // \dot x of a number x is a symbol of its own
+    }
+    if (f->variables.size() != 1 || f->variables[0].latex() != "t") {
+      throw error(0, "expected " + name.base + " of a function of t alone");
+    }
+    const ex t = s_.scalar(f->variables[0]);
+    const ex value = GiNaC::function(f->serial, t);
+    return value.diff(GiNaC::ex_to<GiNaC::symbol>(t), dot ? 1 : 2);
+  }
+
+  // F(t), f(a, b): a declared function's value; m(v_1 - v_2): a product; F(t) with t the
+  // variable of an enclosing integral, derivative or sum, F not declared: refused.
+  Value call(const Node& n) {
+    const Node& name_node = n.children[0];
+    const SymbolName name = s_.resolve(name_node.symbol);
+    const std::size_t count = n.children.size() - 1;
+    if (const FunctionDeclaration* f = s_.function(name)) {
+      if (count != f->variables.size()) {
+        throw error(n.offset, "expected " + std::to_string(f->variables.size()) +
+                                  " argument(s) of " + name.latex() +
+                                  ", as function: declares, "
+                                  "found " +
+                                  std::to_string(count));
+      }
+      GiNaC::exvector arguments;
+      for (std::size_t k = 1; k < n.children.size(); ++k) {
+        arguments.push_back(scalar_of(n.children[k]));
+      }
+      return {false, GiNaC::function(f->serial, arguments), 0};
+    }
+    if (name.primes > 0) {
+      SymbolName plain = name;
+      plain.primes = 0;
+      if (s_.function(plain) != nullptr) {
+        throw error(name_node.offset,
+                    "expected " + plain.latex() + "(…) or its derivative \\frac{d" + plain.latex() +
+                        "}{dt}: " + name.latex() + "(…) could be the derivative of " +
+                        plain.latex() +
+                        " or another function (declare it with function: to mean that)");
+      }
+    }
+    throw error(n.offset, "expected " + name.latex() + " to be a declared function");
+  }
+
+  // ---- sums, products, fractions ----
+
+  Value sum(const Node& n) {
+    Value total;
+    const std::vector<std::pair<Node, char>> terms = s_.expanded_terms(n);
+    for (std::size_t i = 0; i < terms.size(); ++i) {
+      Value term = eval(terms[i].first);
+      if (terms[i].second == '-') {
+        term = negated(std::move(term));
+      }
+      if (i == 0) {
+        total = term;
+      } else if (term.vector != total.vector || term.rows != total.rows ||
+                 term.cols != total.cols) {
+        throw error(terms[i].first.offset, "expected " + kind_name(total) +
+                                               " here, as the terms before it, found " +
+                                               kind_name(term));
+      } else {
+        total.x = total.x + term.x;
+        total.y = total.y + term.y;
+        for (std::size_t k = 0; k < total.entries.size(); ++k) {
+          total.entries[k] += term.entries[k];
+        }
+      }
+    }
+    if (!total.vector) {
+      total.y = 0;
+    }
+    return total;
+  }
+
+  Value product(const Node& n) {
+    const auto factors = merged_factors(n, [&](const SymbolName& name) {
+      return s_.differentials_.contains(s_.resolve(name).unprimed().latex());
+    });
+    Value acc = eval(factors[0].first);
+    for (std::size_t i = 1; i < factors.size(); ++i) {
+      const Value next = eval(factors[i].first);
+      const char op = factors[i].second;
+      const std::size_t at = factors[i].first.offset;
+      if (acc.block() || next.block()) {
+        std::vector<ex> denominators;
+        acc = s_.block_product(acc, next, op, at, denominators);
+        for (const ex& d : denominators) {
+          divides_by(d, factors[i].first);
+        }
+        continue;
+      }
+      if (op == '/') {
+        if (next.vector) {
+          throw error(at, "expected a scalar to divide by, found a vector");
+        }
+        divides_by(next.x, factors[i].first);
+        acc = {acc.vector, acc.x / next.x, acc.vector ? acc.y / next.x : ex(0)};
+      } else if (!acc.vector && !next.vector) {
+        acc = {false, acc.x * next.x, 0};
+      } else if (acc.vector != next.vector) {
+        const Value& scalar = acc.vector ? next : acc;
+        const Value& v = acc.vector ? acc : next;
+        acc = {true, scalar.x * v.x, scalar.x * v.y};
+      } else if (op == '.') {
+        acc = {false, acc.x * next.x + acc.y * next.y, 0};
+      } else if (op == 'x') {
+        acc = {false, acc.x * next.y - acc.y * next.x, 0};
+      } else {
+        throw error(at,
+                    "expected \\cdot (the dot product) or \\det(\\vec a, \\vec b) "
+                    "between two vectors, found them side by side");
+      }
+    }
+    return acc;
+  }
+
+  Value fraction(const Node& n) {
+    const Value top = eval(n.children[0]);
+    const Value bottom = eval(n.children[1]);
+    if (bottom.vector || bottom.block()) {
+      throw error(n.children[1].offset,
+                  "expected a scalar denominator, found " + kind_name(bottom));
+    }
+    divides_by(bottom.x, n.children[1]);
+    return scaled_value(top, 1 / bottom.x);
+  }
+
+  Value power(const Node& n) {
+    const Value base = unblocked(eval(n.children[0]), n.children[0].offset);
+    const Value exponent = unblocked(eval(n.children[1]), n.children[1].offset);
+    if (exponent.vector) {
+      throw error(n.children[1].offset, "expected a scalar exponent, found a vector");
+    }
+    const ex e = exponent.x;
+    if (GiNaC::is_a<numeric>(e)) {
+      const numeric k = GiNaC::ex_to<numeric>(e);
+      if (k.is_integer() && GiNaC::abs(k) > s_.limits_.exponent) {
+        throw error(n.children[1].offset, "expected an exponent of at most " +
+                                              std::to_string(s_.limits_.exponent) +
+                                              " (this checker's limit)");
+      }
+      if (GiNaC::is_a<numeric>(base.x) && k.is_integer()) {
+        const numeric b = GiNaC::ex_to<numeric>(base.x);
+        const long bits = b.numer().int_length() + b.denom().int_length();
+        if (GiNaC::abs(k).to_long() * bits > 40000) {
+          throw error(n.offset,
+                      "expected a number of at most about 12,000 digits "
+                      "(this checker's limit)");
+        }
+      }
+      if (k.is_negative() && !base.vector) {
+        divides_by(base.x, n.children[0]);
+      }
+    }
+    if (base.vector) {
+      if (!(GiNaC::is_a<numeric>(e) && e == 2)) {
+        throw error(n.children[1].offset,
+                    "expected the power 2 of a vector (its dot product with itself)");
+      }
+      return {false, base.x * base.x + base.y * base.y, 0};
+    }
+    return {false, GiNaC::pow(base.x, e), 0};
+  }
+
+  Value function(const Node& n) {
+    const ex a = scalar_of(n.children[0]);
+    const std::string& f = n.text;
+    if (f == "sin") {
+      return {false, GiNaC::sin(a), 0};
+    }
+    if (f == "cos") {
+      return {false, GiNaC::cos(a), 0};
+    }
+    if (f == "tan") {
+      divides_by(GiNaC::cos(a));
+      return {false, GiNaC::tan(a), 0};
+    }
+    if (f == "cot" || f == "csc") {
+      divides_by(GiNaC::sin(a));
+      return {false, f == "cot" ? GiNaC::cos(a) / GiNaC::sin(a) : 1 / GiNaC::sin(a), 0};
+    }
+    if (f == "sec") {
+      divides_by(GiNaC::cos(a));
+      return {false, 1 / GiNaC::cos(a), 0};
+    }
+    if (f == "arcsin" || f == "arccsc") {
+      if (f == "arccsc") {
+        divides_by(a, n.children[0]);
+      }
+      return {false, GiNaC::asin(f == "arcsin" ? a : 1 / a), 0};
+    }
+    if (f == "arccos" || f == "arcsec") {
+      if (f == "arcsec") {
+        divides_by(a, n.children[0]);
+      }
+      return {false, GiNaC::acos(f == "arccos" ? a : 1 / a), 0};
+    }
+    if (f == "arctan") {
+      return {false, GiNaC::atan(a), 0};
+    }
+    if (f == "arccot") {
+      divides_by(a, n.children[0]);
+      return {false, GiNaC::atan(1 / a), 0};
+    }
+    if (f == "sinh") {
+      return {false, GiNaC::sinh(a), 0};
+    }
+    if (f == "cosh") {
+      return {false, GiNaC::cosh(a), 0};
+    }
+    if (f == "tanh") {
+      return {false, GiNaC::tanh(a), 0};
+    }
+    if (f == "exp") {
+      return {false, GiNaC::exp(a), 0};
+    }
+    if (f == "log") {
+      const ex base = scalar_of(n.children[1]);
+      divides_by(GiNaC::log(base));
+      return {false, GiNaC::log(a) / GiNaC::log(base), 0};
+    }
+    return {false, GiNaC::log(a), 0};
+  }
+
+  Value root(const Node& n) {
+    const Value radicand = unblocked(eval(n.children[0]), n.children[0].offset);
+    if (radicand.vector) {
+      throw error(n.children[0].offset, "expected a scalar under the root, found a vector");
+    }
+    if (n.children.size() == 1) {
+      return {false, GiNaC::sqrt(radicand.x), 0};
+    }
+    const Value index = unblocked(eval(n.children[1]), n.children[1].offset);
+    if (index.vector || !GiNaC::is_a<numeric>(index.x) ||
+        !GiNaC::ex_to<numeric>(index.x).is_pos_integer() || index.x == 1 ||
+        GiNaC::ex_to<numeric>(index.x) > 1000) {
+      throw error(n.children[1].offset,
+                  "expected a whole number from 2 to 1000 as the index of the root");
+    }
+    return {false, GiNaC::pow(radicand.x, 1 / index.x), 0};
+  }
+
+  // \|v\| and |x| (|v| of a vector is its length too).
+  Value size(const Node& n) {
+    const Value v = unblocked(eval(n.children[0]), n.children[0].offset);
+    if (n.kind == NodeKind::norm && !v.vector) {
+      throw error(n.offset, "expected a vector inside \\| \\| (for a scalar write |x|)");
+    }
+    if (v.vector) {
+      return {false, GiNaC::sqrt(v.x * v.x + v.y * v.y), 0};
+    }
+    return {false, GiNaC::abs(v.x), 0};
+  }
+
+  Value det(const Node& n) {
+    const Value a = unblocked(eval(n.children[0]), n.children[0].offset);
+    const Value b = unblocked(eval(n.children[1]), n.children[1].offset);
+    if (!a.vector || !b.vector) {
+      throw error(a.vector ? n.children[1].offset : n.children[0].offset,
+                  "expected two vectors in \\det(\\vec a, \\vec b), found a scalar");
+    }
+    return {false, a.x * b.y - a.y * b.x, 0};
+  }
+
+  Value vector(const Node& n) {
+    const Value a = unblocked(eval(n.children[0]), n.children[0].offset);
+    const Value b = unblocked(eval(n.children[1]), n.children[1].offset);
+    if (a.vector || b.vector) {
+      throw error(a.vector ? n.children[0].offset : n.children[1].offset,
+                  "expected scalar components in [x, y], found a vector");
+    }
+    return {true, a.x, b.x};
+  }
+
+  Value factorial(const Node& n) {
+    const ex v = scalar_of(n.children[0]);
+    if (!whole(v) || GiNaC::ex_to<numeric>(v).is_negative() || GiNaC::ex_to<numeric>(v) > 1000) {
+      throw error(n.offset, "expected the factorial of a whole number from 0 to 1000");
+    }
+    return {false, GiNaC::factorial(v), 0};
+  }
+
+  // ---- calculus ----
+
+  // \sum_i over a declared index, or \sum_{i=a}^{b}: written out when a and b are whole
+  // numbers, else kept as a sum over the index (its terms that do not depend on it taken out).
+  Value over_index(const Node& n) {
+    const bool sum = n.kind == NodeKind::sum_over;
+    const std::string word = sum ? "\\sum" : "\\prod";
+    if (n.ops.empty()) {
+      const auto range = s_.indices_.find(n.text);
+      if (range == s_.indices_.end()) {
+        throw error(n.offset, "expected the index " + n.text + " of " + word +
+                                  " to be declared (index: " + n.text +
+                                  " \\in \\{1, 2\\}), or its limits: " + word + "_{" + n.text +
+                                  "=1}^{N}");
+      }
+      return written_out(n, range->second);
+    }
+    const ex lower = scalar_of(n.children[1]);
+    const ex upper = scalar_of(n.children[2]);
+    if (whole(lower) && whole(upper)) {
+      const long from = GiNaC::ex_to<numeric>(lower).to_long();
+      const long to = GiNaC::ex_to<numeric>(upper).to_long();
+      if (to - from > 1000) {
+        throw error(n.offset, "expected at most 1000 terms in " + word + " (this checker's limit)");
+      }
+      std::vector<long> values;
+      for (long k = from; k <= to; ++k) {
+        values.push_back(k);
+      }
+      return written_out(n, values);
+    }
+    const bool letter_plus_number = GiNaC::is_a<GiNaC::add>(upper) && upper.nops() == 2 &&
+                                    GiNaC::is_a<GiNaC::symbol>(upper.op(0)) && whole(upper.op(1));
+    if (!GiNaC::is_a<GiNaC::symbol>(upper) && !whole(upper) && !letter_plus_number) {
+      throw error(n.children[2].offset,
+                  "expected a whole number, a symbol (the number of terms, N) or a symbol plus "
+                  "a whole number (N - 1) as the upper limit of " +
+                      word);
+    }
+    if (!whole(lower) && !GiNaC::is_a<GiNaC::symbol>(lower)) {
+      throw error(n.children[1].offset,
+                  "expected a whole number or a symbol as the lower limit of " + word);
+    }
+    s_.counts_.emplace_back(upper, lower);
+    const SymbolName index_name{n.text, "", 0, false};
+    const ex index = s_.scalar(index_name);
+    Value body;
+    {
+      const Binding binding(*this, index_name, index);
+      body = unblocked(eval(n.children[0]), n.children[0].offset);
+    }
+    const auto depends = [&](const ex& e) {
+      for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+        if (GiNaC::is_a<GiNaC::symbol>(*i) && (i->is_equal(index) || s_.indexed_by(*i, index))) {
+          return true;
+        }
+      }
+      return false;
+    };
+    return each_component(body, [&](const ex& b) {
+      return sum ? sum_over(b, index, lower, upper, depends)
+                 : file::product_over(b, index, lower, upper, depends);
+    });
+  }
+
+  Value written_out(const Node& n, const std::vector<long>& values) {
+    const bool sum = n.kind == NodeKind::sum_over;
+    const SymbolName index_name{n.text, "", 0, false};
+    Value total;
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      Value term;
+      {
+        const Binding binding(*this, index_name, values[k]);
+        term = eval(with_index(n.children[0], n.text, values[k]));
+      }
+      if (k == 0) {
+        total = term;
+        continue;
+      }
+      if (term.vector != total.vector || term.rows != total.rows) {
+        throw error(n.offset, "expected the terms of the sum to be of one kind");
+      }
+      if (!sum) {
+        if (term.vector || term.block()) {
+          throw error(n.offset, "expected numbers as the factors of \\prod");
+        }
+        total.x *= term.x;
+        continue;
+      }
+      total.x += term.x;
+      total.y += term.y;
+      for (std::size_t e = 0; e < total.entries.size(); ++e) {
+        total.entries[e] += term.entries[e];
+      }
+    }
+    if (values.empty()) {
+      total = {false, sum ? ex(0) : ex(1), 0};
+    }
+    return total;
+  }
+
+  // \frac{dF}{dt}, \frac{d}{dt}(…): the derivative of what it holds in the variable; of a
+  // symbol declared with `differentials:` (the paper's rates), the quotient of differentials.
+  Value derivative(const Node& n) {
+    const Node& operand = n.children[0];
+    const SymbolName variable_name = n.symbol;
+    const auto order = static_cast<unsigned>(std::stoul(n.text));
+    if (operand.kind == NodeKind::symbol && order == 1 &&
+        s_.differentials_.contains(s_.resolve(operand.symbol).unprimed().latex())) {
+      SymbolName d = s_.resolve(operand.symbol);
+      d.differential = true;
+      const SymbolName dt{"dt", "", variable_name.primes, false};
+      if (variable_name.base != "t" || !variable_name.subscript.empty()) {
+        throw error(n.offset,
+                    "expected a rate in t of the differential d" + operand.symbol.latex());
+      }
+      const Value top = s_.symbol_value(d);
+      const ex bottom = s_.symbol_value(dt).x;
+      divides_by(bottom, n);
+      return scaled_value(top, 1 / bottom);
+    }
+    const ex variable = s_.scalar(variable_name);
+    Value value;
+    {
+      const Binding binding(*this, variable_name, variable);
+      value = unblocked(eval(operand), operand.offset);
+    }
+    const auto& x = GiNaC::ex_to<GiNaC::symbol>(variable);
+    bool varies = false;
+    const auto differentiate = [&](const ex& e) {
+      const ex defined = e.subs(s_.substitutions_);
+      varies = varies || defined.has(variable) || has_atoms(defined);
+      return defined.diff(x, order);
+    };
+    Value result = each_component(value, differentiate);
+    const bool constant = GiNaC::is_a<numeric>(value.x) && !value.vector && !value.block();
+    if (!varies && !constant) {
+      throw error(
+          n.offset,
+          "expected a function of " + variable_name.latex() + " under d/d" + variable_name.latex() +
+              ": nothing in " +
+              std::string(s_.source_.text().substr(operand.offset, operand.end - operand.offset)) +
+              " is declared a function (function: …) or holds " + variable_name.latex() +
+              ", so its derivative would be 0; declare the function, e.g. function: " +
+              (operand.kind == NodeKind::symbol ? operand.symbol.latex() : std::string("x")));
+    }
+    return result;
+  }
+
+  // \int_a^b f du: the integral in the variable of its differential (the paper's time integrals:
+  // the forces declared with forces: shaped by the contact's pulse).
+  Value integral(const Node& n) {
+    const bool differential = n.ops.find('d') != std::string::npos;
+    if (!differential) {
+      return {false, one_form_integral(n), 0};
+    }
+    const SymbolName variable_name = n.symbol;
+    const ex variable = s_.scalar(variable_name);
+    const bool lower_written = n.ops.find('l') != std::string::npos;
+    const bool upper_written = n.ops.find('u') != std::string::npos;
+    const bool time = variable_name.base == "t" && variable_name.subscript.empty();
+    if (!lower_written || (!upper_written && !time)) {
+      throw error(n.offset,
+                  "expected the limits of the integral, \\int_a^b (an integral without limits "
+                  "holds an unknown constant: it is not one side of an equation)");
+    }
+    s_.integration_variable_ = variable_name;
+    Value integrand;
+    {
+      const Binding binding(*this, variable_name, variable);
+      integrand = unblocked(eval(n.children[0]), n.children[0].offset);
+    }
+    ex lower = scalar_of(n.children[1]).subs(s_.substitutions_);
+    ex upper = 0;
+    if (upper_written) {
+      upper = scalar_of(n.children[2]).subs(s_.substitutions_);
+    } else {
+      upper = lower;  // \int_{dt}: over the contact, from 0 to dt
+      lower = 0;
+    }
+    // Inside the contact a force is its mean times the pulse's shape.
+    GiNaC::exmap shaped;
+    if (time) {
+      for (const ex& f : s_.forces_) {
+        shaped[f] = f * contact_pulse(variable / pulse_duration());
+      }
+    }
+    return each_component(integrand, [&](const ex& f) {
+      const ex form = shaped_outside_integrals(f.subs(s_.substitutions_), shaped);
+      return GiNaC::integral(variable, lower, upper, form);
+    });
+  }
+
+  // An integrand that holds its differential dt (the paper's 1-forms).
+  ex one_form_integral(const Node& n) {
+    const Value integrand = eval(n.children[0]);
+    if (integrand.vector || integrand.block()) {
+      throw error(n.offset, "expected a number to integrate, found " + kind_name(integrand));
+    }
+    ex form = integrand.x.subs(s_.substitutions_);
+    // The differential: dt, or dt', dt'' for a variable t', t''.
+    std::optional<std::pair<ex, int>> differential;
+    for (const auto& [key, symbol] : s_.symbols_) {
+      const SymbolInfo& info = s_.infos_.at(symbol);
+      if (info.name.base == "dt" && info.name.subscript.empty() && !info.name.delta &&
+          !info.name.differential && form.has(symbol)) {
+        if (differential) {
+          throw error(n.offset,
+                      "expected one differential in the integrand (dt or dt'), found two");
+        }
+        differential = std::pair{symbol, info.name.primes};
+      }
+    }
+    if (!differential && n.ops.find('p') != std::string::npos) {
+      throw error(n.offset,
+                  "expected the element of the path (\\mathrm{d}S) defined through dt by a let: "
+                  "before an integral along a path");
+    }
+    if (!differential) {
+      throw error(n.offset,
+                  "expected the integrand to end in its differential (dt, \\mathrm{d}x, d u)");
+    }
+    const ex delta = differential->first;
+    const ex variable = s_.scalar(SymbolName{"t", "", differential->second, false});
+    GiNaC::exmap shaped;
+    for (const ex& f : s_.forces_) {
+      shaped[f] = f * contact_pulse(variable / pulse_duration());
+    }
+    form = shaped_outside_integrals(form, shaped);  // a nested integral shapes its own
+    const ex coefficient = form.diff(GiNaC::ex_to<GiNaC::symbol>(delta));
+    if (coefficient.has(delta) || !GiNaC::normal(form - coefficient * delta).is_zero()) {
+      throw error(n.offset, "expected an integrand linear in its differential (… dt)");
+    }
+    const bool lower_written = n.ops.find('l') != std::string::npos;
+    const bool upper_written = n.ops.find('u') != std::string::npos;
+    if (n.ops.find('p') != std::string::npos) {
+      // Along the path the point travels during the contact, \int_{\mathcal{A}} … dS_v: its
+      // element, once the definitions are in, holds dt; the path is travelled from 0 to dt.
+      return GiNaC::integral(variable, 0, s_.scalar(SymbolName{"dt", "", 0, false}), coefficient);
+    }
+    if (!lower_written) {
+      throw error(n.offset,
+                  "expected the limits of the integral: \\int_0^{dt} or \\int_{dt} (over the "
+                  "contact)");
+    }
+    ex lower = eval(n.children[1]).x.subs(s_.substitutions_);
+    ex upper = 0;
+    if (upper_written) {
+      upper = eval(n.children[2]).x.subs(s_.substitutions_);
+    } else {
+      upper = lower;
+      lower = 0;
+    }
+    return GiNaC::integral(variable, lower, upper, coefficient);
+  }
+
+  // X\Big|_a^b: X at b minus X at a, in the bar's variable: the one it names (|_{x = a}^{b}),
+  // else t where X holds t, else the variable of the integral read last where X holds it.
+  Value bar(const Node& n) {
+    const Value base = eval(n.children[0]);
+    if (base.vector || base.block()) {
+      throw error(n.offset, "expected a number before the bar |");
+    }
+    const bool has_upper = n.ops.find('u') != std::string::npos;
+    const bool has_variable = n.ops.find('v') != std::string::npos;
+    const ex inner = base.x.subs(s_.substitutions_);
+    ex variable = s_.symbol_value(SymbolName{"t", "", 0, false}).x;
+    if (has_variable) {
+      variable = s_.symbol_value(n.children.back().symbol).x;
+    } else if (!inner.has(variable) && s_.integration_variable_ &&
+               inner.has(s_.scalar(*s_.integration_variable_))) {
+      variable = s_.scalar(*s_.integration_variable_);
+    }
+    const ex lower = scalar_of(n.children[1]);
+    if (has_upper && !inner.has(variable) && !has_atoms(inner)) {
+      throw error(n.offset,
+                  "expected the bar's variable in what stands before it: " +
+                      std::string(has_variable ? "the variable it names"
+                                               : "t (or the variable of the integral before)") +
+                      " does not appear, so the difference would be 0 (name the variable: "
+                      "\\Big|_{x = a}^{b})");
+    }
+    if (!has_upper) {
+      return {false, inner.subs(variable == lower), 0};
+    }
+    const ex upper = scalar_of(n.children[2]);
+    return {false, inner.subs(variable == upper) - inner.subs(variable == lower), 0};
+  }
+
+  Symbols& s_;
+  std::vector<Bound> bound_;
+  std::vector<ex> denominators_;
+  std::vector<std::string> written_;
+};
+
+// Names before parentheses, F(t) and m(v_1 - v_2), resolved once the declarations are known:
+// a declared function's value stays a call; anything else is a product, and a power after the
+// parentheses belongs to them (m(v_1 - v_2)^2 is m times the square). Refused: a list in the
+// parentheses after a name that is no function, and a name before the variable of an enclosing
+// integral, derivative or sum (F(t): F times t, or F of t?).
+class CallResolver {
+ public:
+  explicit CallResolver(const Symbols& symbols) : s_(symbols) {}
+
+  Node run(const Node& n) {
+    switch (n.kind) {
+      case NodeKind::integral:
+        return bound_inside(n, n.ops.find('d') != std::string::npos ? n.symbol.latex() : "t");
+      case NodeKind::derivative:
+        return bound_inside(n, n.symbol.latex());
+      case NodeKind::sum_over:
+      case NodeKind::product_over:
+        return bound_inside(n, n.text);
+      case NodeKind::call:
+        return call(n, nullptr);
+      case NodeKind::power:
+        if (n.children[0].kind == NodeKind::call) {
+          return call(n.children[0], &n);
+        }
+        break;
+      default:
+        break;
+    }
+    Node copy = n;
+    for (Node& child : copy.children) {
+      child = run(child);
+    }
+    return copy;
+  }
+
+ private:
+  // The node with its variable bound in its first child (the integrand, the operand, the body).
+  Node bound_inside(const Node& n, const std::string& variable) {
+    Node copy = n;
+    for (std::size_t k = 0; k < copy.children.size(); ++k) {
+      if (k == 0) {
+        bound_.push_back(variable);
+      }
+      copy.children[k] = run(copy.children[k]);
+      if (k == 0) {
+        bound_.pop_back();
+      }
+    }
+    return copy;
+  }
+
+  bool is_bound(const SymbolName& name) const {
+    const std::string key = s_.resolve(name).latex();
+    return std::find(bound_.begin(), bound_.end(), key) != bound_.end();
+  }
+
+  Node call(const Node& n, const Node* power) {
+    const SymbolName name = s_.resolve(n.children[0].symbol);
+    Node copy = n;
+    for (std::size_t k = 1; k < copy.children.size(); ++k) {
+      copy.children[k] = run(copy.children[k]);
+    }
+    if (s_.function(name) != nullptr) {
+      if (power == nullptr) {
+        return copy;
+      }
+      Node p = *power;
+      p.children[0] = std::move(copy);
+      p.children[1] = run(p.children[1]);
+      return p;
+    }
+    if (name.primes > 0) {
+      SymbolName plain = name;
+      plain.primes = 0;
+      if (s_.function(plain) != nullptr) {
+        throw s_.error(n.offset, "expected " + plain.latex() + "(…) or its derivative \\frac{d" +
+                                     plain.latex() + "}{dt}: " + name.latex() +
+                                     "(…) could be the derivative of " + plain.latex() +
+                                     " or another function (declare it with function: to mean "
+                                     "that)");
+      }
+    }
+    if (n.children.size() > 2) {
+      throw s_.error(n.offset, "expected one factor in the parentheses after " + name.latex() +
+                                   ": a list (a, b) is the arguments of a function (declare it "
+                                   "with function: " +
+                                   name.latex() + "), and for a vector write [a, b]");
+    }
+    const Node& argument = n.children[1];
+    if (argument.kind == NodeKind::symbol && is_bound(argument.symbol)) {
+      throw s_.error(n.offset, name.latex() + "(" + argument.symbol.latex() + "): " + name.latex() +
+                                   " times " + argument.symbol.latex() + ", or " + name.latex() +
+                                   " as a function of " + argument.symbol.latex() +
+                                   "? Declare it with function: " + name.latex() +
+                                   " for the function, or write " + name.latex() + " \\cdot " +
+                                   argument.symbol.latex() + " for the product");
+    }
+    // A product: the name times the parentheses (to the power, if one follows them).
+    Node product = copy;
+    product.kind = NodeKind::product;
+    product.ops = "  ";
+    if (power != nullptr) {
+      Node p = *power;
+      p.children[0] = std::move(product.children[1]);
+      p.children[1] = run(p.children[1]);
+      p.offset = p.children[0].offset;
+      product.children[1] = std::move(p);
+    }
+    return product;
+  }
+
+  const Symbols& s_;
+  std::vector<std::string> bound_;
+};
+
+Node Symbols::resolved(const Node& node) const {
+  return CallResolver(*this).run(node);
+}
+
+Meaning Symbols::meaning(const Node& node) {
+  return Evaluator(*this).run(resolved(node));
+}
+
+}  // namespace impulse::derivations::file

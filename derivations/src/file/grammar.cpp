@@ -1,0 +1,415 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The grammar's entry points, its access to tokens, and the productions of sums, products,
+// factors, powers and evaluation bars.
+#include "file/grammar.hpp"
+
+#include <algorithm>
+
+namespace impulse::derivations::file {
+
+// whole := expression end
+Node Grammar::whole_expression() {
+  skip_spacing();
+  if (peek().kind == Tok::end) {
+    throw error(peek(), "expected an expression");
+  }
+  Node node = expression(0);
+  if (peek().kind != Tok::end) {
+    throw error(peek(),
+                "expected an operator or the end of the expression, found " + describe(peek()));
+  }
+  return node;
+}
+
+// whole-symbol := symbol end
+SymbolName Grammar::whole_symbol() {
+  skip_spacing();
+  const Token& first = peek();
+  if (!starts_symbol(first) && !is_command(first, "\\Delta")) {
+    throw error(first, "expected a symbol (a letter with an optional subscript and primes)");
+  }
+  Node node = symbol_atom(0);
+  if (node.kind != NodeKind::symbol) {
+    throw error(first, "expected a symbol (a letter with an optional subscript and primes)");
+  }
+  skip_spacing();
+  if (peek().kind != Tok::end) {
+    throw error(peek(), "expected one symbol, found more after it: " + describe(peek()));
+  }
+  return node.symbol;
+}
+
+// ---- token access ------------------------------------------------------------------------------
+
+const Token& Grammar::peek() {
+  skip_spacing();
+  return tokens_[position_];
+}
+
+const Token& Grammar::ahead(std::size_t k) const {
+  const std::size_t at = std::min(position_ + k, tokens_.size() - 1);
+  return tokens_[at];
+}
+
+Token Grammar::take() {
+  skip_spacing();
+  Token t = tokens_[position_];
+  if (t.kind != Tok::end) {
+    ++position_;
+  }
+  last_end_ = t.end;
+  return t;
+}
+
+void Grammar::skip_spacing() {
+  while (tokens_[position_].kind == Tok::spacing) {
+    ++position_;
+  }
+}
+
+void Grammar::expect_char(char c, const Token& opener, const std::string& what) {
+  if (!is_char(peek(), c)) {
+    throw error(peek(), "expected '" + std::string(1, c) + "' to close the " + what +
+                            " opened at " + where(opener) + ", found " + describe(peek()));
+  }
+  take();
+}
+
+std::string Grammar::where(const Token& t) const {
+  const Place p = source_.place(t.offset);
+  return "line " + std::to_string(p.line) + ", column " + std::to_string(p.column);
+}
+
+void Grammar::enter(std::size_t depth, const Token& at) const {
+  if (depth > limits_.nesting) {
+    throw error(at, "expected at most " + std::to_string(limits_.nesting) +
+                        " levels of nesting (this checker's limit)");
+  }
+}
+
+Node Grammar::make(NodeKind kind, std::size_t offset) const {
+  Node n;
+  n.kind = kind;
+  n.offset = offset;
+  n.end = last_end_;
+  return n;
+}
+
+// ---- sums --------------------------------------------------------------------------------------
+
+// expression := ['+' | '-'] sum-term { ('+' | '-' | '\oplus') sum-term }
+Node Grammar::expression(std::size_t depth) {
+  enter(depth, peek());
+  // A group inside a function's bare argument is read whole: \sin x (a \cos b).
+  const int outer_bare = bare_argument_;
+  bare_argument_ = 0;
+  struct Restore {
+    int& value;
+    int saved;
+    ~Restore() { value = saved; }
+  } restore{bare_argument_, outer_bare};
+  const std::size_t start = peek().offset;
+  Node sum = make(NodeKind::sum, start);
+  char sign = '+';
+  if (is_char(peek(), '+') || is_char(peek(), '-')) {
+    sign = take().text[0];
+  }
+  sum.children.push_back(sum_term(depth + 1));
+  sum.ops += sign;
+  while (is_char(peek(), '+') || is_char(peek(), '-') || is_command(peek(), "\\oplus")) {
+    const Token op = take();
+    sign = op.kind == Tok::character ? op.text[0] : '+';  // the paper's ⊕ adds padded blocks
+    sum.children.push_back(sum_term(depth + 1));
+    sum.ops += sign;
+  }
+  for (std::size_t i = 0; i < sum.children.size(); ++i) {
+    if (sum.children[i].kind == NodeKind::dots &&
+        (i == 0 || i + 1 == sum.children.size() || sum.ops[i] != '+')) {
+      throw error_at(sum.children[i].offset,
+                     "expected \\cdots between two terms added to each other (A_1 + \\cdots + "
+                     "A_M)");
+    }
+  }
+  if (sum.children.size() == 1 && sum.ops[0] == '+') {
+    return std::move(sum.children[0]);
+  }
+  sum.end = last_end_;
+  return sum;
+}
+
+// sum-term := '\cdots' | term
+Node Grammar::sum_term(std::size_t depth) {
+  const Token& t = peek();
+  if (is_command(t, "\\cdots") || is_command(t, "\\dots") || is_command(t, "\\ldots") ||
+      is_command(t, "\\dotsb")) {
+    const Token dots = take();
+    return make(NodeKind::dots, dots.offset);
+  }
+  return term(depth);
+}
+
+// ---- products ----------------------------------------------------------------------------------
+
+bool Grammar::big_operator(const Token& t) {
+  return is_command(t, "\\sum") || is_command(t, "\\int") || is_command(t, "\\prod");
+}
+
+bool Grammar::explicit_product(const Token& t) const {
+  return is_command(t, "\\cdot") || is_command(t, "\\times") || is_char(t, '*') ||
+         is_char(t, '/') || is_command(t, "\\div") || is_command(t, "\\ast");
+}
+
+// term := big | factor { [product-op] factor } [big]
+// product-op := '\cdot' | '\times' | '*' | '/' | '\div' | '\ast'
+// (factors side by side multiply; a big operator takes the rest of the term; inside a
+// function's argument written without parentheses, the term stops before the next function)
+Node Grammar::term(std::size_t depth) {
+  enter(depth, peek());
+  const std::size_t start = peek().offset;
+  Node product = make(NodeKind::product, start);
+  if (big_operator(peek())) {
+    return big(depth + 1);
+  }
+  product.children.push_back(factor(depth + 1));
+  product.ops += ' ';
+  while (true) {
+    const Token& next = peek();
+    if (bare_argument_ > 0 && in(next, commands::functions)) {
+      break;  // \sin a \cos b: the argument of \sin ends before \cos
+    }
+    if (bare_argument_ > 0 && integrand_ > 0 && differential_ahead()) {
+      break;  // \int \sin \omega t \, dt: the argument ends before the differential
+    }
+    if (big_operator(next)) {
+      if (bare_argument_ > 0) {
+        break;
+      }
+      product.children.push_back(big(depth + 1));
+      product.ops += ' ';
+      break;  // a sum or an integral takes the rest of the term
+    }
+    if (explicit_product(next)) {
+      const Token op = take();
+      const char code = is_command(op, "\\cdot")                        ? '.'
+                        : is_command(op, "\\times")                     ? 'x'
+                        : (is_char(op, '/') || is_command(op, "\\div")) ? '/'
+                                                                        : '*';
+      if (peek().kind == Tok::end || is_char(peek(), '=')) {
+        throw error(peek(), "expected a factor after " + describe(op));
+      }
+      if (big_operator(peek())) {
+        product.children.push_back(big(depth + 1));
+        product.ops += code;
+        break;
+      }
+      product.children.push_back(factor(depth + 1));
+      product.ops += code;
+    } else if (starts_atom(next)) {
+      if (next.kind == Tok::number && !product.children.empty() &&
+          product.children.back().kind == NodeKind::number) {
+        throw error(next, "expected an operator between two numbers (write \\cdot or \\times)");
+      }
+      product.children.push_back(factor(depth + 1));
+      product.ops += ' ';
+    } else {
+      break;
+    }
+  }
+  if (product.children.size() == 1) {
+    return std::move(product.children[0]);
+  }
+  product.end = last_end_;
+  return product;
+}
+
+// factor := ('+' | '-') factor | atom postfix
+Node Grammar::factor(std::size_t depth) {
+  enter(depth, peek());
+  if (is_char(peek(), '-') || is_char(peek(), '+')) {
+    const Token sign = take();
+    Node inner = factor(depth + 1);
+    if (sign.text[0] == '+') {
+      return inner;
+    }
+    Node negated = make(NodeKind::sum, sign.offset);
+    negated.children.push_back(std::move(inner));
+    negated.ops.push_back('-');
+    negated.end = last_end_;
+    return negated;
+  }
+  return postfix(depth, atom(depth + 1));
+}
+
+// postfix := ['^' script ['_' subscript]] ['!'] { bar }
+// (v^2_1 is (v_1)^2: a subscript after the power belongs to the symbol under it)
+Node Grammar::postfix(std::size_t depth, Node base) {
+  if (is_char(peek_raw(), '^')) {
+    const Token caret = take();
+    Node exponent = script(depth + 1, caret);
+    if (is_char(peek_raw(), '_') && base.kind == NodeKind::symbol &&
+        base.symbol.subscript.empty()) {
+      take();
+      base.symbol.subscript = subscript(depth + 1);
+      base.end = last_end_;
+    }
+    Node power = make(NodeKind::power, base.offset);
+    power.children.push_back(std::move(base));
+    power.children.push_back(std::move(exponent));
+    power.end = last_end_;
+    if (is_char(peek_raw(), '^')) {
+      throw error(peek_raw(), "expected one exponent, found a second '^' (write {x^a}^b)");
+    }
+    if (is_char(peek_raw(), '\'')) {
+      throw error(peek_raw(), "expected primes on a symbol before its exponent (p'^2)");
+    }
+    base = std::move(power);
+  }
+  if (is_char(peek_raw(), '!')) {
+    const Token bang = take();
+    if (base.kind != NodeKind::number) {
+      throw error(bang,
+                  "expected the factorial of a whole number written as digits (5!); the "
+                  "factorial of anything else is not read by this checker");
+    }
+    Node f = make(NodeKind::factorial, base.offset);
+    f.children.push_back(std::move(base));
+    f.end = last_end_;
+    base = std::move(f);
+  }
+  while (bar_ahead()) {
+    base = bar(depth, std::move(base));
+  }
+  return base;
+}
+
+// ---- evaluation bars ---------------------------------------------------------------------------
+
+bool Grammar::bar_ahead() {
+  skip_spacing();
+  std::size_t i = position_;
+  if (in(tokens_[i], commands::sizes)) {
+    ++i;
+  } else if (abs_depth_ != 0) {
+    return false;
+  }
+  return is_char(tokens_[i], '|') && is_char(tokens_[i + 1], '_');
+}
+
+// bar := [size] '|' '_' (script | '{' [symbol '='] expression '}') ['^' script]
+Node Grammar::bar(std::size_t depth, Node base) {
+  if (peek_raw().kind == Tok::command) {
+    take();  // \Big
+  }
+  take();  // |
+  const Token underscore = take();
+  Node n = make(NodeKind::bar, base.offset);
+  n.children.push_back(std::move(base));
+  std::optional<Node> variable;
+  if (is_char(peek(), '{')) {
+    const Token open = take();
+    Node first = expression(depth + 1);
+    if (is_char(peek(), '=')) {
+      take();
+      if (first.kind != NodeKind::symbol) {
+        throw error_at(first.offset, "expected a symbol before '=' in the bar's subscript");
+      }
+      variable = std::move(first);
+      first = expression(depth + 1);
+    }
+    expect_char('}', open, "bar's subscript");
+    n.children.push_back(std::move(first));
+  } else {
+    n.children.push_back(script(depth + 1, underscore));
+  }
+  if (is_char(peek(), '^')) {
+    const Token caret = take();
+    n.children.push_back(script(depth + 1, caret));
+    n.ops += 'u';
+  }
+  if (variable) {
+    n.children.push_back(std::move(*variable));
+    n.ops += 'v';
+  }
+  n.end = last_end_;
+  return n;
+}
+
+// script := '{' expression '}' | digit | symbol
+Node Grammar::script(std::size_t depth, const Token& caret) {
+  return argument(depth, caret,
+                  is_char(caret, '_') ? "a limit after '_'" : "an exponent after '^'");
+}
+
+// LaTeX takes one character from a number after ^ or _ : x^23 is x^2 times 3.
+Node Grammar::single_digit(const Token& t) {
+  Token& token = tokens_[position_];
+  Node n = make(NodeKind::number, t.offset);
+  n.text = token.text.substr(0, 1);
+  n.end = t.offset + 1;
+  if (token.text.size() == 1) {
+    take();
+  } else {
+    token.text = token.text.substr(1);
+    token.offset += 1;
+    token.space_before = false;
+    if (token.text[0] == '.') {
+      throw error(token, "expected a digit after the exponent's digit, found '.'");
+    }
+  }
+  last_end_ = n.end;
+  return n;
+}
+
+bool Grammar::starts_atom(const Token& t) const {
+  switch (t.kind) {
+    case Tok::number:
+    case Tok::letter:
+      return true;
+    case Tok::character:
+      return is_char(t, '(') || is_char(t, '[') || is_char(t, '{') ||
+             (is_char(t, '|') && abs_depth_ == 0);
+    case Tok::command:
+      if (in(t, commands::sizes)) {
+        // \bigl( opens a group; \bigr) and, inside a sized group, \big) close one
+        const auto at = static_cast<std::size_t>(&t - tokens_.data());
+        const Token& next = tokens_[std::min(at + 1, tokens_.size() - 1)];
+        const bool closing = t.text.ends_with("r") || is_char(next, ')') || is_char(next, ']') ||
+                             is_command(next, "\\}") || is_command(next, "\\rvert") ||
+                             is_command(next, "\\rVert") ||
+                             ((is_char(next, '|') || is_command(next, "\\|")) && sized_depth_ > 0);
+        return !closing;
+      }
+      return commands::greek.contains(t.text) || commands::functions.contains(t.text) ||
+             commands::fractions.contains(t.text) || commands::accents.contains(t.text) ||
+             commands::modifiers.contains(t.text) || commands::names.contains(t.text) ||
+             t.text == "\\Delta" || t.text == "\\pi" || t.text == "\\sqrt" || t.text == "\\det" ||
+             t.text == "\\left" || t.text == "\\lVert" || t.text == "\\lvert" || t.text == "\\{" ||
+             ((t.text == "\\|" || t.text == "\\Vert") && norm_depth_ == 0) ||
+             (t.text == "\\vert" && abs_depth_ == 0);
+    default:
+      return false;
+  }
+}
+
+// Whether the next tokens are a differential: dt, d x, \mathrm{d}x (inside an integrand).
+bool Grammar::differential_ahead() const {
+  std::size_t i = position_;
+  while (tokens_[i].kind == Tok::spacing) {
+    ++i;
+  }
+  const Token& t = tokens_[i];
+  if (t.kind == Tok::letter && t.text == "d") {
+    std::size_t k = i + 1;
+    while (tokens_[k].kind == Tok::spacing) {
+      ++k;
+    }
+    return tokens_[k].kind == Tok::letter ||
+           (tokens_[k].kind == Tok::command && commands::greek.contains(tokens_[k].text));
+  }
+  return (is_command(t, "\\mathrm") || is_command(t, "\\text") ||
+          is_command(t, "\\operatorname")) &&
+         is_char(tokens_[i + 1], '{') && tokens_[i + 2].kind == Tok::letter &&
+         tokens_[i + 2].text == "d" && is_char(tokens_[i + 3], '}');
+}
+
+}  // namespace impulse::derivations::file

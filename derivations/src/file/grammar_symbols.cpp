@@ -1,0 +1,272 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The grammar of symbols: a letter, a Greek letter, \Delta X, an accent or a modifier over a
+// letter, a name in \mathrm{…}, then a subscript and primes in either order.
+#include "file/grammar.hpp"
+
+namespace impulse::derivations::file {
+
+// symbol := letter-part {'_' subscript | "'" | '^' primes}
+// letter-part := letter | greek | '\Delta' (symbol | '{' symbol '}') | accent argument
+//              | modifier argument | name-command '{' name '}'
+// (the letters d and t side by side are one symbol, dt)
+Node Grammar::symbol_atom(std::size_t depth) {
+  enter(depth, peek());
+  const Token first = peek();
+  SymbolName name;
+  if (is_command(first, "\\Delta")) {
+    return delta_symbol(depth);
+  }
+  if (first.kind == Tok::letter) {
+    take();
+    name.base = first.text;
+    // The letters dt, together, are one symbol (the collision's duration).
+    if (first.text == "d" && peek_raw().kind == Tok::letter && peek_raw().text == "t" &&
+        !peek_raw().space_before) {
+      take();
+      name.base = "dt";
+    }
+  } else if (first.kind == Tok::command && commands::greek.contains(first.text)) {
+    take();
+    name.base = first.text;
+  } else if (commands::accents.contains(first.text)) {
+    take();
+    Node inner = argument(depth + 1, first);  // \vec{p}, \vec p, \vec{F dt}
+    if (inner.kind == NodeKind::symbol) {
+      inner.offset = first.offset;
+      inner.symbol.accent = true;
+      return decorate(depth, std::move(inner));
+    }
+    // An accent over an expression is a group; over a product (\vec{F dt}) its first symbol
+    // carries the accent, which an `arrow:` letter needs (the paper's \vec{Fdt}).
+    if (inner.kind == NodeKind::product && inner.children[0].kind == NodeKind::symbol) {
+      inner.children[0].symbol.accent = true;
+    }
+    return inner;
+  } else if (commands::modifiers.contains(first.text)) {
+    if (first.text == "\\overline") {
+      throw error(first,
+                  "expected \\bar x for a symbol of its own: \\overline could be a mean "
+                  "or a complex conjugate (or a line over several symbols)");
+    }
+    take();
+    Node inner = argument(depth + 1, first);
+    if (inner.kind != NodeKind::symbol || !inner.symbol.subscript.empty() ||
+        inner.symbol.primes != 0 || inner.symbol.delta) {
+      throw error(first, "expected a single letter under " + first.text);
+    }
+    name.base = first.text + "{" + inner.symbol.base + "}";
+  } else if (commands::names.contains(first.text)) {
+    take();
+    name.base = name_group(first);
+    if (name.base == "d" && peek_raw().kind == Tok::letter && peek_raw().text == "t") {
+      take();
+      name.base = "dt";
+    }
+  } else {
+    throw error(first, "expected a symbol, found " + describe(first));
+  }
+  Node n = make(NodeKind::symbol, first.offset);
+  n.symbol = name;
+  return decorate(depth, std::move(n));
+}
+
+// '\Delta' (symbol | '{' symbol '}'): one symbol, the change of the symbol. \Delta alone is the
+// letter; \Delta before anything else (\Delta(m v)) is refused: the change of what?
+Node Grammar::delta_symbol(std::size_t depth) {
+  const Token first = take();
+  std::optional<Node> inner;
+  if (starts_symbol(peek())) {
+    inner = symbol_atom(depth + 1);
+  } else if (is_char(peek(), '{')) {
+    const Token open = take();
+    if (!starts_symbol(peek())) {
+      throw error(peek(),
+                  "expected a symbol inside \\Delta{…} (\\Delta{p}), found " + describe(peek()));
+    }
+    inner = symbol_atom(depth + 1);
+    expect_char('}', open, "\\Delta{…}");
+  } else if (is_char(peek(), '(') || is_command(peek(), "\\left") ||
+             (in(peek(), commands::sizes) && starts_atom(peek()))) {
+    throw error(peek(),
+                "expected a symbol after \\Delta: \\Delta(…) could be the change of "
+                "what the parentheses hold or \\Delta times it; write the change as a "
+                "difference (m v' - m v), or name it (\\Delta p with let: or a step)");
+  }
+  if (!inner) {
+    Node n = make(NodeKind::symbol, first.offset);
+    n.symbol.base = "\\Delta";
+    return decorate(depth, std::move(n));
+  }
+  if (inner->kind != NodeKind::symbol || inner->symbol.delta) {
+    throw error(first, "expected a symbol after \\Delta");
+  }
+  inner->symbol.delta = true;
+  inner->offset = first.offset;
+  return decorate(depth, std::move(*inner));
+}
+
+bool Grammar::starts_symbol(const Token& t) const {
+  return t.kind == Tok::letter ||
+         (t.kind == Tok::command &&
+          (commands::greek.contains(t.text) || commands::accents.contains(t.text) ||
+           commands::modifiers.contains(t.text) || commands::names.contains(t.text)));
+}
+
+// name := '{' letter-or-digit {letter-or-digit} '}'      (the letters of \mathrm{…}: one name)
+std::string Grammar::name_group(const Token& command_token) {
+  if (!is_char(peek(), '{')) {
+    throw error(peek(), "expected {name} after " + command_token.text);
+  }
+  const Token open = take();
+  std::string text;
+  while (true) {
+    const Token& t = peek_raw();
+    if (t.kind == Tok::letter || t.kind == Tok::number) {
+      if (t.space_before && !text.empty()) {
+        throw error(t, "expected one name in " + command_token.text +
+                           "{…}, found words: prose belongs outside the display block");
+      }
+      text += t.text;
+      take();
+    } else if (is_char(t, '}')) {
+      take();
+      break;
+    } else if (t.kind == Tok::end) {
+      throw error(open, "expected '}' to close this '{'");
+    } else {
+      throw error(t, "expected letters and digits in " + command_token.text +
+                         "{…} (a name), found " + describe(t));
+    }
+  }
+  if (text.empty()) {
+    throw error(open, "expected a name inside " + command_token.text + "{}");
+  }
+  if (text[0] >= '0' && text[0] <= '9') {
+    throw error(open, "expected a name beginning with a letter inside " + command_token.text +
+                          "{…}, found " + text + " (a number is written without it)");
+  }
+  return text;
+}
+
+// decorations := {'_' subscript | "'" | '^' ('\prime' | '{' '\prime' {'\prime'} '}')}
+// (subscript and primes in either order: p_1', p'_1, p_{1}')
+Node Grammar::decorate(std::size_t depth, Node n) {
+  while (true) {
+    const Token& t = peek_raw();
+    if (is_char(t, '_')) {
+      if (!n.symbol.subscript.empty()) {
+        throw error(t, "expected one subscript, found a second '_'");
+      }
+      take();
+      n.symbol.subscript = subscript(depth);
+    } else if (is_char(t, '\'')) {
+      take();
+      ++n.symbol.primes;
+    } else if (is_char(t, '^') && primes_follow()) {
+      take();
+      n.symbol.primes += read_prime_script();
+    } else {
+      break;
+    }
+  }
+  n.end = last_end_;
+  return n;
+}
+
+bool Grammar::primes_follow() const {
+  const Token& next = tokens_[position_ + 1];
+  if (is_command(next, "\\prime")) {
+    return true;
+  }
+  if (is_char(next, '{')) {
+    std::size_t k = position_ + 2;
+    bool any = false;
+    while (is_command(tokens_[k], "\\prime") || tokens_[k].kind == Tok::spacing) {
+      any = any || is_command(tokens_[k], "\\prime");
+      ++k;
+    }
+    return any && is_char(tokens_[k], '}');
+  }
+  return false;
+}
+
+int Grammar::read_prime_script() {
+  if (is_command(peek_raw(), "\\prime")) {
+    take();
+    return 1;
+  }
+  take();  // {
+  int count = 0;
+  while (is_command(peek(), "\\prime")) {
+    take();
+    ++count;
+  }
+  take();  // }
+  return count;
+}
+
+// subscript := letter | digit | greek | '\perp' | '\parallel' | name-command '{' name '}'
+//            | '{' {letter | digit | greek | name-command '{' name '}' | ',' | '(' | ')'} '}'
+std::string Grammar::subscript(std::size_t depth) {
+  const Token& t = peek_raw();
+  if (t.kind == Tok::letter) {
+    return take().text;
+  }
+  if (t.kind == Tok::number) {
+    return single_digit(t).text;
+  }
+  if (t.kind == Tok::command &&
+      (commands::greek.contains(t.text) || t.text == "\\perp" || t.text == "\\parallel")) {
+    return take().text;
+  }
+  if (t.kind == Tok::command && commands::names.contains(t.text)) {
+    const Token command_token = take();  // v_\text{rel}
+    return name_group(command_token);
+  }
+  if (!is_char(t, '{')) {
+    throw error(t,
+                "expected a subscript after '_' (a letter, a digit or {…}), found " + describe(t));
+  }
+  const Token open = take();
+  std::string text;
+  bool after_command = false;
+  while (true) {
+    const Token& s = peek();
+    if (s.kind == Tok::letter || s.kind == Tok::number) {
+      if (after_command) {
+        text += ' ';
+      }
+      text += take().text;
+      after_command = false;
+    } else if (s.kind == Tok::command &&
+               (commands::greek.contains(s.text) || s.text == "\\perp" || s.text == "\\parallel")) {
+      text += take().text;
+      after_command = true;
+    } else if (s.kind == Tok::command && commands::names.contains(s.text)) {
+      const Token command_token = take();
+      if (after_command) {
+        text += ' ';
+      }
+      text += name_group(command_token);
+      after_command = false;
+    } else if (is_char(s, ',') || is_char(s, '(') || is_char(s, ')')) {
+      // a_{vi(elastic)}: the paper's names of its coefficients carry a word in parentheses
+      text += take().text;
+      after_command = false;
+    } else if (is_char(s, '}')) {
+      take();
+      break;
+    } else if (s.kind == Tok::end) {
+      throw error(open, "expected '}' to close the subscript opened here");
+    } else {
+      throw error(s, "expected letters and digits in the subscript, found " + describe(s));
+    }
+  }
+  (void)depth;
+  if (text.empty()) {
+    throw error(open, "expected a subscript inside the braces");
+  }
+  return text;
+}
+
+}  // namespace impulse::derivations::file

@@ -1,0 +1,512 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A display block read into rows: the environments that arrange equations stripped, the rows cut
+// at \\ and at the arrows and annotations that separate equations inside a row, each row's tag
+// and label taken, and its sides (between the '=') read by the grammar.
+#include <algorithm>
+
+#include "file/grammar.hpp"
+#include "file/latex.hpp"
+#include "file/tokens.hpp"
+
+namespace impulse::derivations::file {
+
+namespace {
+
+std::string environment_name(const Source& source, std::vector<Token>& tokens, std::size_t& i) {
+  const Token& command = tokens[i];
+  ++i;
+  while (tokens[i].kind == Tok::spacing) {
+    ++i;
+  }
+  if (!is_char(tokens[i], '{')) {
+    throw source.error(tokens[i].offset, "expected {name} after " + command.text);
+  }
+  const std::size_t open = tokens[i].offset;
+  ++i;
+  std::string name;
+  while (tokens[i].kind == Tok::letter || is_char(tokens[i], '*')) {
+    name += tokens[i].text;
+    ++i;
+  }
+  if (!is_char(tokens[i], '}')) {
+    throw source.error(open, "expected '}' to close the environment's name");
+  }
+  ++i;
+  return name;
+}
+
+// The text of a braced label after \tag or \label, trimmed; i is left on its closing brace.
+std::optional<std::string> braced_label(const Source& source, const std::vector<Token>& tokens,
+                                        std::size_t& i, const Token& command) {
+  std::size_t k = i + 1;
+  if (is_char(tokens[k], '*')) {
+    ++k;
+  }
+  if (!is_char(tokens[k], '{')) {
+    throw source.error(command.offset, "expected " + command.text + "{label}");
+  }
+  const std::size_t open = tokens[k].offset;
+  std::size_t close = k + 1;
+  while (tokens[close].kind != Tok::end && !is_char(tokens[close], '}')) {
+    ++close;
+  }
+  if (tokens[close].kind == Tok::end) {
+    throw source.error(open, "expected '}' to close the " + command.text.substr(1));
+  }
+  std::string label(source.text().substr(open + 1, tokens[close].offset - open - 1));
+  while (!label.empty() && label.back() == ' ') {
+    label.pop_back();
+  }
+  while (!label.empty() && label.front() == ' ') {
+    label.erase(label.begin());
+  }
+  i = close;
+  if (label.empty()) {
+    return std::nullopt;
+  }
+  return label;
+}
+
+bool relation_token(const Token& t) {
+  return is_char(t, '=') || is_char(t, '<') || is_char(t, '>') ||
+         (t.kind == Tok::command && commands::relations.contains(t.text) &&
+          !commands::arrows.contains(t.text) && !commands::equivalences.contains(t.text));
+}
+
+// Whether a run of tokens holds a relation outside every group: an equation's worth.
+bool holds_relation(const std::vector<Token>& tokens) {
+  const std::vector<int> d = depths(tokens);
+  for (std::size_t k = 0; k < tokens.size(); ++k) {
+    if (d[k] == 0 && relation_token(tokens[k])) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The end of the \text{…} (or \mbox{…}) annotation that begins at i: the index after its '}'.
+std::size_t annotation_end(const Source& source, const std::vector<Token>& tokens, std::size_t i) {
+  std::size_t k = i + 1;
+  while (k < tokens.size() && tokens[k].kind == Tok::spacing) {
+    ++k;
+  }
+  if (k >= tokens.size() || !is_char(tokens[k], '{')) {
+    throw source.error(tokens[i].offset, "expected {…} after " + tokens[i].text);
+  }
+  int depth = 0;
+  for (; k < tokens.size(); ++k) {
+    depth += is_char(tokens[k], '{') ? 1 : is_char(tokens[k], '}') ? -1 : 0;
+    if (depth == 0) {
+      return k + 1;
+    }
+  }
+  throw source.error(tokens[i].offset, "expected '}' to close " + tokens[i].text);
+}
+
+// Whether a \text{…} (its '{' at open, end after its '}') holds words (spaces, punctuation, or
+// nothing) rather than one name.
+bool words(const std::vector<Token>& tokens, std::size_t open, std::size_t end) {
+  if (end < open + 3) {
+    return true;  // \text{}
+  }
+  for (std::size_t k = open + 1; k + 1 < end; ++k) {
+    const Token& t = tokens[k];
+    if ((t.kind != Tok::letter && t.kind != Tok::number) || t.space_before) {
+      return true;
+    }
+  }
+  return tokens[end - 1].space_before;
+}
+
+// row-steps := [arrow] equations {(arrow | annotation | ',') equations} [annotation]
+// arrow := '\Rightarrow' | '\implies' | '\therefore' | '\Longrightarrow'   (a step)
+//        | '\iff' | '\Leftrightarrow' | '\Longleftrightarrow'                (an equivalence)
+// annotation := text-command '{' words '}'   (between equations, or at the end of a row)
+// (a row cut here becomes several rows, each a step from the one before)
+std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
+  std::vector<RowTokens> pieces;
+  RowTokens current;
+  current.join = row.join;
+  current.offset = row.offset;
+  const std::vector<Token>& tokens = row.tokens;
+  const std::vector<int> d = depths(tokens);
+  const auto next_piece = [&](Join join, std::size_t offset) {
+    if (!blank_tokens(current.tokens)) {
+      pieces.push_back(std::move(current));
+    } else if (!pieces.empty() && join == Join::row) {
+      join = current.join;  // two separators side by side: the first says how
+    }
+    current = RowTokens{};
+    current.join = join;
+    current.offset = offset;
+  };
+  // Whether the tokens from k to the next separator hold an equation (or nothing).
+  const auto equation_follows = [&](std::size_t k, bool blank_counts) {
+    std::vector<Token> rest;
+    for (; k < tokens.size(); ++k) {
+      if (d[k] == 0 && (in(tokens[k], commands::arrows) || in(tokens[k], commands::equivalences))) {
+        break;
+      }
+      rest.push_back(tokens[k]);
+    }
+    return blank_tokens(rest) ? blank_counts : holds_relation(rest);
+  };
+  for (std::size_t k = 0; k < tokens.size(); ++k) {
+    const Token& t = tokens[k];
+    const bool top = d[k] == 0;
+    if (top && (in(t, commands::arrows) || in(t, commands::equivalences))) {
+      const std::vector<Token> rest(tokens.begin() + static_cast<std::ptrdiff_t>(k) + 1,
+                                    tokens.end());
+      if (blank_tokens(rest)) {
+        throw source.error(t.offset, "expected an equation after " + t.text);
+      }
+      next_piece(in(t, commands::arrows) ? Join::arrow : Join::equivalence,
+                 first_offset(rest, t.offset));
+      continue;
+    }
+    const bool in_script = [&] {
+      for (std::size_t j = current.tokens.size(); j-- > 0;) {
+        if (current.tokens[j].kind == Tok::spacing) {
+          continue;
+        }
+        return is_char(current.tokens[j], '_') || is_char(current.tokens[j], '^');
+      }
+      return false;
+    }();
+    if (top && in(t, commands::text_commands) && !in_script) {
+      const std::size_t end = annotation_end(source, tokens, k);
+      std::size_t open = k + 1;
+      while (tokens[open].kind == Tok::spacing) {
+        ++open;
+      }
+      const std::vector<Token> rest(tokens.begin() + static_cast<std::ptrdiff_t>(end),
+                                    tokens.end());
+      if (holds_relation(current.tokens) && equation_follows(end, true)) {
+        // an annotation between two equations, or at the end of the row
+        next_piece(Join::row, first_offset(rest, t.offset));
+        k = end - 1;
+        continue;
+      }
+      if (words(tokens, open, end)) {
+        throw source.error(t.offset,
+                           "expected " + t.text +
+                               "{…} between two equations or at the end of a row (an "
+                               "annotation), found it inside an equation: words belong outside "
+                               "the display block");
+      }
+      // one word inside an equation: a name (\text{KE} = …, \text{elasticity}\, p)
+    }
+    if (top && is_char(t, ',') && holds_relation(current.tokens)) {
+      std::size_t next = k + 1;
+      std::vector<Token> rest;
+      for (; next < tokens.size() && !(d[next] == 0 && is_char(tokens[next], ',')); ++next) {
+        rest.push_back(tokens[next]);
+      }
+      if (holds_relation(rest)) {
+        next_piece(Join::row, first_offset(rest, t.offset));
+        continue;
+      }
+    }
+    if (current.tokens.empty() && t.kind != Tok::spacing) {
+      current.offset = t.offset;
+    }
+    current.tokens.push_back(t);
+  }
+  if (!blank_tokens(current.tokens)) {
+    pieces.push_back(std::move(current));
+  } else if (pieces.empty()) {
+    throw source.error(row.offset, "expected an equation in the row, found only annotations");
+  }
+  // The tag and label name the row's last equation.
+  pieces.back().tag = row.tag;
+  pieces.back().label = row.label;
+  return pieces;
+}
+
+// A row without a relation that begins with + or - continues the last side of the row before.
+std::vector<RowTokens> merge_continuations(const Source& source, std::vector<RowTokens> rows) {
+  std::vector<RowTokens> merged;
+  for (RowTokens& row : rows) {
+    const bool has_relation = holds_relation(row.tokens);
+    const Token& first = *std::find_if(row.tokens.begin(), row.tokens.end(),
+                                       [](const Token& t) { return t.kind != Tok::spacing; });
+    if (!has_relation && !merged.empty() && (is_char(first, '+') || is_char(first, '-')) &&
+        row.join == Join::row) {
+      merged.back().tokens.insert(merged.back().tokens.end(), row.tokens.begin(), row.tokens.end());
+      if (row.tag) {
+        if (merged.back().tag) {
+          throw source.error(row.offset, "expected one \\tag per equation, found a second");
+        }
+        merged.back().tag = row.tag;
+      }
+      if (row.label) {
+        merged.back().label = row.label;
+      }
+      continue;
+    }
+    if (!has_relation) {
+      throw source.error(row.offset,
+                         "expected an equation (… = …), found an expression without '='");
+    }
+    merged.push_back(std::move(row));
+  }
+  return merged;
+}
+
+// equation := [side] '=' side {'=' side}     (a row that begins with '=' continues a chain)
+Row read_row(const Source& source, RowTokens& row_tokens, const Limits& limits) {
+  Row row;
+  row.tag = row_tokens.tag;
+  row.label = row_tokens.label;
+  row.offset = row_tokens.offset;
+  row.join = row_tokens.join;
+  std::vector<std::vector<Token>> sides(1);
+  const std::vector<int> d = depths(row_tokens.tokens);
+  for (std::size_t k = 0; k < row_tokens.tokens.size(); ++k) {
+    const Token& t = row_tokens.tokens[k];
+    if (d[k] == 0 && (is_command(t, "\\approx") || is_command(t, "\\simeq"))) {
+      throw source.error(t.offset, "expected '=', found " + t.text +
+                                       ": an approximation is not a step that follows or not "
+                                       "(write the exact equation, or name the approximation "
+                                       "with let:)");
+    }
+    if (d[k] == 0 && t.kind != Tok::spacing && relation_token(t) && !is_char(t, '=')) {
+      throw source.error(t.offset, "expected '=', found the relation " + t.text +
+                                       ": this checker reads equations (facts such as x > 0 "
+                                       "go in an assume: line)");
+    }
+    if (d[k] == 0 && is_char(t, '=')) {
+      sides.emplace_back();
+      continue;
+    }
+    sides.back().push_back(t);
+  }
+  row.continues = blank_tokens(sides[0]);
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    if (k == 0 && row.continues) {
+      Side empty;
+      empty.offset = row.offset;
+      row.sides.push_back(std::move(empty));
+      continue;
+    }
+    if (blank_tokens(sides[k])) {
+      const std::size_t at = sides[k].empty() ? row.offset : sides[k].front().offset;
+      throw source.error(
+          at, k == 0 ? "expected an expression before '='" : "expected an expression after '='");
+    }
+    row.sides.push_back(parse_side(source, std::move(sides[k]), row.offset, limits));
+  }
+  return row;
+}
+
+}  // namespace
+
+// Removes \begin{…} and \end{…} of the environments that only arrange equations, checking that
+// they pair up.
+std::vector<Token> strip_environments(const Source& source, std::vector<Token> tokens) {
+  std::vector<Token> kept;
+  std::vector<std::pair<std::string, std::size_t>> open;
+  for (std::size_t i = 0; i < tokens.size();) {
+    const Token& t = tokens[i];
+    if (is_command(t, "\\begin")) {
+      const std::size_t at = t.offset;
+      const std::string name = environment_name(source, tokens, i);
+      if (!commands::environments.contains(name)) {
+        throw source.error(at,
+                           "expected an environment that arranges equations (aligned, "
+                           "align*, split, gathered, cases, equation), found {" +
+                               name + "}");
+      }
+      // Optional arguments: aligned[t], alignat{2}.
+      if (is_char(tokens[i], '[')) {
+        while (tokens[i].kind != Tok::end && !is_char(tokens[i], ']')) {
+          ++i;
+        }
+        if (tokens[i].kind == Tok::end) {
+          throw source.error(at, "expected ']' to close the environment's option");
+        }
+        ++i;
+      }
+      if (name.starts_with("alignat") && is_char(tokens[i], '{')) {
+        while (tokens[i].kind != Tok::end && !is_char(tokens[i], '}')) {
+          ++i;
+        }
+        ++i;
+      }
+      open.emplace_back(name, at);
+      continue;
+    }
+    if (is_command(t, "\\end")) {
+      const std::size_t at = t.offset;
+      const std::string name = environment_name(source, tokens, i);
+      if (open.empty()) {
+        throw source.error(at, "expected no \\end{" + name + "}: no environment is open");
+      }
+      if (open.back().first != name) {
+        throw source.error(at, "expected \\end{" + open.back().first + "} to close the \\begin{" +
+                                   open.back().first + "} at " +
+                                   std::to_string(source.place(open.back().second).line) + ":" +
+                                   std::to_string(source.place(open.back().second).column) +
+                                   ", found \\end{" + name + "}");
+      }
+      open.pop_back();
+      continue;
+    }
+    kept.push_back(t);
+    ++i;
+  }
+  if (!open.empty()) {
+    throw source.error(open.back().second,
+                       "expected \\end{" + open.back().first + "} to close this environment");
+  }
+  return kept;
+}
+
+// rows := row {'\\' ['[' length ']'] row}; '&', \nonumber and \notag are dropped, \tag{k} and
+// \label{k} name their row.
+std::vector<RowTokens> split_rows(const Source& source, const std::vector<Token>& tokens) {
+  std::vector<RowTokens> rows(1);
+  int braces = 0;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const Token& t = tokens[i];
+    if (t.kind == Tok::end) {
+      break;
+    }
+    braces += is_char(t, '{') ? 1 : is_char(t, '}') ? -1 : 0;
+    if (is_command(t, "\\\\") && braces == 0) {
+      // \\[2pt]: the optional spacing belongs to the line break.
+      if (i + 1 < tokens.size() && is_char(tokens[i + 1], '[')) {
+        std::size_t k = i + 1;
+        while (tokens[k].kind != Tok::end && !is_char(tokens[k], ']')) {
+          ++k;
+        }
+        if (tokens[k].kind != Tok::end) {
+          i = k;
+        }
+      }
+      rows.emplace_back();
+      continue;
+    }
+    if (is_char(t, '&')) {
+      continue;
+    }
+    if (is_command(t, "\\tag")) {
+      const std::optional<std::string> label = braced_label(source, tokens, i, t);
+      if (!label) {
+        throw source.error(t.offset, "expected a label inside \\tag{}");
+      }
+      if (rows.back().tag) {
+        throw source.error(t.offset, "expected one \\tag per row, found a second");
+      }
+      rows.back().tag = label;
+      continue;
+    }
+    if (is_command(t, "\\label")) {
+      if (const std::optional<std::string> label = braced_label(source, tokens, i, t)) {
+        rows.back().label = label;
+      }
+      continue;
+    }
+    if (is_command(t, "\\nonumber") || is_command(t, "\\notag")) {
+      continue;
+    }
+    if (rows.back().tokens.empty() && t.kind != Tok::spacing) {
+      rows.back().offset = t.offset;
+    }
+    rows.back().tokens.push_back(t);
+  }
+  // Rows of spacing alone are nothing; trailing punctuation ends a sentence, not an equation.
+  std::vector<RowTokens> kept;
+  for (RowTokens& row : rows) {
+    while (!row.tokens.empty() &&
+           (row.tokens.back().kind == Tok::spacing || is_char(row.tokens.back(), ',') ||
+            is_char(row.tokens.back(), '.') || is_char(row.tokens.back(), ';'))) {
+      row.tokens.pop_back();
+    }
+    if (row.tokens.empty()) {
+      if (row.tag) {
+        throw source.error(source.text().size(), "expected an equation with the \\tag");
+      }
+      continue;
+    }
+    kept.push_back(std::move(row));
+  }
+  return kept;
+}
+
+Side parse_side(const Source& source, std::vector<Token> tokens, std::size_t fallback_offset,
+                const Limits& limits) {
+  Side side;
+  std::size_t first = 0;
+  while (first < tokens.size() && tokens[first].kind == Tok::spacing) {
+    ++first;
+  }
+  side.offset = first < tokens.size() ? tokens[first].offset : fallback_offset;
+  side.latex = join(tokens);
+  Token end;
+  end.offset = end.end = tokens.empty() ? fallback_offset : tokens.back().end;
+  tokens.push_back(end);
+  side.expression = Grammar(source, std::move(tokens), limits).whole_expression();
+  return side;
+}
+
+std::vector<Row> read_block(const Source& source, std::size_t content_offset,
+                            std::string_view content, const Limits& limits) {
+  std::vector<Token> tokens = tokenize(source, content_offset, content);
+  check_braces(source, tokens);
+  tokens = strip_environments(source, std::move(tokens));
+  std::vector<RowTokens> token_rows;
+  for (RowTokens& row : split_rows(source, tokens)) {
+    for (RowTokens& piece : split_steps(source, std::move(row))) {
+      token_rows.push_back(std::move(piece));
+    }
+  }
+  if (token_rows.empty()) {
+    throw source.error(content_offset > 2 ? content_offset - 2 : 0,
+                       "expected an equation in the display block, found nothing");
+  }
+  std::vector<Row> rows;
+  for (RowTokens& row_tokens : merge_continuations(source, std::move(token_rows))) {
+    rows.push_back(read_row(source, row_tokens, limits));
+  }
+  return rows;
+}
+
+Side read_expression(const Source& source, std::size_t offset, std::string_view text,
+                     const Limits& limits) {
+  std::vector<Token> tokens = tokenize(source, offset, text);
+  check_braces(source, tokens);
+  tokens.pop_back();  // the end token; parse_side adds its own
+  for (const Token& t : tokens) {
+    if (is_char(t, '=') || is_char(t, '&') || is_command(t, "\\\\")) {
+      throw source.error(t.offset, "expected one expression, found " + describe(t));
+    }
+  }
+  if (tokens.empty()) {
+    throw source.error(offset, "expected an expression");
+  }
+  return parse_side(source, std::move(tokens), offset, limits);
+}
+
+SymbolName read_symbol(const Source& source, std::size_t offset, std::string_view text,
+                       const Limits& limits) {
+  std::vector<Token> tokens = tokenize(source, offset, text);
+  check_braces(source, tokens);
+  return Grammar(source, std::move(tokens), limits).whole_symbol();
+}
+
+SymbolName read_symbol_or_differential(const Source& source, std::size_t offset,
+                                       std::string_view text, const Limits& limits) {
+  constexpr std::string_view d = "\\mathrm{d}";
+  if (!text.starts_with(d) || text.size() == d.size()) {
+    return read_symbol(source, offset, text, limits);
+  }
+  SymbolName name = read_symbol(source, offset + d.size(), text.substr(d.size()), limits);
+  if (name.differential || name.delta) {
+    throw source.error(offset, "expected one symbol after \\mathrm{d}");
+  }
+  name.differential = true;
+  return name;
+}
+
+}  // namespace impulse::derivations::file

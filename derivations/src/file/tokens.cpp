@@ -1,0 +1,346 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "file/tokens.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace impulse::derivations::file {
+
+namespace commands {
+
+const Set greek{"\\alpha",  "\\beta",  "\\gamma",   "\\delta",    "\\epsilon", "\\varepsilon",
+                "\\zeta",   "\\eta",   "\\theta",   "\\vartheta", "\\iota",    "\\kappa",
+                "\\lambda", "\\mu",    "\\nu",      "\\xi",       "\\rho",     "\\varrho",
+                "\\sigma",  "\\tau",   "\\upsilon", "\\phi",      "\\varphi",  "\\chi",
+                "\\psi",    "\\omega", "\\Gamma",   "\\Theta",    "\\Lambda",  "\\Xi",
+                "\\Pi",     "\\Sigma", "\\Upsilon", "\\Phi",      "\\Psi",     "\\Omega",
+                "\\ell"};
+const Set spacing{"\\,",
+                  "\\;",
+                  "\\:",
+                  "\\!",
+                  "\\>",
+                  "\\ ",
+                  "\\quad",
+                  "\\qquad",
+                  "\\enspace",
+                  "\\thinspace",
+                  "\\medspace",
+                  "\\thickspace",
+                  "\\negthinspace",
+                  "\\displaystyle",
+                  "\\textstyle",
+                  "\\scriptstyle",
+                  "\\limits",
+                  "\\nolimits"};
+const Set functions{"\\sin",    "\\cos",    "\\tan",    "\\cot",    "\\sec",    "\\csc",
+                    "\\arcsin", "\\arccos", "\\arctan", "\\exp",    "\\ln",     "\\log",
+                    "\\sinh",   "\\cosh",   "\\tanh",   "\\arccot", "\\arcsec", "\\arccsc"};
+const Set fractions{"\\frac", "\\dfrac", "\\tfrac", "\\cfrac"};
+const Set accents{"\\vec", "\\hat", "\\overrightarrow", "\\mathbf", "\\boldsymbol", "\\bm"};
+const Set modifiers{"\\bar", "\\dot", "\\ddot", "\\tilde", "\\overline", "\\breve", "\\check"};
+const Set names{"\\mathrm",       "\\text",   "\\mathit", "\\textit", "\\textrm",
+                "\\operatorname", "\\mathsf", "\\textsf", "\\mbox",   "\\textnormal"};
+const Set sizes{"\\big",  "\\Big",  "\\bigg",  "\\Bigg",  "\\bigl", "\\Bigl", "\\biggl", "\\Biggl",
+                "\\bigr", "\\Bigr", "\\biggr", "\\Biggr", "\\bigm", "\\Bigm", "\\biggm", "\\Biggm"};
+const Set relations{"<",
+                    ">",
+                    "\\lt",
+                    "\\gt",
+                    "\\le",
+                    "\\ge",
+                    "\\leq",
+                    "\\geq",
+                    "\\neq",
+                    "\\ne",
+                    "\\approx",
+                    "\\equiv",
+                    "\\sim",
+                    "\\simeq",
+                    "\\propto",
+                    "\\cong",
+                    "\\leqslant",
+                    "\\geqslant",
+                    "\\Rightarrow",
+                    "\\implies",
+                    "\\iff",
+                    "\\Leftrightarrow",
+                    "\\to",
+                    "\\rightarrow",
+                    "\\Longrightarrow",
+                    "\\Longleftrightarrow",
+                    "\\mapsto",
+                    "\\therefore"};
+const Set arrows{"\\Rightarrow", "\\implies", "\\therefore", "\\Longrightarrow"};
+const Set equivalences{"\\iff", "\\Leftrightarrow", "\\Longleftrightarrow"};
+const Set environments{"aligned", "align",    "align*",    "split",     "gathered", "gather",
+                       "gather*", "cases",    "equation",  "equation*", "multline", "multline*",
+                       "alignat", "alignat*", "alignedat", "eqnarray",  "eqnarray*"};
+const Set text_commands{"\\text", "\\mbox", "\\textrm", "\\textit", "\\textnormal", "\\textsf"};
+
+}  // namespace commands
+
+namespace {
+
+bool letter_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+bool digit_char(char c) {
+  return c >= '0' && c <= '9';
+}
+
+class Tokenizer {
+ public:
+  Tokenizer(const Source& source, std::size_t base, std::string_view text)
+      : source_(source), base_(base), text_(text) {}
+
+  std::vector<Token> run() {
+    std::vector<Token> tokens;
+    bool space = false;
+    std::size_t i = 0;
+    while (i < text_.size()) {
+      const char c = text_[i];
+      if (c == ' ' || c == '\t' || c == '\n' || c == '\r') {
+        space = true;
+        ++i;
+        continue;
+      }
+      if (c == '%') {  // a LaTeX comment runs to the end of the line
+        while (i < text_.size() && text_[i] != '\n') {
+          ++i;
+        }
+        continue;
+      }
+      Token token;
+      token.offset = base_ + i;
+      token.space_before = space;
+      space = false;
+      if (c == '\\') {
+        std::size_t j = i + 1;
+        while (j < text_.size() && letter_char(text_[j])) {
+          ++j;
+        }
+        if (j == i + 1) {
+          if (j >= text_.size()) {
+            throw source_.error(base_ + i, "expected a command name after the backslash");
+          }
+          j = i + 2;
+          if (static_cast<unsigned char>(text_[i + 1]) >= 0x80U) {
+            throw source_.error(base_ + i + 1, "expected a command name after the backslash");
+          }
+        }
+        token.kind = Tok::command;
+        token.text = std::string(text_.substr(i, j - i));
+        i = j;
+        if (commands::spacing.contains(token.text)) {
+          token.kind = Tok::spacing;
+        } else if (token.text == "\\hspace" || token.text == "\\hspace*" ||
+                   token.text == "\\mspace") {
+          token.kind = Tok::spacing;
+          i = skip_argument(i, token.offset);
+        }
+      } else if (letter_char(c)) {
+        token.kind = Tok::letter;
+        token.text = std::string(1, c);
+        ++i;
+      } else if (digit_char(c) || (c == '.' && i + 1 < text_.size() && digit_char(text_[i + 1]))) {
+        std::size_t j = i;
+        while (j < text_.size() && digit_char(text_[j])) {
+          ++j;
+        }
+        if (j < text_.size() && text_[j] == '.' && j + 1 < text_.size() &&
+            digit_char(text_[j + 1])) {
+          ++j;
+          while (j < text_.size() && digit_char(text_[j])) {
+            ++j;
+          }
+        }
+        token.kind = Tok::number;
+        token.text = std::string(text_.substr(i, j - i));
+        i = j;
+      } else if (static_cast<unsigned char>(c) >= 0x80U) {
+        i = unicode(i, token);
+        if (token.kind == Tok::end) {
+          space = true;  // a no-break space
+          continue;
+        }
+      } else {
+        token.kind = Tok::character;
+        token.text = std::string(1, c);
+        ++i;
+      }
+      token.end = base_ + i;
+      tokens.push_back(std::move(token));
+    }
+    Token end;
+    end.offset = end.end = base_ + text_.size();
+    tokens.push_back(end);
+    return tokens;
+  }
+
+ private:
+  std::size_t skip_argument(std::size_t i, std::size_t command) const {
+    while (i < text_.size() && (text_[i] == ' ' || text_[i] == '*')) {
+      ++i;
+    }
+    if (i >= text_.size() || text_[i] != '{') {
+      throw source_.error(command, "expected {…} after the spacing command");
+    }
+    const std::size_t close = text_.find('}', i);
+    if (close == std::string_view::npos) {
+      throw source_.error(base_ + i, "expected '}' to close this '{'");
+    }
+    return close + 1;
+  }
+
+  // A few characters that people paste from documents, read as their LaTeX.
+  std::size_t unicode(std::size_t i, Token& token) const {
+    const std::array<std::pair<std::string_view, std::pair<Tok, std::string_view>>, 6> known{{
+        {"\u2032", {Tok::character, "'"}},      // prime
+        {"\u00B7", {Tok::command, "\\cdot"}},   // middle dot
+        {"\u22C5", {Tok::command, "\\cdot"}},   // dot operator
+        {"\u2212", {Tok::character, "-"}},      // minus sign
+        {"\u00D7", {Tok::command, "\\times"}},  // multiplication sign
+        {"\u00A0", {Tok::end, ""}},             // no-break space
+    }};
+    for (const auto& [text, meaning] : known) {
+      if (text_.substr(i, text.size()) == text) {
+        token.kind = meaning.first;
+        token.text = std::string(meaning.second);
+        return i + text.size();
+      }
+    }
+    std::size_t j = i + 1;
+    while (j < text_.size() && (static_cast<unsigned char>(text_[j]) & 0xC0U) == 0x80U) {
+      ++j;
+    }
+    throw source_.error(base_ + i, "expected LaTeX, found the character '" +
+                                       std::string(text_.substr(i, j - i)) +
+                                       "' (write Greek letters and symbols as commands, e.g. "
+                                       "\\omega)");
+  }
+
+  const Source& source_;
+  std::size_t base_;
+  std::string_view text_;
+};
+
+}  // namespace
+
+std::vector<Token> tokenize(const Source& source, std::size_t base, std::string_view text) {
+  return Tokenizer(source, base, text).run();
+}
+
+std::string describe(const Token& t) {
+  switch (t.kind) {
+    case Tok::end:
+      return "the end of the expression";
+    case Tok::number:
+      return "the number " + t.text;
+    default:
+      return "'" + t.text + "'";
+  }
+}
+
+// The LaTeX of a run of tokens as written: their texts, with a space where the file had one (and
+// where a command name would otherwise run into a letter: \cdot m).
+std::string join(const std::vector<Token>& tokens) {
+  std::string out;
+  const Token* previous = nullptr;
+  for (const Token& t : tokens) {
+    if (t.kind == Tok::end) {
+      continue;
+    }
+    const bool command_before = previous != nullptr && previous->text.size() > 1 &&
+                                previous->text[0] == '\\' && letter_char(previous->text.back());
+    if (previous != nullptr &&
+        (t.space_before || (command_before && (t.kind == Tok::letter || t.kind == Tok::number)))) {
+      out += ' ';
+    }
+    out += t.text;
+    previous = &t;
+  }
+  return out;
+}
+bool blank_tokens(const std::vector<Token>& tokens) {
+  return std::all_of(tokens.begin(), tokens.end(),
+                     [](const Token& t) { return t.kind == Tok::spacing || t.kind == Tok::end; });
+}
+
+std::vector<Token> trimmed_tokens(std::vector<Token> tokens) {
+  while (!tokens.empty() &&
+         (tokens.back().kind == Tok::spacing || tokens.back().kind == Tok::end)) {
+    tokens.pop_back();
+  }
+  std::size_t i = 0;
+  while (i < tokens.size() && tokens[i].kind == Tok::spacing) {
+    ++i;
+  }
+  tokens.erase(tokens.begin(), tokens.begin() + static_cast<std::ptrdiff_t>(i));
+  return tokens;
+}
+
+std::size_t first_offset(const std::vector<Token>& tokens, std::size_t fallback) {
+  for (const Token& t : tokens) {
+    if (t.kind != Tok::spacing && t.kind != Tok::end) {
+      return t.offset;
+    }
+  }
+  return fallback;
+}
+
+void check_braces(const Source& source, const std::vector<Token>& tokens) {
+  std::vector<std::size_t> open;
+  for (const Token& t : tokens) {
+    if (is_char(t, '{')) {
+      open.push_back(t.offset);
+    } else if (is_char(t, '}')) {
+      if (open.empty()) {
+        throw source.error(t.offset, "expected no '}' here: it closes no '{'");
+      }
+      open.pop_back();
+    }
+  }
+  if (!open.empty()) {
+    throw source.error(open.back(), "expected '}' to close this '{'");
+  }
+}
+
+std::vector<int> depths(const std::vector<Token>& tokens) {
+  std::vector<int> d(tokens.size(), 0);
+  int depth = 0;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const Token& t = tokens[i];
+    const bool close = is_char(t, '}') || is_char(t, ')') || is_char(t, ']') ||
+                       is_command(t, "\\}") || is_command(t, "\\right");
+    if (close) {
+      --depth;
+    }
+    d[i] = depth;
+    if (is_char(t, '{') || is_char(t, '(') || is_char(t, '[') || is_command(t, "\\{") ||
+        is_command(t, "\\left")) {
+      ++depth;
+    }
+  }
+  return d;
+}
+
+std::vector<std::vector<Token>> split_top(const std::vector<Token>& tokens,
+                                          const std::function<bool(const Token&)>& separator,
+                                          std::vector<Token>* separators) {
+  std::vector<std::vector<Token>> parts(1);
+  const std::vector<int> d = depths(tokens);
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    if (d[i] == 0 && separator(tokens[i])) {
+      if (separators != nullptr) {
+        separators->push_back(tokens[i]);
+      }
+      parts.emplace_back();
+      continue;
+    }
+    parts.back().push_back(tokens[i]);
+  }
+  return parts;
+}
+
+}  // namespace impulse::derivations::file
