@@ -16,6 +16,7 @@
 
 #include "impulse/core/error.hpp"
 #include "impulse/core/normal.hpp"
+#include "impulse/core/text.hpp"
 #include "impulse/scene/report.hpp"
 
 namespace impulse::scene {
@@ -24,30 +25,6 @@ namespace {
 
 using Eigen::Vector2d;
 using nlohmann::json;
-
-// ---------------------------------------------------------------------------------------------
-// Places in the document, as messages name them: "bodies[1].mass", "solver.dependent".
-
-std::string child(std::string_view path, std::string_view key) {
-  std::string result(path);
-  if (!result.empty()) {
-    result.append(".");
-  }
-  result.append(key);
-  return result;
-}
-
-std::string element(std::string_view path, std::size_t index) {
-  std::string result(path);
-  result.append("[").append(std::to_string(index)).append("]");
-  return result;
-}
-
-std::string in_quotes(std::string_view text) {
-  std::string result("\"");
-  result.append(text).append("\"");
-  return result;
-}
 
 // What a value is, for "expected …, got …".
 std::string describe(const json& value) {
@@ -113,7 +90,8 @@ class Tracker {
   std::string place() const {
     std::string path;
     for (const Frame& f : frames_) {
-      path = f.object ? (f.key.empty() ? path : child(path, f.key)) : element(path, f.index);
+      path = f.object ? (f.key.empty() ? path : member_place(path, f.key))
+                      : element_place(path, f.index);
     }
     return path;
   }
@@ -331,7 +309,7 @@ class Reader {
     const json& bodies = required(document, "", "bodies", "the scene");
     require_array(bodies, "bodies", "an array of bodies");
     for (std::size_t i = 0; i < bodies.size(); ++i) {
-      scene.bodies.push_back(body(bodies[i], element("bodies", i)));
+      scene.bodies.push_back(body(bodies[i], element_place("bodies", i)));
     }
     try {
       // The library's rule, before the contacts look names up: a repeated name is reported as
@@ -347,7 +325,7 @@ class Reader {
     const json& contacts = required(document, "", "contacts", "the scene");
     require_array(contacts, "contacts", "an array of contacts");
     for (std::size_t v = 0; v < contacts.size(); ++v) {
-      scene.contacts.push_back(contact(contacts[v], element("contacts", v)));
+      scene.contacts.push_back(contact(contacts[v], element_place("contacts", v)));
     }
     if (const json* s = optional(document, "solver")) {
       solver(*s, "solver", scene);
@@ -393,7 +371,7 @@ class Reader {
       if (std::find(known.begin(), known.end(), key) != known.end()) {
         std::string message("does not apply to a ");
         message.append(kind).append(" body (its keys are ").append(join(allowed)).append(")");
-        fail(child(path, key), message);
+        fail(member_place(path, key), message);
       }
       std::string message("unknown key");
       std::string_view nearest;
@@ -409,7 +387,7 @@ class Reader {
         message.append(" (did you mean ").append(in_quotes(nearest)).append("?)");
       }
       message.append("; expected one of ").append(join(known));
-      fail(child(path, key), message);
+      fail(member_place(path, key), message);
     }
   }
 
@@ -463,7 +441,7 @@ class Reader {
     if (!value.is_array() || value.size() != 2) {
       expected(value, path, "[x, y], an array of 2 numbers (the scene has dimension 2)");
     }
-    return {number(value[0], element(path, 0)), number(value[1], element(path, 1))};
+    return {number(value[0], element_place(path, 0)), number(value[1], element_place(path, 1))};
   }
 
   // A name of the enum's table (impulse::EnumNames), or a refusal that lists them.
@@ -480,8 +458,9 @@ class Reader {
     require_object(value, path, "a body, an object");
     refuse_unknown_keys(value, path, body_keys, body_keys, "");
     Body b;
-    b.name = string(required(value, path, "name", "every body"), child(path, "name"));
-    b.kind = member_of<BodyKind>(required(value, path, "kind", "every body"), child(path, "kind"));
+    b.name = string(required(value, path, "name", "every body"), member_place(path, "name"));
+    b.kind = member_of<BodyKind>(required(value, path, "kind", "every body"),
+                                 member_place(path, "kind"));
     const std::string kind(name_of(b.kind));
     switch (b.kind) {
       case BodyKind::material:
@@ -495,7 +474,7 @@ class Reader {
         return b;  // immovable: nothing more to read
     }
     const std::string owner = "a " + kind + " body";
-    b.mass = number(required(value, path, "mass", owner), child(path, "mass"));
+    b.mass = number(required(value, path, "mass", owner), member_place(path, "mass"));
     const json* velocity = optional(value, "velocity");
     const json* momentum = optional(value, "momentum");
     if (velocity != nullptr && momentum != nullptr) {
@@ -506,10 +485,10 @@ class Reader {
     }
     b.linear_given = velocity != nullptr ? Given::velocity : Given::momentum;
     b.linear = vector(velocity != nullptr ? *velocity : *momentum,
-                      child(path, velocity != nullptr ? "velocity" : "momentum"));
+                      member_place(path, velocity != nullptr ? "velocity" : "momentum"));
     if (b.kind == BodyKind::rigid) {
-      b.inertia = number(required(value, path, "inertia", owner), child(path, "inertia"));
-      b.position = vector(required(value, path, "position", owner), child(path, "position"));
+      b.inertia = number(required(value, path, "inertia", owner), member_place(path, "inertia"));
+      b.position = vector(required(value, path, "position", owner), member_place(path, "position"));
       const json* omega = optional(value, "angular_velocity");
       const json* L = optional(value, "angular_momentum");
       if (omega != nullptr && L != nullptr) {
@@ -517,13 +496,13 @@ class Reader {
       }
       b.angular_given = L != nullptr ? Given::momentum : Given::velocity;
       if (omega != nullptr) {
-        b.angular = number(*omega, child(path, "angular_velocity"));
+        b.angular = number(*omega, member_place(path, "angular_velocity"));
       } else if (L != nullptr) {
-        b.angular = number(*L, child(path, "angular_momentum"));
+        b.angular = number(*L, member_place(path, "angular_momentum"));
       }
     }
     if (const json* e = optional(value, "elasticity")) {
-      b.elasticity = number(*e, child(path, "elasticity"));
+      b.elasticity = number(*e, member_place(path, "elasticity"));
     }
     return b;
   }
@@ -549,8 +528,10 @@ class Reader {
     require_object(value, path, "a contact, an object");
     refuse_unknown_keys(value, path, contact_keys, contact_keys, "");
     Contact c;
-    c.bumper = body_named(required(value, path, "bumper", "every contact"), child(path, "bumper"));
-    c.wedge = body_named(required(value, path, "wedge", "every contact"), child(path, "wedge"));
+    c.bumper =
+        body_named(required(value, path, "bumper", "every contact"), member_place(path, "bumper"));
+    c.wedge =
+        body_named(required(value, path, "wedge", "every contact"), member_place(path, "wedge"));
     const json* normal = optional(value, "normal");
     const json* angle = optional(value, "normal_angle");
     if (normal != nullptr && angle != nullptr) {
@@ -560,20 +541,21 @@ class Reader {
       fail(path, "missing \"normal\" (or \"normal_angle\"), which every contact needs");
     }
     if (normal != nullptr) {
-      c.normal = vector(*normal, child(path, "normal"));
+      c.normal = vector(*normal, member_place(path, "normal"));
     } else if (dimension_ != 2) {
-      fail(child(path, "normal_angle"),
+      fail(member_place(path, "normal_angle"),
            "does not apply in dimension 1 (give \"normal\": +1 or -1)");
     } else {
       // Degrees counter-clockwise from the x axis, exact at multiples of 90 (a finite number:
       // the reader refuses any other).
-      c.normal = UnitNormal::from_degrees(number(*angle, child(path, "normal_angle"))).vector();
+      c.normal =
+          UnitNormal::from_degrees(number(*angle, member_place(path, "normal_angle"))).vector();
     }
     if (const json* point = optional(value, "point")) {
-      c.point = vector(*point, child(path, "point"));
+      c.point = vector(*point, member_place(path, "point"));
     }
     if (const json* f = optional(value, "friction")) {
-      c.friction = number(*f, child(path, "friction"));  // its range is the library's rule
+      c.friction = number(*f, member_place(path, "friction"));  // its range is the library's rule
     }
     return c;
   }
@@ -585,21 +567,22 @@ class Reader {
     refuse_unknown_keys(value, path, solver_keys, solver_keys, "");
     SolverOptions& options = scene.solver;
     if (const json* d = optional(value, "dependent")) {
-      options.dependent = member_of<DependentPolicy>(*d, child(path, "dependent"));
+      options.dependent = member_of<DependentPolicy>(*d, member_place(path, "dependent"));
     }
     if (const json* i = optional(value, "inconsistent")) {
-      options.inconsistent = member_of<InconsistentPolicy>(*i, child(path, "inconsistent"));
+      options.inconsistent = member_of<InconsistentPolicy>(*i, member_place(path, "inconsistent"));
     }
     if (const json* m = optional(value, "method")) {
-      scene.method = member_of<methods::Method>(*m, child(path, "method"));
+      scene.method = member_of<methods::Method>(*m, member_place(path, "method"));
     }
     if (const json* r = optional(value, "restitution")) {
-      scene.restitution = member_of<friction::RestitutionLaw>(*r, child(path, "restitution"));
+      scene.restitution =
+          member_of<friction::RestitutionLaw>(*r, member_place(path, "restitution"));
     }
     if (const json* c = optional(value, "max_collisions")) {
       // The type is a whole number of collisions, at least 1 (0 is not written: a scene without
       // the key gets the default); the bound above is the scene's rule, the same number.
-      const std::string where = child(path, "max_collisions");
+      const std::string where = member_place(path, "max_collisions");
       const double most = static_cast<double>(methods::most_collisions);
       const double bound = c->is_number() ? c->get<double>() : 0.0;
       if (!(bound >= 1.0 && bound <= most && bound == std::floor(bound))) {
