@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "check_command.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "app.hpp"
 #include "derivations/check.hpp"
 #include "derivations/derivation.hpp"
+#include "impulse/core/error.hpp"
 #include "output.hpp"
 
 namespace impulselab {
@@ -18,7 +22,9 @@ namespace {
 namespace check = impulse::derivations;
 
 struct CheckOptions {
-  std::string file;  // a derivation file (NOTES.md); empty: the paper
+  std::vector<std::string> files;  // derivation files or folders of them; empty: the paper
+  std::string task;                // a task file the derivation files are submissions to
+  double step_seconds = 2.0;       // each step's time budget
   std::string format = "text";
   std::string section;
   std::size_t samples = 10000;
@@ -30,20 +36,12 @@ struct CheckOptions {
 check::Format format_named(const std::string& name) {
   return name == "json"       ? check::Format::json
          : name == "markdown" ? check::Format::markdown
+         : name == "csv"      ? check::Format::csv
                               : check::Format::text;
 }
 
-// A student's derivation: every display equation of the file, line by line.
-void check_file(const CheckOptions& options) {
-  const std::string& path = options.file;
-  if (!path.ends_with(".md")) {
-    throw UsageError(path +
-                     ": expected a derivation file, whose name ends in .md (without a "
-                     "file, check checks the paper)");
-  }
-  if (!options.section.empty()) {
-    throw UsageError("--section selects sections of the paper; it does not apply to " + path);
-  }
+// A derivation file's text, refused with its place when it is too large.
+std::string read_derivation(const std::string& path) {
   // A regular file larger than the limit is refused before it is read; anything else is read
   // up to one byte past the limit, which the reader then refuses with its place.
   std::error_code error;
@@ -53,7 +51,10 @@ void check_file(const CheckOptions& options) {
                       std::to_string(check::max_derivation_bytes >> 20) + " MiB, this one holds " +
                       std::to_string(std::filesystem::file_size(path, error)) + " bytes");
   }
-  std::string text = read_file(path, check::max_derivation_bytes);
+  return read_file(path, check::max_derivation_bytes);
+}
+
+check::DerivationOptions settings_of(const CheckOptions& options) {
   check::DerivationOptions settings;
   settings.seed = options.seed;
   if (options.samples_given) {
@@ -63,25 +64,147 @@ void check_file(const CheckOptions& options) {
     }
     settings.samples = options.samples;
   }
-  check::DerivationReport report;
-  try {
-    report = check::check_derivation(std::move(text), path, settings);
-  } catch (const check::DerivationError& e) {
-    throw PlacedError(path + ":" + std::to_string(e.line()) + ":" + std::to_string(e.column()) +
-                      ": " + e.what());
+  if (!(options.step_seconds > 0) || options.step_seconds > 3600) {
+    throw UsageError("--step-seconds: expected a time from 0 to 3600 seconds");
   }
+  settings.step_seconds = options.step_seconds;
+  return settings;
+}
+
+// The derivation files named: files ending in .md, and the .md files of folders (sorted).
+std::vector<std::string> derivation_paths(const std::vector<std::string>& named) {
+  std::vector<std::string> paths;
+  for (const std::string& path : named) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) {
+      std::vector<std::string> inside;
+      for (const auto& entry : std::filesystem::directory_iterator(path, error)) {
+        if (entry.path().extension() == ".md" && entry.is_regular_file(error)) {
+          inside.push_back(entry.path().string());
+        }
+      }
+      if (inside.empty()) {
+        throw UsageError(path + ": expected a folder that holds derivation files (.md)");
+      }
+      std::sort(inside.begin(), inside.end());
+      paths.insert(paths.end(), inside.begin(), inside.end());
+      continue;
+    }
+    if (!path.ends_with(".md")) {
+      throw UsageError(path +
+                       ": expected a derivation file, whose name ends in .md, or a folder of "
+                       "them (without a file, check checks the paper)");
+    }
+    paths.push_back(path);
+  }
+  return paths;
+}
+
+// One file checked (against the task when there is one): its report, or its refusal.
+check::FileRow check_one(const std::string& path, const std::optional<check::Task>& task,
+                         const check::DerivationOptions& settings) {
+  check::FileRow row;
+  row.file = path;
+  try {
+    std::string text = read_derivation(path);
+    row.report = task ? check::check_derivation(std::move(text), path, *task, settings)
+                      : check::check_derivation(std::move(text), path, settings);
+    row.exit = check::exit_status(*row.report);
+  } catch (const check::DerivationError& e) {
+    row.error =
+        path + ":" + std::to_string(e.line()) + ":" + std::to_string(e.column()) + ": " + e.what();
+    row.exit = exit_usage;
+  } catch (const PlacedError& e) {
+    row.error = e.what();
+    row.exit = exit_usage;
+  } catch (const impulse::InvalidInput& e) {
+    row.error = e.what();
+    row.exit = exit_usage;
+  }
+  return row;
+}
+
+// Why a report fails, for the message on standard error.
+std::string failure_of(const check::DerivationReport& report) {
+  for (const auto& e : report.equations) {
+    if (check::fails(e.verdict)) {
+      return report.file + ": line " + std::to_string(e.line) + " " +
+             std::string(check::to_string(e.verdict)) + " (the first equation that does not pass)";
+    }
+  }
+  if (report.task && !report.task->target_reached) {
+    return report.file + ": the task's target is not reached (" + report.task->reason + ")";
+  }
+  return report.file + ": fails";
+}
+
+// Students' derivations: every display equation of each file, line by line; with several files,
+// one summary row each; with a task, each judged against it.
+void check_files(const CheckOptions& options) {
+  if (!options.section.empty()) {
+    throw UsageError(
+        "--section selects sections of the paper; it does not apply to derivation "
+        "files");
+  }
+  const check::DerivationOptions settings = settings_of(options);
+  std::optional<check::Task> task;
+  if (!options.task.empty()) {
+    task = check::Task{read_derivation(options.task), options.task};
+  }
+  const std::vector<std::string> paths = derivation_paths(options.files);
   const check::Format format = format_named(options.format);
+  std::vector<check::FileRow> rows;
+  for (const std::string& path : paths) {
+    try {
+      rows.push_back(check_one(path, task, settings));
+    } catch (const check::TaskError& e) {
+      throw PlacedError(options.task + ":" + std::to_string(e.line()) + ":" +
+                        std::to_string(e.column()) + ": " + e.what());
+    }
+  }
+  const bool one = rows.size() == 1 && options.files.size() == 1 &&
+                   !std::filesystem::is_directory(options.files[0]);
+  if (one && !rows[0].report) {
+    throw PlacedError(rows[0].error);
+  }
   const bool colour = format == check::Format::text && colour_wanted(options.output);
-  const std::string rendered = check::render(report, format, colour);
-  write_output(options.output, [&](std::FILE* out) { std::fputs(rendered.c_str(), out); });
-  if (check::exit_status(report) != 0) {
-    for (const auto& e : report.equations) {
-      if (check::fails(e.verdict)) {
-        throw WorkFailed(path + ": line " + std::to_string(e.line) + " " +
-                         std::string(check::to_string(e.verdict)) +
-                         " (the first equation that does not pass)");
+  std::string rendered;
+  if (one) {
+    rendered = check::render(*rows[0].report, format, colour);
+  } else if (format == check::Format::text || format == check::Format::markdown) {
+    for (const check::FileRow& row : rows) {
+      if (row.report) {
+        rendered += check::render(*row.report, format, colour) + "\n";
       }
     }
+    rendered += check::render_rows(rows, format);
+  } else {
+    rendered = check::render_rows(rows, format);
+  }
+  write_output(options.output, [&](std::FILE* out) { std::fputs(rendered.c_str(), out); });
+  int worst = exit_success;
+  std::string why;
+  for (const check::FileRow& row : rows) {
+    if (row.exit == exit_usage && !one) {
+      std::fprintf(stderr, "%s\n", row.error.c_str());
+    }
+    if (row.exit > worst) {
+      worst = row.exit;
+      why = row.report ? failure_of(*row.report) : row.error;
+    }
+  }
+  if (worst == exit_usage) {
+    throw PlacedError(std::to_string(std::count_if(rows.begin(), rows.end(),
+                                                   [](const auto& r) { return r.exit == 2; })) +
+                      " of " + std::to_string(rows.size()) +
+                      " files could not be read (first: " + why + ")");
+  }
+  if (worst == exit_failure) {
+    throw WorkFailed(
+        one ? why
+            : std::to_string(std::count_if(rows.begin(), rows.end(),
+                                           [](const auto& r) { return r.exit == 1; })) +
+                  " of " + std::to_string(rows.size()) + " files fail (first: " + why + ")");
   }
 }
 
@@ -102,9 +225,15 @@ std::string known_sections() {
 }
 
 void run_checks(const CheckOptions& options) {
-  if (!options.file.empty()) {
-    check_file(options);
+  if (!options.files.empty()) {
+    check_files(options);
     return;
+  }
+  if (!options.task.empty()) {
+    throw UsageError("--task needs the derivation files to judge against it");
+  }
+  if (options.format == "csv") {
+    throw UsageError("--format csv is for derivation files (one row per file)");
   }
   check::Report report;
   try {
@@ -151,10 +280,18 @@ void add_check_command(CLI::App& app) {
       "derivation file (NOTES.md: Markdown with $$ display equations $$), check it instead, line "
       "by line: each step follows, follows one way, follows if a condition holds, or does not "
       "follow (with what is left over and values that break it).");
-  verb->add_option("file", options->file,
-                   "a derivation file to check (its name ends in .md); without it, the paper");
-  verb->add_option("--format,-f", options->format, "text (the default), markdown or json")
-      ->check(CLI::IsMember({"text", "markdown", "json"}));
+  verb->add_option("files", options->files,
+                   "derivation files to check (their names end in .md) or folders of them; "
+                   "without them, the paper");
+  verb->add_option("--task", options->task,
+                   "a task file (given: premises, target: equation): each derivation file must "
+                   "use only its premises and reach its target");
+  verb->add_option("--step-seconds", options->step_seconds,
+                   "each step's time budget in seconds (default 2): past it, the step is "
+                   "undecided");
+  verb->add_option("--format,-f", options->format,
+                   "text (the default), markdown, json, or csv (derivation files: one row each)")
+      ->check(CLI::IsMember({"text", "markdown", "json", "csv"}));
   verb->add_option("--section,-s", options->section,
                    "only this section of the paper and its subsections, e.g. 4 or 1.3, or friction "
                    "(beyond the paper)");

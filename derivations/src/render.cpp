@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <map>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 
 #include "derivations/check.hpp"
+#include "models/model.hpp"
 #include "numeric.hpp"
+#include "typeset.hpp"
 
 namespace impulse::derivations {
 
@@ -177,20 +181,6 @@ std::string render_text(const Report& report, bool colour) {
   return out.str();
 }
 
-const char* mark(Status status) {
-  switch (status) {
-    case Status::verified:
-      return "verified";
-    case Status::erratum:
-      return "**erratum**";
-    case Status::refuted:
-      return "**refuted**";
-    case Status::failed:
-      return "**FAILED**";
-  }
-  return "";
-}
-
 // A statement as MathJax 2 displays it: the statement keeps its \tag where the paper's file puts
 // it (inside a gathered block, say), which MathJax refuses there; the tag goes to the end (the
 // check's label when the statement has none), the \labels (names the files give rows for their
@@ -216,72 +206,269 @@ std::string displayed(const Check& check) {
   return shown_tag.empty() ? shown : shown + " " + shown_tag;
 }
 
-// The table of a list of checks, then each check under its section's heading (the headings
-// one level deeper beyond the paper).
-void markdown_part(std::ostringstream& out, const std::vector<Result>& results,
-                   const std::string& level) {
+// --- Markdown: the report as the documentation shows it -----------------------------------------
+
+// A verdict in the colour of its status (docs/impulselab.css).
+std::string mark(Status status) {
+  const std::string name(to_string(status));
+  return "<span class=\"verdict " + name + "\">" + name + "</span>";
+}
+
+// The top-level part a check belongs to: "3" for "3.1", "friction" for "friction.2".
+std::string part_of(const std::string& section) {
+  return section.substr(0, section.find('.'));
+}
+
+// Our own short titles of the report's pages, one per top-level section.
+std::string part_title(const std::string& part) {
+  static const std::map<std::string, std::string, std::less<>> t{
+      {"1", "Bodies on a line"},
+      {"2", "Point masses in the plane"},
+      {"3", "A rigid body, one contact"},
+      {"4", "Point masses, many contacts"},
+      {"5", "Rigid bodies, many contacts"},
+      {"friction", "Friction"}};
+  const auto it = t.find(part);
+  return it == t.end() ? part : it->second;
+}
+
+bool numbered(const std::string& part) {
+  return !part.empty() &&
+         std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// The page of the site that explains a part, and the page of its report.
+std::string site_page(const std::string& part) {
+  return numbered(part) ? "section" + part : part;
+}
+std::string report_page(const std::string& part) {
+  return "check_report_" + part;
+}
+std::string part_label(const std::string& part) {
+  return (numbered(part) ? "§" + part + " " : "") + part_title(part);
+}
+
+// The page of the site that lists a derivation file's lines ("section1.md" → paper_section1,
+// "beyond/friction.md" → beyond_friction).
+std::string listing_page(const std::string& file) {
+  std::string stem = file.substr(0, file.rfind('.'));
+  if (stem.starts_with("beyond/")) {
+    return "beyond_" + stem.substr(std::string("beyond/").size());
+  }
+  return "paper_" + stem;
+}
+std::string file_path(const std::string& file) {
+  return file.starts_with("beyond/") ? "derivations/" + file : "derivations/paper/" + file;
+}
+std::string line_link(const Check& check, std::size_t line) {
+  return "<a href=\"" + listing_page(check.file) + ".html#L" + std::to_string(line) + "\">line " +
+         std::to_string(line) + "</a>";
+}
+
+// A note with each "line N" it names linked to that line of the check's file.
+std::string linked_note(const Check& check, const std::string& note) {
+  static const std::regex line(R"(\bline ([0-9]+)\b)");
+  if (check.file.empty()) {
+    return note;
+  }
+  std::string out;
+  std::size_t at = 0;
+  for (auto it = std::sregex_iterator(note.begin(), note.end(), line); it != std::sregex_iterator();
+       ++it) {
+    out += note.substr(at, static_cast<std::size_t>(it->position()) - at);
+    out += line_link(check, std::stoul((*it)[1].str()));
+    at = static_cast<std::size_t>(it->position() + it->length());
+  }
+  return out + note.substr(at);
+}
+
+// What the statuses, the methods and the tolerances mean, with each model's thresholds.
+void legend(std::ostringstream& out) {
+  out << "## How to read it {#check_report_legend}\n\n"
+      << "Each check is a numbered equation of the paper (*equation*), a line of one of its "
+         "derivations that must follow from the lines before (*step*), or a statement of its "
+         "prose (*claim*). Its outcome is one of\n\n"
+      << "- " << mark(Status::verified) << ": it holds;\n"
+      << "- " << mark(Status::erratum)
+      << ": it does not hold as printed; the corrected form "
+         "shown with it does;\n"
+      << "- " << mark(Status::refuted)
+      << ": a claim that does not hold, with a counterexample "
+         "(or, where no case can exist, the argument);\n"
+      << "- " << mark(Status::failed)
+      << ": none of these, a defect of the checker (the site is "
+         "not built when one fails).\n\n"
+      << "The methods:\n\n"
+      << "- **symbolic**: exact computer algebra (GiNaC): the statement is reduced to zero, or to "
+         "a condition, with the definitions and facts of its file;\n"
+      << "- **numeric**: random configurations (GSL's random numbers) on which the statement is "
+         "evaluated in floating point, from the file's premises or from a model of the physics;\n"
+      << "- **quadrature**: the work a force does during the contact, integrated (GSL's "
+         "Gauss-Legendre rule) along the body's motion over forces shaped as pulses: constant, "
+         "half-sine, triangle, and one that peaks early;\n"
+      << "- **ode**: an independent continuous-time contact (springs, dampers, a rod on a penalty "
+         "spring) integrated by GSL's Runge-Kutta-Prince-Dormand 8(9);\n"
+      << "- **search**: a hunt for a counterexample over small whole numbers first, then random "
+         "values.\n\n"
+      << "**What verified means numerically.** At each point a statement's two sides are "
+         "compared relative to the size of its terms: |left − right| / size. The worst of these "
+         "over all points is the *max. relative error* of the tables. A statement holds on a "
+         "model when the worst is below the model's first threshold, and fails at a point above "
+         "its second; in between lies rounding, which decides nothing. A step of a file without "
+         "a model holds below 1e-09 and fails above 1e-06 (the same band). The models and their "
+         "thresholds:\n\n"
+      << "| method | model | holds below | fails above |\n|---|---|---|---|\n";
+  for (const models::Model& m : models::all()) {
+    out << "| " << name_of(m.method) << " | " << m.name << " | " << num::brief(m.holds_below, 2)
+        << " | " << num::brief(m.fails_above, 2) << " |\n";
+  }
+  out << "\nA check is verified when its exact method proves it, or, where algebra cannot reach "
+         "(integrals over pulses, a simulated contact), when every model it names holds; an exact "
+         "proof that a random point then contradicts is a failure, never a pass.\n\n";
+}
+
+// The table of a list of checks.
+void check_table(std::ostringstream& out, const std::vector<const Result*>& results) {
   out << "| check | equation | kind | status | methods | max. relative error |\n"
       << "|---|---|---|---|---|---|\n";
-  for (const Result& r : results) {
-    out << "| \\ref " << anchor(r.check.id) << " \"" << r.check.id << "\" | "
-        << r.check.equation.value_or("") << " | " << to_string(r.check.kind) << " | "
-        << mark(r.outcome.status) << " | " << methods_list(r.outcome.methods) << " | "
-        << error_text(r.outcome) << " |\n";
-  }
-  std::string current;
-  for (const Result& r : results) {
-    if (r.check.section != current) {
-      current = r.check.section;
-      out << "\n" << level << " " << current << " " << title(current);
-      // Beyond the paper the section's heading is a Doxygen subsection (it needs an id) around
-      // its checks' subsubsections.
-      if (level != "##") {
-        out << " {#beyond-" << anchor(current).substr(std::string("check-").size()) << "}";
-      }
-      out << "\n";
-    }
-    out << "\n"
-        << level << "# " << r.check.id << (r.check.equation ? " " + *r.check.equation : "") << " {#"
-        << anchor(r.check.id) << "}\n\n"
-        << "\\f[ " << displayed(r.check) << " \\f]\n\n"
-        << "- kind: " << to_string(r.check.kind) << "\n"
-        << "- status: " << mark(r.outcome.status) << "\n"
-        << "- methods: " << methods_list(r.outcome.methods) << "\n";
-    if (r.outcome.max_relative_error) {
-      out << "- worst relative error: " << error_text(r.outcome) << " over "
-          << r.outcome.samples.value_or(0) << " samples\n";
-    }
-    if (!r.outcome.explanation.empty()) {
-      out << "- what goes wrong: " << r.outcome.explanation << "\n";
-    }
-    if (!r.outcome.correction.empty()) {
-      out << "- correction: \\f$ " << r.outcome.correction << " \\f$\n";
-    }
-    if (!r.outcome.counterexample.empty()) {
-      out << "- counterexample: " << r.outcome.counterexample << "\n";
-    }
-    if (!r.outcome.note.empty()) {
-      out << "- note: " << r.outcome.note << "\n";
-    }
+  for (const Result* r : results) {
+    out << "| \\ref " << anchor(r->check.id) << " \"" << r->check.id << "\" | "
+        << r->check.equation.value_or("") << " | " << to_string(r->check.kind) << " | "
+        << mark(r->outcome.status) << " | " << methods_list(r->outcome.methods) << " | "
+        << error_text(r->outcome) << " |\n";
   }
 }
 
-// Markdown for the Doxygen site: math in \f[ \f], each check a heading with an anchor.
+// One check's entry: its statement, outcome, methods, file line, evidence.
+void check_entry(std::ostringstream& out, const Result& r, const std::string& level) {
+  out << "\n"
+      << level << " " << r.check.id << (r.check.equation ? " " + *r.check.equation : "") << " {#"
+      << anchor(r.check.id) << "}\n\n"
+      << "\\f[ " << displayed(r.check) << " \\f]\n\n"
+      << "- kind: " << to_string(r.check.kind) << "\n"
+      << "- status: " << mark(r.outcome.status) << "\n"
+      << "- methods: " << methods_list(r.outcome.methods) << "\n";
+  if (!r.check.file.empty()) {
+    out << "- in the checker's file: <a href=\"" << listing_page(r.check.file) << ".html#L"
+        << r.check.line << "\">" << file_path(r.check.file) << ", line " << r.check.line
+        << "</a>\n";
+  }
+  if (r.outcome.max_relative_error) {
+    out << "- worst relative error: " << error_text(r.outcome) << " over "
+        << r.outcome.samples.value_or(0) << " samples\n";
+  }
+  if (!r.outcome.explanation.empty()) {
+    out << "- what goes wrong: " << r.outcome.explanation << "\n";
+  }
+  if (!r.outcome.correction.empty()) {
+    const typeset::Marked marked = typeset::mark_changes(r.check.statement, r.outcome.correction);
+    std::string corrected = marked.corrected;
+    if (corrected.find("\\\\") != std::string::npos &&
+        corrected.find("\\begin{") == std::string::npos) {
+      corrected = "\\begin{gathered} " + corrected + " \\end{gathered}";
+    }
+    out << "- correction, the terms that change boxed: \\f[ " << corrected << " \\f]\n";
+  }
+  if (!r.outcome.counterexample.empty()) {
+    out << (typeset::refuted_by_argument(r.outcome.counterexample)
+                ? "- refuted by the argument of what goes wrong; the search agrees: "
+                : "- counterexample: ")
+        << "<span class=\"counterexample\">"
+        << typeset::counterexample_markdown(r.outcome.counterexample) << "</span>\n";
+  }
+  if (!r.outcome.note.empty()) {
+    out << "- note: " << linked_note(r.check, r.outcome.note) << "\n";
+  }
+}
+
+void part_page(std::ostringstream& out, const std::string& part,
+               const std::vector<const Result*>& results, const std::string& previous,
+               const std::string& next) {
+  out << "\n\\page " << report_page(part) << " Report: " << part_label(part) << "\n\n"
+      << "<div class=\"breadcrumbs\">\\ref index \"ImpulseLab\" › \\ref check_report \"Report\" › "
+      << part_label(part) << "</div>\n\n"
+      << "<div class=\"pager\">"
+      << (previous.empty()
+              ? "\\ref check_report \"← The report\""
+              : "\\ref " + report_page(previous) + " \"← " + part_label(previous) + "\"")
+      << " <span class=\"pager-sep\">|</span> \\ref " << site_page(part) << " \""
+      << part_label(part) << " on the site\" <span class=\"pager-sep\">|</span> "
+      << (next.empty() ? "\\ref errata \"Errata →\""
+                       : "\\ref " + report_page(next) + " \"" + part_label(next) + " →\"")
+      << "</div>\n\n"
+      << "Every check of " << part_label(part) << " (\\ref check_report_legend \"how to read "
+      << "them\"); the statements as \\ref " << site_page(part)
+      << " \"the section's page\" explains them.\n\n";
+  check_table(out, results);
+  std::string current;
+  for (const Result* r : results) {
+    if (r->check.section != current) {
+      current = r->check.section;
+      out << "\n## " << current << " " << title(current) << " {#report-"
+          << anchor(current).substr(std::string("check-").size()) << "}\n";
+    }
+    check_entry(out, *r, "###");
+  }
+}
+
+// Markdown for the Doxygen site: the report's first page (summary, legend, the parts), then a
+// page per top-level section (\page), math in \f[ \f], each check a heading with an anchor.
 std::string render_markdown(const Report& report) {
   std::ostringstream out;
+  const auto grouped = [](const std::vector<Result>& results) {
+    std::vector<std::pair<std::string, std::vector<const Result*>>> parts;
+    for (const Result& r : results) {
+      const std::string part = part_of(r.check.section);
+      if (parts.empty() || parts.back().first != part) {
+        parts.push_back({part, {}});
+      }
+      parts.back().second.push_back(&r);
+    }
+    return parts;
+  };
+  const auto paper = grouped(report.results);
+  const auto beyond = grouped(report.beyond.results);
+  const auto part_rows =
+      [&](const std::vector<std::pair<std::string, std::vector<const Result*>>>& parts) {
+        out << "| part | checks | verified | errata | refuted | failed "
+               "|\n|---|---:|---:|---:|---:|---:|\n";
+        for (const auto& [part, results] : parts) {
+          Summary s;
+          for (const Result* r : results) {
+            (r->outcome.status == Status::verified  ? s.verified
+             : r->outcome.status == Status::erratum ? s.erratum
+             : r->outcome.status == Status::refuted ? s.refuted
+                                                    : s.failed)++;
+          }
+          out << "| \\subpage " << report_page(part) << " \"" << part_label(part) << "\" | "
+              << results.size() << " | " << s.verified << " | " << s.erratum << " | " << s.refuted
+              << " | " << s.failed << " |\n";
+        }
+      };
   out << "# Derivation check report {#check_report}\n\n"
       << "Every numbered equation, derivation step and claim of the paper, checked by "
          "`impulselab check` (seed "
       << report.options.seed << ", " << report.options.samples
       << " samples per numeric method).\n\n"
       << "**Summary:** " << summary_line(report.summary) << ".\n\n";
-  markdown_part(out, report.results, "##");
+  if (!paper.empty()) {
+    out << "One page per section of the paper:\n\n";
+    part_rows(paper);
+    out << "\n";
+  }
+  legend(out);
   if (!report.beyond.results.empty()) {
     out << "\n## " << beyond_title(report.beyond) << " {#check_beyond_the_paper}\n\n"
         << "Our own derivations beyond the paper (derivations/beyond/), checked by the same "
            "engine and counted apart from the paper's checks.\n\n"
         << "**Summary beyond the paper:** " << summary_line(report.beyond.summary) << ".\n\n";
-    markdown_part(out, report.beyond.results, "###");
+    part_rows(beyond);
+  }
+  std::vector<std::pair<std::string, std::vector<const Result*>>> all = paper;
+  all.insert(all.end(), beyond.begin(), beyond.end());
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    part_page(out, all[k].first, all[k].second, k > 0 ? all[k - 1].first : "",
+              k + 1 < all.size() ? all[k + 1].first : "");
   }
   return out.str();
 }
@@ -364,8 +551,10 @@ std::string render(const Report& report, Format format, bool colour) {
       return render_markdown(report);
     case Format::json:
       return render_json(report);
+    case Format::csv:
+      break;  // rows of derivation files only (render_rows)
   }
-  return {};
+  throw std::invalid_argument("the paper's report is text, markdown or json");
 }
 
 }  // namespace impulse::derivations

@@ -28,7 +28,9 @@ TEST_CASE("check NOTES.md: every step follows, exit 0", "[cli][derivations]") {
   REQUIRE(r.status == 0);
   CHECK(r.err.empty());
   CHECK_THAT(r.out, Contains("follows-if"));
-  CHECK_THAT(r.out, Contains("Every step follows."));
+  // The summary names the step that holds only under its condition: no bare "Every step follows."
+  CHECK_THAT(r.out, Contains("Every step follows, but one step holds only under a condition the "
+                             "facts do not give: line"));
 }
 
 TEST_CASE("check NOTES.md: a slip, exit 1, its line stands out", "[cli][derivations]") {
@@ -128,4 +130,48 @@ TEST_CASE("check NOTES.md: hostile files end in exit 2, never a crash", "[cli][d
     CHECK(r.status == 2);
     CHECK_THAT(r.err, Contains("cannot read"));
   }
+}
+
+TEST_CASE("check several files and a folder: a row each, the worst exit status",
+          "[cli][derivations]") {
+  const t::Run r = t::run("check " + derivation("s3-elastic.md") + " " +
+                          derivation("slip-sign-1-1.md") + " --format csv");
+  REQUIRE(r.status == 1);  // the slip's file fails
+  CHECK_THAT(r.out, StartsWith("file,exit,equations,premise,follows,"));
+  CHECK_THAT(r.out, Contains("s3-elastic.md,0,"));
+  CHECK_THAT(r.out, Contains("slip-sign-1-1.md,1,"));
+  CHECK_THAT(r.err, Contains("1 of 2 files fail"));
+  const t::Run text =
+      t::run("check " + derivation("s3-elastic.md") + " " + derivation("slip-sign-1-1.md"));
+  CHECK_THAT(text.out, Contains("Summary of 2 files:"));
+  const t::Run folder =
+      t::run("check " + t::quote(IMPULSELAB_DERIVATION_FILES_DIR) + " --format json");
+  REQUIRE(folder.status == 1);  // the folder holds the slips
+  const json rows = json::parse(folder.out);
+  CHECK(rows.at("files").size() > 30);
+  CHECK(rows.at("exit") == 1);
+}
+
+TEST_CASE("check --task: the target reached, or not, and why", "[cli][derivations]") {
+  const std::string task = std::string(IMPULSELAB_TASKS_DIR) + "/inelastic-energy-lost/";
+  const t::Run good =
+      t::run("check --task " + t::quote(task + "task.md") + " " + t::quote(task + "correct-a.md"));
+  REQUIRE(good.status == 0);
+  CHECK_THAT(good.out, Contains("the target is reached at line 19"));
+  const t::Run assumed = t::run("check --task " + t::quote(task + "task.md") + " " +
+                                t::quote(task + "assumes-target.md") + " --format json");
+  REQUIRE(assumed.status == 1);
+  const json report = json::parse(assumed.out);
+  CHECK(report.at("task").at("target_reached") == false);
+  CHECK(report.at("task").at("reason") == "target-assumed");
+  CHECK(report.at("task").at("extra_premises") == json::array({10}));
+  const t::Run no_target =
+      t::run("check --task " + derivation("s3-elastic.md") + " " + t::quote(task + "correct-a.md"));
+  CHECK(no_target.status == 2);
+  CHECK_THAT(no_target.err, Contains("expected target:"));
+}
+
+TEST_CASE("check --step-seconds: a time budget, checked", "[cli][derivations]") {
+  CHECK(t::run("check " + derivation("s3-elastic.md") + " --step-seconds 0").status == 2);
+  CHECK(t::run("check " + derivation("s3-elastic.md") + " --step-seconds 5").status == 0);
 }

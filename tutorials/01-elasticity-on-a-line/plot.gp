@@ -6,7 +6,7 @@ cli = outdir."/sweep.csv"
 
 set xrange [0:3]
 set xtics 0.5
-set xlabel "elasticity e (= 1 + coefficient of restitution)"
+set xlabel "elasticity e (dimensionless; = 1 + coefficient of restitution)"
 # The regions of section 1.3: below 1 the bodies still approach after the collision, above 2
 # the collision adds energy.
 set object 1 rect from 0,graph 0 to 1,graph 1 behind fc rgb "#fdf1dc" fs solid noborder
@@ -17,7 +17,7 @@ set label 3 "energy gained" at 2.5,graph 0.06 center
 
 set output file("energy")
 set title "Lab 1: kinetic energy after a head-on collision"
-set ylabel "kinetic energy"
+set ylabel "kinetic energy (J)"
 set key top left Left reverse
 if (sweep) {
   plot data using "elasticity":"energy_before" with lines lt 8 dt 2 title "before the collision", \
@@ -30,7 +30,7 @@ if (sweep) {
 
 set output file("relative-velocity")
 set title "Lab 1: relative velocity after the collision"
-set ylabel "relative velocity, v_2 - v_1"
+set ylabel "relative velocity v_2 - v_1 (m/s)"
 set key bottom right Left reverse
 set offsets 0, 0, 1, 4
 set label 1 at 0.5,graph 0.93

@@ -11,7 +11,7 @@ set xzeroaxis lt 7 lw 1
 
 set output file("normal")
 set title "Lab 2: velocity components along the normal n"
-set ylabel "velocity along the normal"
+set ylabel "velocity along the normal (m/s)"
 set yrange [-1.15:1.1]
 set key bottom center Left reverse maxrows 2
 plot data using "angle":"a_normal_after" every 2 with points lt 1 pt 6 ps 1.6 title "A after", \
@@ -21,7 +21,7 @@ plot data using "angle":"a_normal_after" every 2 with points lt 1 pt 6 ps 1.6 ti
 
 set output file("tangential")
 set title "Lab 2: velocity components along the tangent t"
-set ylabel "velocity along the tangent"
+set ylabel "velocity along the tangent (m/s)"
 set yrange [-1.1:1.1]
 set key top right Left reverse
 plot data using "angle":"a_tangent_after" every 2 with points lt 1 pt 6 ps 1.6 title "A after", \
@@ -31,7 +31,7 @@ plot data using "angle":"a_tangent_after" every 2 with points lt 1 pt 6 ps 1.6 t
 
 set output file("velocities")
 set title "Lab 2: the pucks' velocities after, in the plane's axes"
-set ylabel "velocity component after"
+set ylabel "velocity component after (m/s)"
 set yrange [-1.3:1.1]
 set key bottom center Left reverse maxrows 2
 plot data using "angle":"a_vx" with linespoints lt 1 pi 3 title "A, x", \

@@ -11,7 +11,7 @@ closed(e, a) = e / (1 + 3 * cos(a * deg)**2)
 
 set output file("impulse")
 set title "Lab 3: the impulse at the landing end"
-set ylabel "impulse F dt"
+set ylabel "impulse F dt (N s)"
 set yrange [0:2.1]
 set key top left Left reverse
 set samples 181
@@ -24,7 +24,7 @@ plot data using "angle":"impulse_e1" every 3 with points lt 1 pt 7 title "librar
 
 set output file("spin")
 set title "Lab 3: the rod's spin after landing"
-set ylabel "angular velocity after"
+set ylabel "angular velocity after (rad/s)"
 set yrange [0:*]
 set key bottom left Left reverse
 plot data using "angle":"spin_e1" with linespoints lt 1 pi 5 title "e = 1 (restitution 0)", \
@@ -33,7 +33,7 @@ plot data using "angle":"spin_e1" with linespoints lt 1 pi 5 title "e = 1 (resti
 
 set output file("energy-share")
 set title "Lab 3: the share of the kinetic energy after that is rotation"
-set ylabel "rotational energy / kinetic energy, after"
+set ylabel "rotational energy / kinetic energy, after (dimensionless)"
 set yrange [0:1.05]
 set key bottom center Left reverse
 plot data using "angle":"rotation_share_e1" with linespoints lt 1 pi 5 title "e = 1", \

@@ -84,10 +84,10 @@ int main(int argc, char** argv) {
     }
   }
 
-  // 2. The bead in a shallow V: the supports' normals lean in, by angles a1 (left support, normal
-  //    leaning right) and a2 (right support, leaning left), a1 + a2 = tilt. Any tilt makes the
-  //    two normals independent and the answer unique; it is recorded as the share of the impulse
-  //    carried by the left support, against a1 / tilt.
+  // 2. The bead in a shallow V: the supports' normals lean in, by angles beta1 (left support,
+  //    normal leaning right) and beta2 (right support, leaning left), beta1 + beta2 = tilt (not
+  //    the paper's a_1, a_2). Any tilt makes the two normals independent and the answer unique; it
+  //    is recorded as the share of the impulse carried by the left support, against beta1 / tilt.
   {
     lab::Csv csv(out / "tilt.csv", {"left_fraction", "share_tilt_2", "share_tilt_30", "rank_tilt_2",
                                     "rank_tilt_30", "vy_after_tilt_2", "vy_after_tilt_30"});
@@ -98,10 +98,10 @@ int main(int argc, char** argv) {
       double vy[2] = {0.0, 0.0};
       const double tilts[2] = {2.0, 30.0};
       for (int k = 0; k < 2; ++k) {
-        const double a1 = fraction * tilts[k] * std::numbers::pi / 180;
-        const double a2 = (1 - fraction) * tilts[k] * std::numbers::pi / 180;
+        const double beta1 = fraction * tilts[k] * std::numbers::pi / 180;
+        const double beta2 = (1 - fraction) * tilts[k] * std::numbers::pi / 180;
         const auto contacts =
-            two_contacts({std::sin(a1), std::cos(a1)}, {-std::sin(a2), std::cos(a2)});
+            two_contacts({std::sin(beta1), std::cos(beta1)}, {-std::sin(beta2), std::cos(beta2)});
         const mp::Resolution r = land(bead(), contacts, impulse::DependentPolicy::minimum_norm);
         share[k] = r.solution.Fdt(0) / (r.solution.Fdt(0) + r.solution.Fdt(1));
         rank[k] = static_cast<double>(r.solution.rank);

@@ -4,8 +4,8 @@ load common."/style.gp"
 set output file("lever")
 data = outdir."/lever.csv"
 set title "Lab 4: two contacts, a box (rank 2) and a bead (rank 1)"
-set xlabel "horizontal offset of the centre of mass (contacts at -1 and +1)"
-set ylabel "impulse at the contact"
+set xlabel "horizontal offset of the centre of mass (m; contacts at -1 m and +1 m)"
+set ylabel "impulse at the contact (N s)"
 set xrange [-1:1]
 set yrange [-0.05:2.1]
 set key top center Left reverse maxrows 3
@@ -18,8 +18,8 @@ plot data using "offset":"box_j1" with linespoints lt 1 pi 4 title "box, left co
 set output file("split")
 data = outdir."/tilt.csv"
 set title "Lab 4: a bead in a shallow V, which support takes the impulse?"
-set xlabel "share of the tilt given to the left support, a_1 / (a_1 + a_2)"
-set ylabel "share of the impulse on the left support"
+set xlabel "share of the tilt given to the left support, {/Symbol b}_1 / ({/Symbol b}_1 + {/Symbol b}_2) (dimensionless)"
+set ylabel "share of the impulse on the left support (dimensionless)"
 set xrange [0:1]
 set yrange [-0.05:1.15]
 set key bottom left Left reverse maxrows auto

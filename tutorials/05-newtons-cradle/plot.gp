@@ -6,8 +6,8 @@ set style data histograms
 set style histogram clustered gap 1.5
 set style fill solid 0.85 border rgb "#333333"
 set boxwidth 1
-set xlabel "ball (ball 1 arrives at speed 1, the others are at rest)"
-set ylabel "velocity after the collision"
+set xlabel "ball (ball 1 arrives at 1 m/s, the others are at rest)"
+set ylabel "velocity after the collision (m/s)"
 set yrange [-1.15:1.1]
 set ytics 0.25
 set xzeroaxis lt 7 lw 1
@@ -35,8 +35,8 @@ set output file("stiffness")
 set title "Lab 5: 3 balls joined by springs that only push, stiffer and stiffer"
 set logscale x
 set format x "10^{%L}"
-set xlabel "spring stiffness k (gaps of 0.001 where there are gaps)"
-set ylabel "velocity of ball 1 after"
+set xlabel "spring stiffness k (N/m^{/Symbol a}; gaps of 0.001 m where there are gaps)"
+set ylabel "velocity of ball 1 after (m/s)"
 set yrange [-0.8:0.05]
 set ytics 0.1
 set key bottom right Left reverse
@@ -51,8 +51,8 @@ plot 0 lt 2 dt 2 lw 2 title "serial answer: 0", \
 # Two contacts of different stiffness: k_2 = ratio * k_1.
 set output file("stiffness-ratio")
 set title "Lab 5: 3 touching balls, linear springs of different stiffness"
-set xlabel "stiffness ratio k_{23} / k_{12} (second contact over first)"
-set ylabel "velocity after"
+set xlabel "stiffness ratio k_{23} / k_{12} (dimensionless; second contact over first)"
+set ylabel "velocity after (m/s)"
 set yrange [-0.5:1.1]
 set ytics 0.25
 set key at graph 0.98, graph 0.67 top right Left reverse

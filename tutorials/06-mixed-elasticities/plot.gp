@@ -3,15 +3,15 @@ load common."/style.gp"
 
 set output file("gain-map")
 set title "Lab 6: energy change with elasticities 2 (body 1) and 1 (body 2)"
-set xlabel "velocity of body 1 (on the left), v_1"
-set ylabel "velocity of body 2 (on the right), v_2"
+set xlabel "velocity of body 1 (on the left), v_1 (m/s)"
+set ylabel "velocity of body 2 (on the right), v_2 (m/s)"
 set xrange [-3.025:3.025]
 set yrange [-3.025:3.025]
 set xtics 1
 set ytics 1
 set cbrange [-1:1]
 set cbtics 0.5
-set cblabel "energy change / ({/Symbol m} u^2 / 2)" offset 1,0
+set cblabel "energy change / ({/Symbol m} u^2 / 2) (dimensionless)" offset 1,0
 # Blues for a loss, reds for a gain, with a jump at zero so that the sign shows at a glance.
 set palette defined (-1 "#2166ac", 0 "#d1e5f0", 0 "#fddbc7", 1 "#b2182b")
 set key top left Left reverse opaque
@@ -32,8 +32,8 @@ set grid back lc rgb "#d0d0d0" lw 0.7
 
 set output file("frames")
 set title "Lab 6: the same collision seen by observers moving at w"
-set xlabel "observer's velocity w"
-set ylabel "energy change in the collision"
+set xlabel "observer's velocity w (m/s)"
+set ylabel "energy change in the collision (J)"
 set xrange [-1:3]
 set yrange [-0.6:2.1]
 set xtics 0.5
@@ -54,7 +54,7 @@ plot data using "boost":"mixed_energy_change" with linespoints lt 2 pi 4 title "
 
 set output file("frames-velocities")
 set title "Lab 6: the velocities after, brought back to the ground frame"
-set ylabel "velocity after, in the ground frame"
+set ylabel "velocity after, in the ground frame (m/s)"
 set yrange [-0.5:4.2]
 set key top left Left reverse maxrows 2 opaque
 plot data using "boost":"mixed_v1_after" with linespoints lt 2 pi 4 title "2 and 1: body 1", \

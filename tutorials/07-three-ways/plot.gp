@@ -10,13 +10,13 @@ set style data histograms
 set style histogram clustered gap 1.2
 set style fill solid 0.85 border rgb "#333333"
 set boxwidth 1
-set xlabel "ball"
+set xlabel "ball (a count)"
 set yrange [-2.5:3.5]
 set ytics 1
 set xzeroaxis lt 7 lw 1
 set key top left Left reverse font ",11"
 set xrange [-0.6:2.6]
-set ylabel "velocity after"
+set ylabel "velocity after (m/s)"
 set title "Newton's cradle: (3, 0, 0) before" font ",13"
 f = outdir."/cradle.csv"
 plot f using "simultaneous":xtic(1) lt 1 title "simultaneous", \
@@ -40,7 +40,7 @@ unset xzeroaxis
 unset title
 
 rod = outdir."/rod.csv"
-set xlabel "spin {/Symbol w} before"
+set xlabel "spin {/Symbol w} before (rad/s)"
 
 # --- The impulse at the rising end as the spin grows, at elasticity 2 and 1.
 set output file("three-ways-rod-impulse")
@@ -50,7 +50,7 @@ set yrange [-1.8:1.4]
 set ytics 0.5
 set xtics 2
 set key bottom left Left reverse font ",11"
-set ylabel "impulse Fdt at the rising end"
+set ylabel "impulse Fdt at the rising end (N s)"
 set title "elasticity 2" font ",13"
 plot rod using "omega":"serial_impulse_e2" lt 2 lw 5 title "serial", \
      rod using "omega":"simultaneous_impulse_e2" lt 1 title "simultaneous", \
@@ -69,7 +69,7 @@ set multiplot layout 1,2 title "Lab 7: the same rod, the approach speed of its r
 set yrange [-5:7.5]
 set ytics 2
 set key top left Left reverse font ",11"
-set ylabel "approach speed after at the rising end"
+set ylabel "approach speed after at the rising end (m/s)"
 set title "elasticity 2" font ",13"
 plot rod using "omega":"serial_approach_e2" lt 2 lw 5 title "serial", \
      rod using "omega":"simultaneous_approach_e2" lt 1 title "simultaneous", \
@@ -87,8 +87,8 @@ unset title
 # --- Serial collisions as the elasticity falls: inelastic collapse, cut off by the tolerance.
 set output file("three-ways-collisions")
 set title "Lab 7: how many serial collisions until no contact approaches"
-set xlabel "elasticity (1: perfectly inelastic, 2: perfectly elastic)"
-set ylabel "serial collisions"
+set xlabel "elasticity (dimensionless; 1: perfectly inelastic, 2: perfectly elastic)"
+set ylabel "serial collisions (a count)"
 set logscale y
 set yrange [1:300]
 set ytics (1, 2, 3, 5, 10, 20, 50, 100, 200)

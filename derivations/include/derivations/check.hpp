@@ -225,6 +225,7 @@ enum class Format {
   text,      ///< for people at a terminal
   markdown,  ///< for the documentation
   json,      ///< for programs (the contract of spec/cli-and-report.md)
+  csv,       ///< one row per derivation file (several files checked in one run)
 };
 
 /// @brief Renders a report.

@@ -116,12 +116,26 @@ struct EquationResult {
   double seconds = 0.0;            ///< wall time of its check
 };
 
+/// @brief What a submission made of its task (`impulselab check --task TASK.md FILE.md`).
+struct TaskResult {
+  std::string task;                 ///< how the task file was named
+  std::string target;               ///< the task's target, LaTeX
+  bool target_reached = false;      ///< a step equivalent to the target, and no premise the task
+                                    ///< does not give
+  std::optional<std::size_t> line;  ///< the first step equivalent to the target
+  std::vector<std::size_t> extra_premises;  ///< lines of premises the task does not give
+  /// "reached", "target-assumed" (an extra premise is the target), "extra-premise" or
+  /// "not-reached"
+  std::string reason;
+};
+
 /// @brief A checked derivation file.
 struct DerivationReport {
   std::string file;                       ///< how the file was named
   std::vector<EquationResult> equations;  ///< in the file's order
   std::size_t counts[7] = {};             ///< per verdict, in the order of all_verdicts
   double seconds = 0.0;                   ///< wall time of the check
+  std::optional<TaskResult> task;         ///< checked against a task: what it made of it
   /// @brief How many equations got @p verdict.
   /// @param verdict the verdict
   /// @return the count
@@ -170,11 +184,61 @@ class DerivationError : public std::runtime_error {
 [[nodiscard]] DerivationReport check_derivation(std::string text, const std::string& file,
                                                 const DerivationOptions& options = {});
 
+/// @brief A lecturer's task: a derivation file whose `given:` premises a submission may use and
+/// whose `target:` equation it must reach.
+struct Task {
+  std::string text;  ///< the task file's contents
+  std::string file;  ///< how errors name it
+};
+
+/// @brief Checks a submission against a task: every equation as check_derivation does, and
+/// also each premise it states must be one of the task's or follow from them, and one of its
+/// steps must be equivalent to the target (under the task's facts).
+/// @param text the submission's contents
+/// @param file how reports and errors name the submission
+/// @param task the task
+/// @param options seed, samples, time budget
+/// @return the verdicts and the task's result
+/// @throws DerivationError when the submission cannot be read; TaskError when the task cannot
+[[nodiscard]] DerivationReport check_derivation(std::string text, const std::string& file,
+                                                const Task& task,
+                                                const DerivationOptions& options = {});
+
+/// @brief A task file that cannot be read (or has no target): its place and what was expected.
+class TaskError : public std::runtime_error {
+ public:
+  /// @brief The task file's error.
+  TaskError(std::size_t line, std::size_t column, const std::string& message)
+      : std::runtime_error(message), line_(line), column_(column) {}
+  /// @brief 1-based line.
+  [[nodiscard]] std::size_t line() const { return line_; }
+  /// @brief 1-based column.
+  [[nodiscard]] std::size_t column() const { return column_; }
+
+ private:
+  std::size_t line_;
+  std::size_t column_;
+};
+
 /// @brief The exit status the contract gives a report: 1 when an equation does not follow, has
-/// mismatched dimensions or is undecided, else 0.
+/// mismatched dimensions or is undecided, or the task's target is not reached, else 0.
 /// @param report the checked file
 /// @return 0 or 1
 [[nodiscard]] int exit_status(const DerivationReport& report);
+
+/// @brief One file of a run over several: its report, or why it could not be read.
+struct FileRow {
+  std::string file;                        ///< how it was named
+  std::optional<DerivationReport> report;  ///< when it was read
+  std::string error;                       ///< when it was not: FILE:LINE:COLUMN: message
+  int exit = 0;                            ///< its exit status: 0, 1 or 2
+};
+
+/// @brief The summary of a run over several files, one row each: text, markdown, json or csv.
+/// @param rows the files, in the order they were checked
+/// @param format the format
+/// @return the rendered summary
+[[nodiscard]] std::string render_rows(const std::vector<FileRow>& rows, Format format);
 
 /// @brief Renders a derivation report.
 /// @param report the checked file

@@ -244,7 +244,32 @@ ex exponential(const ex& y, const Facts& facts) {
 
 // (Π f^k)^(p/q): each factor whose power k is a multiple of q comes out as |f|^(k p/q), the
 // absolute value dropped where the facts give f's sign.
-ex root_taken(const ex& base, const numeric& exponent, const Facts& facts) {
+ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts) {
+  // A polynomial under the root factored where that is cheap: M^2 + 2 M m + m^2 is (M + m)^2.
+  const auto factored = [](const ex& f) {
+    if (is_a<GiNaC::add>(f) && factorable(f)) {
+      try {
+        return GiNaC::factor(f);
+      } catch (const std::exception&) {
+      }
+    }
+    return f;
+  };
+  ex base = 1;
+  const auto each = [&](const ex& f) {
+    if (is_a<GiNaC::power>(f)) {
+      base *= GiNaC::pow(factored(f.op(0)), f.op(1));
+    } else {
+      base *= factored(f);
+    }
+  };
+  if (is_a<GiNaC::mul>(given_base)) {
+    for (std::size_t i = 0; i < given_base.nops(); ++i) {
+      each(given_base.op(i));
+    }
+  } else {
+    each(given_base);
+  }
   const numeric q = exponent.denom();
   ex outside = 1;
   ex inside = 1;
@@ -270,7 +295,7 @@ ex root_taken(const ex& base, const numeric& exponent, const Facts& facts) {
     one(base);
   }
   if (outside.is_equal(1)) {
-    return GiNaC::pow(base, exponent);
+    return GiNaC::pow(given_base, exponent);
   }
   return outside * GiNaC::pow(inside, exponent);
 }

@@ -12,20 +12,23 @@
 #include "derivations/derivation.hpp"
 #include "file/reader.hpp"
 #include "file/step.hpp"
+#include "file/task.hpp"
 #include "impulse/core/error.hpp"
 #include "numeric.hpp"
 
 namespace impulse::derivations {
 
 int exit_status(const DerivationReport& report) {
-  return std::any_of(report.equations.begin(), report.equations.end(),
-                     [](const EquationResult& e) { return fails(e.verdict); })
-             ? 1
-             : 0;
+  const bool failing = std::any_of(report.equations.begin(), report.equations.end(),
+                                   [](const EquationResult& e) { return fails(e.verdict); });
+  return failing || (report.task && !report.task->target_reached) ? 1 : 0;
 }
 
-DerivationReport check_derivation(std::string text, const std::string& file_name,
-                                  const DerivationOptions& options) {
+namespace {
+
+// Reads and checks a file; with a task, judges the submission against it too.
+DerivationReport checked(std::string text, const std::string& file_name,
+                         const DerivationOptions& options, const Task* task) {
   const auto start = std::chrono::steady_clock::now();
   num::quiet_gsl();
   // The numeric method evaluates a student's expressions at random points, where they may divide
@@ -48,12 +51,27 @@ DerivationReport check_derivation(std::string text, const std::string& file_name
       report.equations.back().seconds = spent.count();
       ++report.counts[static_cast<std::size_t>(report.equations.back().verdict)];
     }
+    if (task != nullptr) {
+      report.task = file::judge_task(*task, equations, reader.symbols(), checker, report, options);
+    }
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
     report.seconds = took.count();
     return report;
   } catch (const file::ReadError& e) {
     throw DerivationError(e.place().line, e.place().column, e.what());
   }
+}
+
+}  // namespace
+
+DerivationReport check_derivation(std::string text, const std::string& file_name,
+                                  const DerivationOptions& options) {
+  return checked(std::move(text), file_name, options, nullptr);
+}
+
+DerivationReport check_derivation(std::string text, const std::string& file_name, const Task& task,
+                                  const DerivationOptions& options) {
+  return checked(std::move(text), file_name, options, &task);
 }
 
 }  // namespace impulse::derivations

@@ -3,6 +3,8 @@
 // JSON (the contract of spec/derivation-format.md, plus keys of our own).
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <iterator>
 #include <sstream>
 
 #include "derivations/derivation.hpp"
@@ -51,6 +53,44 @@ std::string summary_text(const DerivationReport& r) {
         (text.empty() ? "" : ", ") + std::to_string(r.count(v)) + " " + std::string(to_string(v));
   }
   return text;
+}
+
+// The steps that follow only under a condition the facts do not give, named.
+std::string conditional_text(const DerivationReport& r) {
+  std::string lines;
+  std::size_t count = 0;
+  for (const EquationResult& e : r.equations) {
+    if (e.verdict == Verdict::follows_if) {
+      lines += (lines.empty() ? "" : "; ") + std::string("line ") + std::to_string(e.line) +
+               " only where " + e.condition_text;
+      ++count;
+    }
+  }
+  return std::string(count == 1 ? "one step holds" : std::to_string(count) + " steps hold") +
+         " only under a condition the facts do not give: " + lines + ".";
+}
+
+std::string task_text(const TaskResult& t) {
+  std::string text = "Task " + t.task + ": ";
+  if (t.target_reached) {
+    return text + "the target is reached at line " + std::to_string(t.line.value_or(0)) + ".";
+  }
+  std::string lines;
+  for (const std::size_t l : t.extra_premises) {
+    lines += (lines.empty() ? "" : ", ") + std::to_string(l);
+  }
+  if (t.reason == "target-assumed") {
+    return text + "the target is assumed, not derived (the premise at line " + lines +
+           " is the target).";
+  }
+  if (t.reason == "extra-premise") {
+    return text + "a premise the task does not give (line" +
+           (t.extra_premises.size() == 1 ? " " : "s ") + lines + ").";
+  }
+  if (t.reason == "step-fails") {
+    return text + "a step before the target does not pass.";
+  }
+  return text + "the target is not reached (no step is equivalent to " + t.target + ").";
 }
 
 std::string pad(std::string text, std::size_t width) {
@@ -107,7 +147,9 @@ std::string render_text(const DerivationReport& r, bool colour) {
             << indent << "  LaTeX:  " << e.residual << "\n"
             << indent << "  plain:  " << e.residual_text << "\n"
             << indent << "counterexample" << (e.counterexample_exact ? "" : " (numeric)") << ": "
-            << point_text(e) << "\n";
+            << point_text(e)
+            << (e.counterexample_functions.empty() ? "" : "; " + e.counterexample_functions)
+            << "\n";
         break;
       case Verdict::dimensions:
         out << indent << e.dimension_what << "\n";
@@ -122,8 +164,13 @@ std::string render_text(const DerivationReport& r, bool colour) {
   out << "\n";
   if (first_failure) {
     out << paint("First failing line: " + std::to_string(*first_failure), "\033[1;31m") << "\n";
+  } else if (r.count(Verdict::follows_if) > 0) {
+    out << paint("Every step follows, but " + conditional_text(r), "\033[33m") << "\n";
   } else {
     out << paint("Every step follows.", "\033[32m") << "\n";
+  }
+  if (r.task) {
+    out << task_text(*r.task) << "\n";
   }
   return out.str();
 }
@@ -173,7 +220,23 @@ std::string render_markdown(const DerivationReport& r) {
         << (fails ? "**" : "") << " | $" << escape_markdown(e.latex) << "$ | "
         << escape_markdown(details) << " |\n";
   }
+  if (r.count(Verdict::follows_if) > 0 && exit_status(r) == 0) {
+    out << "\nEvery step follows, but " << conditional_text(r) << "\n";
+  }
+  if (r.task) {
+    out << "\n" << task_text(*r.task) << "\n";
+  }
   return out.str();
+}
+
+nlohmann::ordered_json task_json(const TaskResult& t) {
+  nlohmann::ordered_json j;
+  j["target_reached"] = t.target_reached;
+  j["line"] = t.line ? nlohmann::ordered_json(*t.line) : nlohmann::ordered_json(nullptr);
+  j["extra_premises"] = t.extra_premises;
+  j["reason"] = t.reason;
+  j["file"] = t.task;
+  return j;
 }
 
 std::string render_json(const DerivationReport& r) {
@@ -207,6 +270,9 @@ std::string render_json(const DerivationReport& r) {
         if (e.counterexample_exact) {
           j["counterexample_exact"] = exact;
         }
+        if (!e.counterexample_functions.empty()) {
+          j["counterexample_functions"] = e.counterexample_functions;
+        }
         break;
       }
       case Verdict::dimensions:
@@ -237,11 +303,153 @@ std::string render_json(const DerivationReport& r) {
     summary[std::string(to_string(v))] = r.count(v);
   }
   root["summary"] = summary;
+  if (r.task) {
+    root["task"] = task_json(*r.task);
+  }
   root["seconds"] = r.seconds;
   return root.dump(2) + "\n";
 }
 
+// ---- several files -----------------------------------------------------------------------------
+
+std::optional<std::size_t> first_failing(const DerivationReport& r) {
+  for (const EquationResult& e : r.equations) {
+    if (fails(e.verdict)) {
+      return e.line;
+    }
+  }
+  return std::nullopt;
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) {
+    return text;
+  }
+  std::string quoted = "\"";
+  for (const char c : text) {
+    quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  }
+  return quoted + "\"";
+}
+
+std::string render_rows_csv(const std::vector<FileRow>& rows) {
+  std::ostringstream out;
+  out << "file,exit,equations";
+  for (const Verdict v : all_verdicts) {
+    out << ',' << to_string(v);
+  }
+  out << ",first_failing_line,target_reached,target_line,extra_premises,error\n";
+  for (const FileRow& row : rows) {
+    out << csv_field(row.file) << ',' << row.exit << ',';
+    if (row.report) {
+      const DerivationReport& r = *row.report;
+      out << r.equations.size();
+      for (const Verdict v : all_verdicts) {
+        out << ',' << r.count(v);
+      }
+      const auto first = first_failing(r);
+      out << ',' << (first ? std::to_string(*first) : "");
+      if (r.task) {
+        std::string extra;
+        for (const std::size_t l : r.task->extra_premises) {
+          extra += (extra.empty() ? "" : " ") + std::to_string(l);
+        }
+        out << ',' << (r.task->target_reached ? "true" : "false") << ','
+            << (r.task->line ? std::to_string(*r.task->line) : "") << ',' << extra;
+      } else {
+        out << ",,,";
+      }
+      out << ",\n";
+    } else {
+      out << ',';
+      for (std::size_t k = 0; k < std::size(all_verdicts); ++k) {
+        out << ',';
+      }
+      out << ",,,," << csv_field(row.error) << "\n";
+    }
+  }
+  return out.str();
+}
+
+std::string render_rows_json(const std::vector<FileRow>& rows) {
+  using nlohmann::ordered_json;
+  ordered_json files = ordered_json::array();
+  int worst = 0;
+  for (const FileRow& row : rows) {
+    ordered_json j;
+    j["file"] = row.file;
+    j["exit"] = row.exit;
+    if (row.report) {
+      j["report"] = ordered_json::parse(render_json(*row.report));
+    } else {
+      j["error"] = row.error;
+    }
+    worst = std::max(worst, row.exit);
+    files.push_back(std::move(j));
+  }
+  ordered_json root;
+  root["files"] = std::move(files);
+  root["exit"] = worst;
+  return root.dump(2) + "\n";
+}
+
+std::string render_rows_text(const std::vector<FileRow>& rows, bool markdown) {
+  std::ostringstream out;
+  if (markdown) {
+    out << "| file | equations | verdicts | first failing line | task |\n|---|---:|---|---:|---|\n";
+  } else {
+    out << "Summary of " << rows.size() << " files:\n\n";
+  }
+  for (const FileRow& row : rows) {
+    std::string verdicts;
+    std::string equations;
+    std::string first;
+    std::string task;
+    if (row.report) {
+      verdicts = summary_text(*row.report);
+      equations = std::to_string(row.report->equations.size());
+      const auto f = first_failing(*row.report);
+      first = f ? std::to_string(*f) : "-";
+      if (row.report->task) {
+        task = row.report->task->target_reached
+                   ? "target reached at line " + std::to_string(row.report->task->line.value_or(0))
+                   : row.report->task->reason;
+      }
+    } else {
+      verdicts = "refused: " + row.error;
+    }
+    if (markdown) {
+      out << "| " << row.file << " | " << equations << " | " << verdicts << " | " << first << " | "
+          << task << " |\n";
+    } else {
+      out << "  "
+          << (row.exit == 0   ? "ok  "
+              : row.exit == 1 ? "FAIL"
+                              : "BAD ")
+          << "  " << row.file << ": " << (equations.empty() ? "" : equations + " equations (")
+          << verdicts << (equations.empty() ? "" : ")")
+          << (first.empty() || first == "-" ? "" : "; first failing line " + first)
+          << (task.empty() ? "" : "; task: " + task) << "\n";
+    }
+  }
+  return out.str();
+}
+
 }  // namespace
+
+std::string render_rows(const std::vector<FileRow>& rows, Format format) {
+  switch (format) {
+    case Format::csv:
+      return render_rows_csv(rows);
+    case Format::json:
+      return render_rows_json(rows);
+    case Format::markdown:
+      return render_rows_text(rows, true);
+    case Format::text:
+      break;
+  }
+  return render_rows_text(rows, false);
+}
 
 std::string render(const DerivationReport& report, Format format, bool colour) {
   switch (format) {
@@ -249,6 +457,8 @@ std::string render(const DerivationReport& report, Format format, bool colour) {
       return render_json(report);
     case Format::markdown:
       return render_markdown(report);
+    case Format::csv:
+      return render_rows({FileRow{report.file, report, "", exit_status(report)}}, Format::csv);
     case Format::text:
       break;
   }

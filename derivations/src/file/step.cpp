@@ -942,23 +942,30 @@ void Checker::condition(const Implication& forward, const Scalars& before, const
   r.condition_text = plain_of(product) + " != 0";
 }
 
-bool Checker::equivalent(const std::vector<const Equation*>& premises, const Equation& target,
-                         double seconds) {
+bool Checker::follows(const std::vector<const Equation*>& premises, const Equation& target,
+                      const Facts& facts, double seconds, bool both) {
   Budget budget;
   budget.deadline = std::chrono::steady_clock::now() +
                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                         std::chrono::duration<double>(seconds));
   Scalars before;
   for (const Equation* p : premises) {
-    before.append(scalars_of(*p, target.substitutions));
+    before.append(scalars_of(*p, p->substitutions));
   }
   const Scalars step = scalars_of(target, target.substitutions);
-  const Forward forward = exact(before, step, target.facts, budget);
-  if (forward.implication.outcome != Implication::Outcome::holds) {
+  try {
+    const Forward forward = exact(before, step, facts, budget);
+    if (forward.implication.outcome != Implication::Outcome::holds) {
+      return false;
+    }
+    if (!both) {
+      return true;
+    }
+    const std::optional<Implication> back = converse(before, step, facts, budget);
+    return back && back->outcome == Implication::Outcome::holds;
+  } catch (const std::exception&) {
     return false;
   }
-  const std::optional<Implication> back = converse(before, step, target.facts, budget);
-  return back && back->outcome == Implication::Outcome::holds;
 }
 
 void Checker::residual(const ex& e, EquationResult& r) const {

@@ -54,10 +54,10 @@ class Checker {
   EquationResult check(const std::vector<Equation>& equations, std::size_t index,
                        const Source& source, const std::vector<std::size_t>* premises = nullptr);
 
-  /// Whether @p target follows from @p premises and back (an equivalent equation, a task's
-  /// target reached), within @p seconds.
-  [[nodiscard]] bool equivalent(const std::vector<const Equation*>& premises,
-                                const Equation& target, double seconds);
+  /// Whether @p target follows from @p premises (under @p facts, within @p seconds); with
+  /// @p both, whether they also follow from it (an equivalent equation: a task's target).
+  [[nodiscard]] bool follows(const std::vector<const Equation*>& premises, const Equation& target,
+                             const Facts& facts, double seconds, bool both);
 
  private:
   struct Forward {

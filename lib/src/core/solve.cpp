@@ -3,7 +3,6 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
@@ -12,6 +11,7 @@
 #include <string>
 
 #include "impulse/core/error.hpp"
+#include "shifted_factor.hpp"
 
 namespace impulse {
 
@@ -209,7 +209,6 @@ void mark_non_finite(Solution& solution) {
 // ---- The sparse method ---------------------------------------------------------------------
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
-using SparseLDLT = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>>;
 
 // The shift of A + lambda I, relative to A's largest diagonal entry. Small enough that the
 // preconditioner is nearly A's inverse on its range (conjugate gradients then converge in a few
@@ -228,19 +227,14 @@ constexpr double null_pivot = 1e3;
 constexpr double largest_step = 100.0;
 
 struct Shifted {
-  SparseLDLT ldlt;
+  detail::ShiftedFactor factor;  // CHOLMOD's or Eigen's, as the library was built
   double lambda = 0.0;
 };
 
-// LDLT of M + lambda I with lambda = shift * max diag(M). Returns false if it failed.
+// The factorisation of M + lambda I with lambda = shift * max diag(M). Returns false if it failed.
 bool factor_shifted(const SparseMatrix& M, Shifted& shifted) {
-  const double scale = M.diagonal().maxCoeff();
-  shifted.lambda = shift * scale;
-  SparseMatrix identity(M.rows(), M.cols());
-  identity.setIdentity();
-  const SparseMatrix K = M + shifted.lambda * identity;
-  shifted.ldlt.compute(K);
-  return shifted.ldlt.info() == Eigen::Success;
+  shifted.lambda = shift * M.diagonal().maxCoeff();
+  return shifted.factor.compute(M, shifted.lambda);
 }
 
 // Restarted, preconditioned conjugate gradients on K T p-steps, started from x = 0.
@@ -475,7 +469,7 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
   if (!factor_shifted(A, shifted)) {
     return false;
   }
-  const VectorXd& pivots = shifted.ldlt.vectorD();
+  const VectorXd pivots = shifted.factor.pivots();
   const double null_level = null_pivot * shifted.lambda;
   Index retained = 0;
   double largest = 0.0;
@@ -509,7 +503,9 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
                 spectrum.largest / spectrum.smallest});
   doubtful = spectrum.smallest < null_level;
   VectorXd x;
-  const auto shifted_inverse = [&](const VectorXd& r) -> VectorXd { return shifted.ldlt.solve(r); };
+  const auto shifted_inverse = [&](const VectorXd& r) -> VectorXd {
+    return shifted.factor.solve(r);
+  };
   solution.iterations = conjugate_gradients(A, B, shifted_inverse, options.sparse_tolerance,
                                             options.max_iterations, x);
 
@@ -528,7 +524,7 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
     const auto range_preconditioner = [&](const VectorXd& r) -> VectorXd {
       VectorXd Gtr(G.cols());
       Gtr.noalias() = G.transpose() * r;
-      const VectorXd twice = shifted.ldlt.solve(shifted.ldlt.solve(Gtr));
+      const VectorXd twice = shifted.factor.solve(shifted.factor.solve(Gtr));
       VectorXd z(G.rows());
       z.noalias() = G * twice;
       return z;

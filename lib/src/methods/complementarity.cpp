@@ -11,6 +11,7 @@
 #include "impulse/core/error.hpp"
 #include "impulse/core/text.hpp"
 #include "impulse/methods/resolve.hpp"
+#include "updated_qr.hpp"
 
 namespace impulse::methods {
 
@@ -92,6 +93,10 @@ struct Pivoted {
   int pivots = 0;
   VectorXd z;                  // the impulses of the final basis
   std::vector<Index> support;  // the z that are basic at the end (their columns are independent)
+  // z is already the least-squares solution on its support's columns of the factor (the
+  // active-set method solves them from an orthogonal factorisation of G's columns): settle()
+  // need not solve them again.
+  bool settled = false;
 };
 
 // Lexicographic comparison of rows a and b of [rhs | T(:, 0..n-1)], each divided by its entry in
@@ -243,9 +248,11 @@ ComplementaritySolution settle(const MatrixXd& A, const VectorXd& B, const Facto
   const Index n = B.size();
   // The pivoting found which contacts carry an impulse; their impulses are recomputed from their
   // equations, more accurately than a tableau's updates leave them.
-  ComplementaritySolution chosen = candidate(
-      A, B,
-      p.solved ? on_contacts(A, B, factor, p.support, options.rank_tolerance) : VectorXd::Zero(n));
+  ComplementaritySolution chosen =
+      candidate(A, B,
+                !p.solved   ? VectorXd::Zero(n)
+                : p.settled ? p.z
+                            : on_contacts(A, B, factor, p.support, options.rank_tolerance));
   if (!meets(chosen, tolerance) && p.solved) {
     ComplementaritySolution raw = candidate(A, B, p.z);
     if (raw.residual < chosen.residual) {
@@ -264,7 +271,11 @@ ComplementaritySolution settle(const MatrixXd& A, const VectorXd& B, const Facto
         tight.push_back(v);
       }
     }
-    const VectorXd F = on_contacts(A, B, factor, tight, options.rank_tolerance);
+    // When the tight contacts are those of the support and its columns are independent, the
+    // least-norm solution on them is the only one: the support's.
+    const VectorXd F = p.settled && tight == p.support
+                           ? chosen.Fdt
+                           : on_contacts(A, B, factor, tight, options.rank_tolerance);
     const double allowed =
         tolerance * std::max(chosen.Fdt.cwiseAbs().maxCoeff(), F.cwiseAbs().maxCoeff());
     if (F.minCoeff() >= -allowed) {
@@ -309,46 +320,85 @@ ComplementaritySolution lemke_with(const MatrixXd& A, const VectorXd& B, const F
 // ---- The active-set method (Lawson and Hanson, "Solving Least Squares Problems", 1974, ch. 23) --
 //
 // min |G F - g| over F >= 0. Its optimality conditions: F >= 0, s = G^T (G F - g) = A F - B >= 0
-// and F_v s_v = 0, the complementarity problem. P is the set of contacts allowed an impulse.
+// and F_v s_v = 0, the complementarity problem. P is the set of contacts allowed an impulse; the
+// least squares on P's columns come from a QR factorisation of them that is updated as a contact
+// enters or leaves P (detail::UpdatedQR), never computed anew.
+//
+// It may start from given impulses (the paper's): P is then their support, taken column by
+// column in the order of the largest impulse first and leaving out the columns that depend on
+// those before; while the least squares on P give an impulse that is not positive, its contact
+// leaves P. What remains is a feasible start (positive impulses on independent columns) from which
+// the method proceeds as from zero: the objective falls at every step, no set repeats, and it
+// ends as it does from zero, in fewer pivots when the start is close.
+
+// The pivot threshold of the least squares on P, as impulse::solve uses it on G: sqrt of
+// rank_tolerance, or (0) Eigen's default for a column-pivoted QR of G's size.
+double dependence_threshold(const MatrixXd& G, double rank_tolerance) {
+  return rank_tolerance > 0.0 ? std::sqrt(rank_tolerance)
+                              : static_cast<double>(std::min(G.rows(), G.cols())) *
+                                    std::numeric_limits<double>::epsilon();
+}
 
 Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, const VectorXd& B,
-                      double tolerance, double rank_tolerance, int max_pivots) {
+                      double tolerance, double rank_tolerance, int max_pivots,
+                      const VectorXd& start) {
   const Index n = G.cols();
   Pivoted result;
   VectorXd x = VectorXd::Zero(n);
   std::vector<bool> passive(static_cast<std::size_t>(n), false);
   std::vector<bool> refused(static_cast<std::size_t>(n), false);
-  const MatrixXd A_abs = A.cwiseAbs();
-  const VectorXd B_abs = B.cwiseAbs();
-  const auto in_set = [&](Index j) { return passive[static_cast<std::size_t>(j)]; };
-  const auto members = [&]() {
-    std::vector<Index> set;
-    for (Index j = 0; j < n; ++j) {
-      if (in_set(j)) {
-        set.push_back(j);
-      }
-    }
-    return set;
-  };
-  // The least squares of the set's columns, as impulse::solve solves a factor (pivot threshold
-  // √rank_tolerance on G).
-  const double threshold = rank_tolerance > 0.0 ? std::sqrt(rank_tolerance) : 0.0;
-  const auto least_squares = [&](const std::vector<Index>& set) {
-    return impulse::detail::least_norm(G(Eigen::all, set), g, threshold);
+  const auto at = [](std::vector<bool>& flags, Index j) {
+    return flags[static_cast<std::size_t>(j)];
   };
   if (G.rows() == 0) {
     result.z = x;
     result.solved = true;  // nothing can move: no impulse does anything, and none is wanted
     return result;
   }
+  detail::UpdatedQR qr(G, g, dependence_threshold(G, rank_tolerance));
+  // Removes from P every contact whose least-squares impulse in z (P's order) is not positive.
+  const auto drop_not_positive = [&](const VectorXd& z) {
+    for (auto k = static_cast<Index>(z.size()); k-- > 0;) {
+      if (!(z(k) > 0.0)) {
+        const Index j = qr.columns()[static_cast<std::size_t>(k)];
+        at(passive, j) = false;
+        x(j) = 0.0;
+        qr.remove(static_cast<std::size_t>(k));
+        ++result.pivots;
+      }
+    }
+  };
+  if (start.size() == n) {
+    std::vector<Index> order;
+    for (Index j = 0; j < n; ++j) {
+      if (start(j) > 0.0) {
+        order.push_back(j);
+      }
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [&](Index a, Index b) { return start(a) > start(b); });
+    for (const Index j : order) {
+      at(passive, j) = qr.insert(j);
+    }
+    while (!qr.columns().empty() && result.pivots < max_pivots) {
+      const VectorXd z = qr.solve();
+      if (z.minCoeff() > 0.0) {
+        x(qr.columns()) = z;
+        break;
+      }
+      drop_not_positive(z);
+    }
+  }
+  const MatrixXd A_abs = A.cwiseAbs();
+  const VectorXd B_abs = B.cwiseAbs();
   while (result.pivots < max_pivots) {
     // The contact that most wants an impulse: the most negative slack among those without one.
     const VectorXd want = G.transpose() * (g - G * x);  // -(A F - B)
-    const double scale = n == 0 ? 0.0 : (A_abs * x.cwiseAbs() + B_abs).maxCoeff();
+    const double scale = (A_abs * x.cwiseAbs() + B_abs).maxCoeff();
     Index t = -1;
     for (Index j = 0; j < n; ++j) {
-      if (!in_set(j) && !refused[static_cast<std::size_t>(j)] &&
-          want(j) > 0.5 * tolerance * scale && (t < 0 || want(j) > want(t))) {
+      if (!at(passive, j) && !at(refused, j) && want(j) > 0.5 * tolerance * scale &&
+          (t < 0 || want(j) > want(t))) {
         t = j;
       }
     }
@@ -356,25 +406,31 @@ Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, c
       result.solved = true;
       break;
     }
-    passive[static_cast<std::size_t>(t)] = true;
     ++result.pivots;
+    if (!qr.insert(t)) {
+      // Its column lies in the span of P's (to the pivot threshold): in exact arithmetic its
+      // slack would then be 0; rounding left it negative. Refuse t until a step succeeds.
+      at(refused, t) = true;
+      continue;
+    }
+    at(passive, t) = true;
     bool first = true;
     while (result.pivots < max_pivots) {
-      const std::vector<Index> set = members();
-      const VectorXd z = least_squares(set);
-      const auto at = [&](Index j) {
-        return z(std::find(set.begin(), set.end(), j) - set.begin());
-      };
-      if (first && !(at(t) > 0.0)) {
+      const std::vector<Index>& set = qr.columns();
+      if (set.empty()) {
+        break;  // not expected: t keeps a positive impulse through its first step
+      }
+      const VectorXd z = qr.solve();
+      if (first && !(z(z.size() - 1) > 0.0)) {
         // In exact arithmetic impossible (a contact with negative slack gets a positive
         // impulse); rounding did it: refuse t until a step succeeds.
-        passive[static_cast<std::size_t>(t)] = false;
-        refused[static_cast<std::size_t>(t)] = true;
+        at(passive, t) = false;
+        at(refused, t) = true;
+        qr.remove(set.size() - 1);
         break;
       }
       first = false;
       if (z.minCoeff() > 0.0) {
-        x.setZero();
         x(set) = z;
         std::fill(refused.begin(), refused.end(), false);
         break;
@@ -397,22 +453,37 @@ Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, c
         const Index j = set[k];
         x(j) += alpha * (z(static_cast<Index>(k)) - x(j));
       }
-      for (const Index j : set) {
+      for (auto k = static_cast<Index>(set.size()); k-- > 0;) {
+        const Index j = set[static_cast<std::size_t>(k)];
         if (j == blocking || x(j) <= 0.0) {
           x(j) = 0.0;
-          passive[static_cast<std::size_t>(j)] = false;
+          at(passive, j) = false;
+          qr.remove(static_cast<std::size_t>(k));
           ++result.pivots;
         }
       }
     }
   }
+  // The impulses of the final set, from its factorisation (a step cut short by the pivot limit
+  // leaves x between two sets: then they are settled from the equations instead).
+  result.support = qr.columns();
+  std::sort(result.support.begin(), result.support.end());
   result.z = x;
-  result.support = members();
+  if (result.solved && !qr.columns().empty()) {
+    result.z.setZero();
+    result.z(qr.columns()) = qr.solve();
+    result.settled = true;
+  } else {
+    result.settled = result.solved;
+  }
   return result;
 }
 
-ComplementaritySolution active_set_with(const MatrixXd& G, const VectorXd& g,
-                                        const ComplementarityOptions& options) {
+// The active-set method on the factor G, g of the system A, B (A = G^T G, B = G^T g), started
+// from `start` (empty: from zero).
+ComplementaritySolution active_set_with(const MatrixXd& G, const VectorXd& g, const MatrixXd& A,
+                                        const VectorXd& B, const ComplementarityOptions& options,
+                                        const VectorXd& start = VectorXd()) {
   const double tolerance = options.tolerance;
   if (G.rows() != g.size()) {
     throw InvalidInput("G must have one row per entry of g, got G " + std::to_string(G.rows()) +
@@ -426,10 +497,24 @@ ComplementaritySolution active_set_with(const MatrixXd& G, const VectorXd& g,
   if (!all_finite_in(G) || !all_finite_in(g)) {
     return not_finite(n, LcpAlgorithm::active_set);
   }
-  const MatrixXd A = G.transpose() * G;
-  const VectorXd B = G.transpose() * g;
+  if (start.size() == n && options.dependent == DependentPolicy::minimum_norm &&
+      all_finite_in(start)) {
+    // The start is the least-norm solution of A F = B (of G F ~ g). If it only pushes (but for
+    // rounding), it solves the complementarity problem with w = 0, and it is the least-norm
+    // solution of the problem: every solution F gives the same G F (see settle()), so all of
+    // them solve G F ~ g, and among those the start has the least norm.
+    const double allowed = tolerance * start.cwiseAbs().maxCoeff();
+    if (start.minCoeff() >= -allowed) {
+      ComplementaritySolution s = candidate(A, B, start);
+      if (meets(s, tolerance)) {
+        s.algorithm = LcpAlgorithm::active_set;
+        s.least_norm = true;
+        return s;
+      }
+    }
+  }
   const int max_pivots = static_cast<int>(std::min<Index>(10 * (n + 1), 1000000));
-  const Pivoted p = lawson_hanson(G, g, A, B, tolerance, options.rank_tolerance, max_pivots);
+  const Pivoted p = lawson_hanson(G, g, A, B, tolerance, options.rank_tolerance, max_pivots, start);
   return settle(A, B, Factor{&G, &g}, p, options, LcpAlgorithm::active_set);
 }
 
@@ -482,7 +567,10 @@ ComplementaritySolution active_set(const Eigen::Ref<const Eigen::MatrixXd>& G,
   ComplementarityOptions options;
   options.dependent = dependent;
   options.tolerance = tolerance;
-  return active_set_with(MatrixXd(G), VectorXd(g), options);
+  const MatrixXd G_own(G);
+  const VectorXd g_own(g);
+  return active_set_with(G_own, g_own, G_own.transpose() * G_own, G_own.transpose() * g_own,
+                         options);
 }
 
 ComplementaritySolution projected_gauss_seidel(const SparseMatrix& A, const VectorXd& B,
@@ -583,15 +671,22 @@ ComplementaritySolution solve_with(const ContactSystem& system, const Solution* 
     system.factor(G, g);
   }
   ComplementaritySolution pivoted;
+  if (algorithm == LcpAlgorithm::active_set && !system.has_factor()) {
+    throw InvalidInput(
+        "the active-set method needs the system's factor G (A = G^T G), which systems "
+        "assembled from bodies carry and systems given as A and B do not");
+  }
+  const MatrixXd A = system.is_sparse() ? MatrixXd(system.sparse_A()) : system.A();
   if (algorithm == LcpAlgorithm::active_set) {
-    if (!system.has_factor()) {
-      throw InvalidInput(
-          "the active-set method needs the system's factor G (A = G^T G), which systems "
-          "assembled from bodies carry and systems given as A and B do not");
-    }
-    pivoted = active_set_with(G, g, options);
+    // Started from the paper's impulses when they are the least-norm solution of the system
+    // (the default policies) and the least-norm answer is asked for.
+    const bool warm = options.warm_start && paper != nullptr &&
+                      options.dependent == DependentPolicy::minimum_norm &&
+                      paper->status == SolveStatus::success && paper->Fdt.size() == n &&
+                      paper->options.dependent == DependentPolicy::minimum_norm &&
+                      paper->options.inconsistent == InconsistentPolicy::least_squares;
+    pivoted = active_set_with(G, g, A, system.B(), options, warm ? paper->Fdt : VectorXd());
   } else {
-    const MatrixXd A = system.is_sparse() ? MatrixXd(system.sparse_A()) : system.A();
     pivoted = lemke_with(A, system.B(), system.has_factor() ? Factor{&G, &g} : Factor{}, options);
   }
   if (pivoted.status != LcpStatus::inaccurate || options.algorithm != LcpAlgorithm::automatic) {

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -63,6 +64,20 @@ struct FrictionSystem {
 [[nodiscard]] FrictionSystem friction_system(const multipoint::Configuration& configuration,
                                              std::span<const double> friction);
 
+/// @brief Which algorithm found the impulses of the friction problem.
+enum class FrictionAlgorithm {
+  /// Pivoting on the contacts' modes: each contact separates, sticks or slides one way or the
+  /// other, contacts that the bodies cannot tell apart (equal tangential columns of W) sharing
+  /// one friction; each set of modes is one sparse linear system, and the contacts whose
+  /// conditions it breaks change mode, all at once, then (when that stops helping) one at a
+  /// time. Started from the normal impulses without friction. Fast, but with no guarantee of
+  /// ending: solve_friction() tries it first and goes to Lemke's method when it does not end at
+  /// impulses that meet the conditions.
+  modes,
+  /// Lemke's method on the whole problem (lemke_lcp()).
+  lemke,
+};
+
 /// @brief The impulses of the friction problem and how they were found.
 struct FrictionSolution {
   /// solved; inaccurate (the residual above the tolerance); infeasible (Lemke's method ended on a
@@ -71,7 +86,7 @@ struct FrictionSolution {
   Eigen::VectorXd normal;      ///< P_n of each contact, the paper's Fdt, @f$ \ge 0 @f$
   Eigen::VectorXd tangential;  ///< P_t of each contact, on the bumper along @f$ t_v @f$
   Eigen::VectorXd u_after;     ///< 2N: separation and slip after, @f$ u_0 + W P @f$
-  int pivots = 0;              ///< Lemke's pivots
+  int pivots = 0;              ///< Lemke's pivots, or the changes of mode of the pivoting on modes
   /// How far the conditions are from holding, in velocities: the largest over the contacts of
   /// @f$ |\min(W_{nn} P_n, w_n)| @f$, @f$ W_{tt} \max(0, |P_t| - \mu P_n) @f$,
   /// @f$ \min(W_{tt} (\mu P_n - |P_t|), |u'_t|) @f$ (slides only at the bound) and, where
@@ -85,9 +100,12 @@ struct FrictionSolution {
   /// that leave every velocity as Lemke's answer has it, when they still meet the conditions
   /// (true); otherwise Lemke's own vertex (false).
   bool least_norm = false;
+  /// The algorithm that found the impulses (added after the fields above, which keep their order).
+  FrictionAlgorithm algorithm = FrictionAlgorithm::lemke;
 };
 
-/// @brief Solves the friction problem of @p system by Lemke's method (lemke_lcp()), then chooses
+/// @brief Solves the friction problem of @p system by pivoting on the contacts' modes or, where
+/// that does not end at a solution, by Lemke's method (lemke_lcp()), then chooses
 /// the least-norm tangential impulses among those that change nothing (see
 /// FrictionSolution::least_norm) and measures the conditions.
 ///
@@ -103,7 +121,7 @@ struct FrictionSolution {
 /// @param tolerance the conditions count as met when the residual is at most tolerance × scale
 ///        (in (0, 1), else InvalidInput)
 /// @param least_norm true: the least-norm tangential impulses when they meet the conditions;
-///        false: Lemke's vertex as it is (to compare the two)
+///        false: Lemke's vertex as it is (to compare the two; Lemke's method only)
 /// @return the impulses and the diagnostics
 [[nodiscard]] FrictionSolution solve_friction(const FrictionSystem& system,
                                               double tolerance = 1e-10, bool least_norm = true);
@@ -136,3 +154,14 @@ struct FrictionResolution {
     double tolerance = 1e-10, bool least_norm = true);
 
 }  // namespace impulse::methods
+
+namespace impulse {
+/// @brief The names of the friction problem's algorithms as reports print them.
+template <>
+struct EnumNames<methods::FrictionAlgorithm> {
+  /// "mode-pivoting", "lemke"
+  static constexpr std::array<Named<methods::FrictionAlgorithm>, 2> table{
+      {{methods::FrictionAlgorithm::modes, "mode-pivoting"},
+       {methods::FrictionAlgorithm::lemke, "lemke"}}};
+};
+}  // namespace impulse

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "shifted_factor.hpp"
+
+#include <Eigen/SparseCholesky>
+
+#if IMPULSELAB_HAVE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
+namespace impulse::detail {
+
+using Eigen::Index;
+using Eigen::VectorXd;
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+#if IMPULSELAB_HAVE_CHOLMOD
+
+namespace {
+
+// CHOLMOD's Cholesky through Eigen's CholmodSupport, which keeps the factor to itself: this
+// subclass reads its pivots. CHOLMOD chooses by the work per nonzero of the factor: supernodal
+// (dense blocks, BLAS) for a two-dimensional pyramid, simplicial L D L^T for a chain (a stack, a
+// cradle), where dense blocks would only add overhead. The ordering is CHOLMOD's default choice:
+// AMD, and METIS' nested dissection as well when AMD leaves much fill (on the generated stacks,
+// cradles and pyramids it does not: METIS' analysis alone took longer than the whole
+// factorisation with AMD, for the same fill; bench/README.md).
+class Supernodal : public Eigen::CholmodBase<SparseMatrix, Eigen::Lower, Supernodal> {
+  using Base = Eigen::CholmodBase<SparseMatrix, Eigen::Lower, Supernodal>;
+  using Base::m_cholmod;
+  using Base::m_cholmodFactor;
+
+ public:
+  Supernodal() {
+    m_cholmod.final_asis = 1;
+    m_cholmod.supernodal = CHOLMOD_AUTO;
+    m_cholmod.print = 0;  // failures are returned, never printed
+  }
+
+  // The pivots: a supernodal factor is L L^T, its columns stored supernode by supernode as dense
+  // column-major blocks whose first rows are their own columns (the pivot is L_jj squared); a
+  // simplicial one is L D L^T with D on L's diagonal.
+  [[nodiscard]] VectorXd pivots() const {
+    const cholmod_factor& L = *m_cholmodFactor;
+    VectorXd d(static_cast<Index>(L.n));
+    const auto* x = static_cast<const double*>(L.x);
+    if (L.is_super != 0) {
+      const auto* super = static_cast<const int*>(L.super);
+      const auto* pi = static_cast<const int*>(L.pi);
+      const auto* px = static_cast<const int*>(L.px);
+      for (std::size_t s = 0; s < L.nsuper; ++s) {
+        const int rows = pi[s + 1] - pi[s];
+        for (int j = 0; j < super[s + 1] - super[s]; ++j) {
+          const double l = x[px[s] + j * rows + j];
+          d(super[s] + j) = l * l;
+        }
+      }
+      return d;
+    }
+    const auto* p = static_cast<const int*>(L.p);
+    for (Index j = 0; j < d.size(); ++j) {
+      const double diagonal = x[p[j]];
+      d(j) = L.is_ll != 0 ? diagonal * diagonal : diagonal;
+    }
+    return d;
+  }
+};
+
+}  // namespace
+
+struct ShiftedFactor::Backend {
+  Supernodal factor;
+};
+
+bool ShiftedFactor::compute(const SparseMatrix& M, double lambda) {
+  backend_ = std::make_unique<Backend>();
+  backend_->factor.setShift(lambda);  // CHOLMOD factors M + lambda I without forming it
+  backend_->factor.compute(M);
+  return backend_->factor.info() == Eigen::Success;
+}
+
+VectorXd ShiftedFactor::solve(const VectorXd& r) const {
+  return backend_->factor.solve(r);
+}
+
+VectorXd ShiftedFactor::pivots() const {
+  return backend_->factor.pivots();
+}
+
+std::string_view shifted_factorisation() {
+  return "CHOLMOD (SuiteSparse): supernodal or simplicial, AMD or METIS, as it chooses";
+}
+
+#else
+
+struct ShiftedFactor::Backend {
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int> > factor;
+};
+
+bool ShiftedFactor::compute(const SparseMatrix& M, double lambda) {
+  backend_ = std::make_unique<Backend>();
+  backend_->factor.setShift(lambda);  // factors M + lambda I without forming it
+  backend_->factor.compute(M);
+  return backend_->factor.info() == Eigen::Success;
+}
+
+VectorXd ShiftedFactor::solve(const VectorXd& r) const {
+  return backend_->factor.solve(r);
+}
+
+VectorXd ShiftedFactor::pivots() const {
+  return backend_->factor.vectorD();
+}
+
+std::string_view shifted_factorisation() {
+  return "Eigen simplicial LDLT, AMD ordering";
+}
+
+#endif
+
+ShiftedFactor::ShiftedFactor() = default;
+ShiftedFactor::~ShiftedFactor() = default;
+
+}  // namespace impulse::detail

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The sparse method's one factorisation: A + lambda I = L D L^T, by CHOLMOD's supernodal
+// Cholesky with a nested-dissection ordering (METIS) when the library is built with SuiteSparse
+// (IMPULSELAB_SUITESPARSE), by Eigen's simplicial LDL^T with an approximate minimum degree
+// ordering otherwise. Either gives the same factor up to rounding and the ordering; the sparse
+// method's results agree within its stated tolerances (tests/multipoint/sparse_test.cpp runs in
+// both builds).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string_view>
+
+namespace impulse::detail {
+
+class ShiftedFactor {
+ public:
+  ShiftedFactor();
+  ~ShiftedFactor();
+  ShiftedFactor(const ShiftedFactor&) = delete;
+  ShiftedFactor& operator=(const ShiftedFactor&) = delete;
+
+  // Factors M + lambda I (M symmetric positive semi-definite, lambda > 0). False if it failed.
+  bool compute(const Eigen::SparseMatrix<double>& M, double lambda);
+  // (M + lambda I)^-1 r.
+  [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& r) const;
+  // The pivots D of L D L^T (for a Cholesky factor L L^T, the squares of L's diagonal), in the
+  // order of elimination.
+  [[nodiscard]] Eigen::VectorXd pivots() const;
+
+ private:
+  struct Backend;
+  std::unique_ptr<Backend> backend_;
+};
+
+// Which factorisation the library was built with: "CHOLMOD supernodal Cholesky, METIS ordering"
+// or "Eigen simplicial LDLT, AMD ordering".
+[[nodiscard]] std::string_view shifted_factorisation();
+
+}  // namespace impulse::detail

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The friction problem by pivoting on the contacts' modes (separating, sticking, sliding one way
+// or the other), each mode set solved as one linear system: the fast path of solve_friction(),
+// Lemke's method its fallback.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "impulse/methods/friction_complementarity.hpp"
+
+namespace impulse::methods::detail {
+
+// What the pivoting on modes found.
+struct ModePivoting {
+  bool solved = false;         // impulses that meet the conditions within the tolerance
+  Eigen::VectorXd normal;      // P_n of each contact
+  Eigen::VectorXd tangential;  // P_t of each contact
+  int pivots = 0;              // contacts whose mode changed, summed over the steps
+  int steps = 0;               // the systems solved
+};
+
+// Pivots on the modes of the contacts of `system`, starting from the modes that `start` (normal
+// impulses without friction, e.g. the paper's; empty: none) suggests, for at most `max_steps`
+// steps. `solved` only when friction_residual() is at most tolerance times its scale.
+[[nodiscard]] ModePivoting pivot_modes(const FrictionSystem& system, const Eigen::VectorXd& start,
+                                       double tolerance, int max_steps);
+
+}  // namespace impulse::methods::detail
