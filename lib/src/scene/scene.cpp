@@ -513,21 +513,17 @@ methods::Options World::options() const {
 
 World World::with_elasticity(double value) const {
   require_elasticity("elasticity", value);
-  Scene scene = scene::with_elasticity(scene_, value);
+  Scene scene = scene_;
+  scene.elasticity = value;
+  for (Body& body : scene.bodies) {
+    body.elasticity.reset();
+  }
   validate_contact_laws(scene);
   multipoint::Configuration configuration(
       multipoint::Configuration::Trusted{},
       {configuration_.bodies().begin(), configuration_.bodies().end()}, elasticities_of(scene),
       {configuration_.contacts().begin(), configuration_.contacts().end()});
   return {std::move(scene), notes_, std::move(configuration)};
-}
-
-Scene with_elasticity(Scene scene, double value) {
-  scene.elasticity = value;
-  for (Body& body : scene.bodies) {
-    body.elasticity.reset();
-  }
-  return scene;
 }
 
 std::vector<Result> resolve(const World& world, std::span<const methods::Method> methods) {

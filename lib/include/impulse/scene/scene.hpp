@@ -160,8 +160,9 @@ class World {
   /// while it lives).
   /// @return the options
   [[nodiscard]] methods::Options options() const;
-  /// @brief The same world with every body colliding at elasticity @p value (the bodies' own
-  /// elasticities dropped, as `sweep` does); only the elasticity is checked.
+  /// @brief The same world with every body colliding at elasticity @p value: the scene's
+  /// default becomes @p value and the bodies' own elasticities are dropped (as `sweep` does);
+  /// only the elasticity is checked.
   /// @param value the elasticity (InvalidInput "elasticity: must be finite and at least 0, …")
   /// @return the changed world
   [[nodiscard]] World with_elasticity(double value) const;
@@ -178,13 +179,6 @@ class World {
 /// `bodies[1].name: "a" is already the name of bodies[0]`.
 /// @param bodies the scene's bodies
 void validate_names(std::span<const Body> bodies);
-
-/// @brief The scene with every body colliding at elasticity @p value: the default becomes
-/// @p value and the bodies' own elasticities are dropped (what `sweep` does).
-/// @param scene the scene
-/// @param value the elasticity (checked when the scene is)
-/// @return the changed copy
-[[nodiscard]] Scene with_elasticity(Scene scene, double value);
 
 /// @brief A body's motion at one instant.
 struct Motion {
