@@ -3,6 +3,7 @@
 // standard output, exit status 0.
 #include <catch2/catch.hpp>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli/program.hpp"
@@ -53,4 +54,40 @@ TEST_CASE("solve warns when the solution does not satisfy A·Fdt = B", "[cli][wa
   CHECK_THAT(run.err, Contains("impulselab: warning: " + scene +
                                ": the impulses found do not satisfy A·Fdt = B (residual "));
   CHECK_THAT(run.err, Contains("do not trust this report"));
+}
+
+TEST_CASE("solve warns about an elasticity below 1 or above 2, once with --compare",
+          "[cli][warnings]") {
+  // Lab 1's tunnelling scene: left (m = 2, v = 3) hits right (m = 1, v = -1) at elasticity 0.5.
+  // A = 1/2 + 1 = 1.5, B = 0.5 (3 + 1) = 2, Fdt = 4/3: left goes on at 3 - (4/3)/2 = 7/3 and
+  // right at -1 + 4/3 = 1/3, still approaching at 2 (what the warning says).
+  const std::string scene = t::scene_path("tunnelling-1d.json");
+  const std::string warning = "impulselab: warning: " + scene +
+                              ": elasticity: 0.5 is below 1 (perfectly inelastic): bodies that "
+                              "collide at it still approach each other after the impulse (the "
+                              "elasticity is 1 + the coefficient of restitution)";
+  const auto solved = t::run("solve " + t::quote(scene) + " --format json");
+  CHECK(solved.status == 0);
+  CHECK(nlohmann::json::parse(solved.out)["contacts"][0]["approach_after"].get<double>() ==
+        Approx(2.0));
+  CHECK(t::lines(solved.err) == std::vector<std::string>{warning});
+  const auto text = t::run("solve " + t::quote(scene));
+  CHECK(t::lines(text.err) == std::vector<std::string>{warning});
+  const auto compared = t::run("solve " + t::quote(scene) + " --compare --format json");
+  CHECK(compared.status == 0);
+  CHECK(t::lines(compared.err) == std::vector<std::string>{warning});
+
+  // Above 2, on standard input: the place of the scene's default, "<stdin>" for the file.
+  // A = 2, B = 5, Fdt = 2.5: a leaves at -1.5 and b at 2.5, kinetic energy 0.5 -> 4.25.
+  const auto input = t::scratch() / "elasticity-5.json";
+  t::write_text(input, R"({"dimension": 1, "elasticity": 5, "bodies": [
+        {"name": "a", "kind": "material", "mass": 1, "velocity": 1},
+        {"name": "b", "kind": "material", "mass": 1, "velocity": 0}],
+        "contacts": [{"bumper": "a", "wedge": "b", "normal": 1}]})");
+  const auto gained = t::run("solve - --format json", input.string());
+  CHECK(nlohmann::json::parse(gained.out)["energy"]["after"].get<double>() == Approx(4.25));
+  CHECK(gained.status == 0);
+  CHECK(t::lines(gained.err) ==
+        std::vector<std::string>{"impulselab: warning: <stdin>: elasticity: 5 is above 2 "
+                                 "(perfectly elastic): a collision at it creates kinetic energy"});
 }

@@ -132,6 +132,14 @@ TEST_CASE("Hostile derivation files: refused, never a crash, a hang or a stack o
     }
     (void)refusal(garbage);
   }
+  SECTION("a display ending just after a group, where the reader looks ahead for primes") {
+    // Found by the fuzzer (it read past the line's tokens under ASan): `{p}` last on the line
+    // makes the reader look two tokens ahead for `^{\prime}`. Read as written: a premise.
+    const auto report = d::check_derivation("# x\n\n$$E = dfoo{p}$$\n", "test.md");
+    REQUIRE(report.equations.size() == 1);
+    CHECK(report.equations[0].verdict == d::Verdict::premise);
+    CHECK(refusal("$$a = v^{").line() == 1);
+  }
   SECTION("more than the limits") {
     const std::string big(d::max_derivation_bytes + 1, 'a');
     const auto e = refusal(big);

@@ -75,7 +75,10 @@ endif()
 # The page, staged with the module into web/site/ of the build folder (the docs site copies that
 # folder): the page itself, and the presets made from the scene files of the tutorials.
 set(site_dir "${CMAKE_CURRENT_BINARY_DIR}/site")
-set(page_files collide.html collide.css collide.js)
+# The page's files: web/page/ as it is (the html, the css, its scripts; page.cmake lists them for
+# the docs site too).
+include(${CMAKE_CURRENT_SOURCE_DIR}/cmake/page_files.cmake)
+set(page_files ${IMPULSELAB_WEB_PAGE_FILES})
 set(staged)
 foreach(file IN LISTS page_files)
   add_custom_command(OUTPUT "${site_dir}/${file}"

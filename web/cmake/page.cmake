@@ -6,6 +6,10 @@ set(IMPULSELAB_WASM_DIR "${PROJECT_SOURCE_DIR}/build/wasm"
     CACHE PATH "The build folder of the wasm preset, whose web/site/ holds the page")
 set(IMPULSELAB_WEB_SITE_DIR "${IMPULSELAB_WASM_DIR}/web/site" CACHE INTERNAL
     "The page staged by the wasm build, copied into the docs site")
+# Its files, with the presets and the module the wasm build writes beside them.
+include(${CMAKE_CURRENT_SOURCE_DIR}/cmake/page_files.cmake)
+set(IMPULSELAB_WEB_SITE_FILES ${IMPULSELAB_WEB_PAGE_FILES} presets.js impulselab-wasm.js CACHE INTERNAL
+    "The files of the staged page that the docs site copies")
 
 add_custom_target(web_module
   COMMAND "${CMAKE_COMMAND}" "-DSOURCE_DIR=${PROJECT_SOURCE_DIR}" "-DWASM_DIR=${IMPULSELAB_WASM_DIR}"
@@ -16,11 +20,19 @@ add_custom_target(web_module
 if(IMPULSELAB_BUILD_TESTS AND IMPULSELAB_BUILD_DOCS AND TARGET impulselab)
   # Run after the docs are built (`cmake --build --preset docs && ctest --preset docs`); they need
   # Node and Debian's chromium (scripts/install-deps chromium emscripten); IMPULSELAB_CHROMIUM in
-  # the environment names another browser. Screenshots of every preset go to screenshots/ here.
+  # the environment names another browser. Screenshots go to screenshots/ here.
   find_program(IMPULSELAB_NODE node REQUIRED)
-  foreach(group IN ITEMS presets scenes malformed interaction links friction)
+  # page_test.mjs: the page and its contract; bench_test.mjs: the page as a lab bench (the
+  # motion, building on the canvas, side by side and the sweep, what readers found wrong; with
+  # screenshots of the editor, the comparison and the sweep).
+  foreach(test IN ITEMS page_test:presets page_test:scenes page_test:malformed page_test:interaction
+                        page_test:links page_test:friction
+                        bench_test:motion bench_test:editor bench_test:compare bench_test:defects)
+    string(REPLACE ":" ";" parts "${test}")
+    list(GET parts 0 program)
+    list(GET parts 1 group)
     add_test(NAME web:${group}
-      COMMAND "${IMPULSELAB_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/test/page_test.mjs" ${group}
+      COMMAND "${IMPULSELAB_NODE}" "${CMAKE_CURRENT_SOURCE_DIR}/test/${program}.mjs" ${group}
         --site "${PROJECT_BINARY_DIR}/docs/html"
         --cli "$<TARGET_FILE:impulselab>"
         --source "${PROJECT_SOURCE_DIR}"

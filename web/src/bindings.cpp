@@ -8,13 +8,17 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <cstdint>
 #include <exception>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "impulse/core/error.hpp"
 #include "impulse/scene/json.hpp"
+#include "impulse/scene/run.hpp"
+#include "impulse/scene/scene.hpp"
 
 namespace {
 
@@ -25,10 +29,14 @@ namespace scene = impulse::scene;
 // the scene is what the reader needs (the command line puts the file name there).
 constexpr std::string_view source = "scene";
 
+// The message without the scene's name in front ("scene: " or, for a row of a sweep, "scene "
+// before "at elasticity E: ").
 std::string without_source(std::string_view message) {
   const std::string prefix = std::string(source) + ": ";
   if (message.substr(0, prefix.size()) == prefix) {
     message.remove_prefix(prefix.size());
+  } else if (message.substr(0, source.size() + 1) == std::string(source) + " ") {
+    message.remove_prefix(source.size() + 1);
   }
   return std::string(message);
 }
@@ -101,8 +109,120 @@ val solve_scene(const std::string& text) {
   return out;
 }
 
+// `impulselab solve --compare --format json` (@p what "methods", or "") or `--compare
+// restitution` ("restitution"): {result, warnings, unfinished, error}, `result` the text it
+// prints, `unfinished` why a method did not finish (the command line's exit 1), `error` its
+// refusal.
+val compare_scene(const std::string& text, const std::string& what) {
+  val out = val::object();
+  std::string error;
+  std::string result_text;
+  scene::Run run;
+  try {
+    const scene::Request request{.compare = what == "restitution"
+                                                ? scene::Request::Compare::laws
+                                                : scene::Request::Compare::methods};
+    run = scene::run(scene::parse_world(text, source), source, request);
+    result_text = scene::report_json(run, source);
+  } catch (const impulse::InvalidInput& e) {
+    error = without_source(e.what());
+  } catch (const std::exception& e) {
+    error = std::string("internal error (please report it): ") + e.what();
+  }
+  std::vector<std::string> warnings;
+  for (const std::string& line : run.warnings) {
+    warnings.push_back(without_source(line));
+  }
+  out.set("result", result_text);
+  out.set("warnings", strings(warnings));
+  out.set("unfinished", without_source(run.unfinished));
+  out.set("error", error);
+  return out;
+}
+
+// `impulselab sweep` at the elasticities @p elasticities (the page lays out FROM:TO:STEP as the
+// command line does; an array of numbers): {rows, error}, `rows` a JSON array with one row per
+// elasticity, the CSV's columns [elasticity, energy_after, energy_change, impulse_0..,
+// approach_after_0..]; `error` why the scene or an elasticity was refused (every body collides at
+// the swept elasticity). Each row is scene::run at its elasticity, as the command line's sweep.
+val sweep_scene(const std::string& text, const val& elasticities) {
+  val out = val::object();
+  std::string error;
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  try {
+    const scene::World world = scene::parse_world(text, source);
+    for (const double e : emscripten::vecFromJSArray<double>(elasticities)) {
+      const scene::Run run = scene::run(world, source, {.elasticity = e});
+      if (!run.unfinished.empty()) {
+        throw impulse::InvalidInput(run.unfinished);
+      }
+      const scene::Result& r = run.results.front();
+      nlohmann::ordered_json row = {e, r.energy_after, r.energy_change};
+      for (const scene::ImpulseReport& impulse : r.impulses) {
+        row.push_back(impulse.magnitude);
+      }
+      for (const scene::ContactReport& contact : r.contacts) {
+        row.push_back(contact.approach_after);
+      }
+      rows.push_back(std::move(row));
+    }
+  } catch (const impulse::InvalidInput& e) {
+    error = without_source(e.what());
+    rows = nlohmann::ordered_json::array();
+  } catch (const std::exception& e) {
+    error = std::string("internal error (please report it): ") + e.what();
+    rows = nlohmann::ordered_json::array();
+  }
+  out.set("rows", rows.dump());
+  out.set("error", error);
+  return out;
+}
+
+// Serial collisions one at a time: the scene resolved by serial collisions stopped after @p k
+// collisions (its `solver.max_collisions` set to @p k; 0, the format's default bound, is the
+// whole run). {step, error}: `step` a JSON
+// object: the contact of collision k, the impulses summed so far at every contact, each body's
+// velocity ([x, y]) and spin after it, the kinetic energy after it, and whether the collisions
+// had ended by then (`finished`: fewer than k were needed).
+val serial_step(const std::string& text, int k) {
+  val out = val::object();
+  std::string error;
+  nlohmann::ordered_json step;
+  try {
+    scene::Scene cut = scene::parse_scene(text, source);
+    cut.method = impulse::methods::Method::serial;
+    cut.serial.max_collisions = k;
+    const scene::Result r = scene::resolve(scene::World(std::move(cut)));
+    const auto* diagnostics = std::get_if<impulse::methods::SerialDiagnostics>(&r.outcome.solution);
+    nlohmann::ordered_json velocities = nlohmann::ordered_json::array();
+    nlohmann::ordered_json spins = nlohmann::ordered_json::array();
+    for (const scene::BodyReport& body : r.bodies) {
+      velocities.push_back(vector_json(body.after.velocity));
+      spins.push_back(body.after.angular_velocity);
+    }
+    const bool any = diagnostics != nullptr && !diagnostics->order.empty();
+    step = {{"contact", any ? diagnostics->order.back() : -1},
+            {"collisions", any ? diagnostics->order.size() : 0},
+            {"Fdt", std::vector<double>(r.outcome.Fdt.begin(), r.outcome.Fdt.end())},
+            {"velocity", velocities},
+            {"angular_velocity", spins},
+            {"energy_after", r.energy_after},
+            {"finished", r.outcome.finished}};
+  } catch (const impulse::InvalidInput& e) {
+    error = without_source(e.what());
+  } catch (const std::exception& e) {
+    error = std::string("internal error (please report it): ") + e.what();
+  }
+  out.set("step", error.empty() ? step.dump() : std::string());
+  out.set("error", error);
+  return out;
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(impulselab) {
   emscripten::function("solveScene", &solve_scene);
+  emscripten::function("compareScene", &compare_scene);
+  emscripten::function("sweepScene", &sweep_scene);
+  emscripten::function("serialStep", &serial_step);
 }

@@ -126,6 +126,69 @@ check('serial collisions beyond their bound: the command line\'s message, no res
   assert.equal(out.result, '');
 });
 
+check('the three methods side by side: what solve --compare --format json prints', (m) => {
+  // One contact: every method gives the example's Fdt = 1.5 (the paper's system has one row; a
+  // single collision is that row; the impulse pushes, so complementarity keeps it).
+  const out = m.compareScene(JSON.stringify(example), 'methods');
+  assert.equal(out.error, '');
+  assert.equal(out.unfinished, '');
+  const r = JSON.parse(out.result);
+  assert.deepEqual(Object.keys(r), ['simultaneous', 'complementarity', 'serial']);
+  for (const method of Object.keys(r)) {
+    assert.equal(r[method].method, method);
+    near(r[method].impulses[0].magnitude, 1.5, 1.5);
+  }
+  // The three laws: without friction at one contact they agree (scene format, "Friction and
+  // restitution laws").
+  const laws = JSON.parse(m.compareScene(JSON.stringify(example), 'restitution').result);
+  assert.deepEqual(Object.keys(laws), ['newton', 'poisson', 'energetic']);
+  for (const law of Object.keys(laws)) {
+    near(laws[law].impulses[0].magnitude, 1.5, 1.5);
+  }
+  const bad = structuredClone(example);
+  bad.bodies[0].mass = 0;
+  assert.equal(m.compareScene(JSON.stringify(bad), 'methods').error,
+               'bodies[0].mass: must be positive and finite, got 0');
+});
+
+check('a sweep of the elasticity: the rows of impulselab sweep', (m) => {
+  // Fdt = e u / (1/m_a + 1/m_b) = 1.5 e / 2; energy after = (1.5 - Fdt)^2 / 2 + Fdt^2 / 2;
+  // approach after = 1.5 - 2 Fdt = 1.5 (1 - e).
+  const out = m.sweepScene(JSON.stringify(example), [1, 1.5, 2]);
+  assert.equal(out.error, '');
+  const rows = JSON.parse(out.rows);
+  assert.equal(rows.length, 3);
+  rows.forEach((row, k) => {
+    const e = [1, 1.5, 2][k];
+    const fdt = 0.75 * e;
+    const after = ((1.5 - fdt) ** 2 + fdt ** 2) / 2;
+    near(row, [e, after, after - 1.125, fdt, 1.5 * (1 - e)], 1.5);
+  });
+  assert.match(m.sweepScene(JSON.stringify(example), [-1]).error,
+               /^elasticity: must be finite and at least 0, got -1 \(at elasticity -1\)$/);
+});
+
+check('serial collisions one at a time: the state after each collision', (m) => {
+  // Three equal balls, the first at 1, elasticity 2: contact 0 gives ball 2 the speed of ball
+  // 1 (which stops), then contact 1 passes it to ball 3; two collisions.
+  const cradle = {
+    dimension: 1,
+    elasticity: 2,
+    bodies: [1, 0, 0].map((v, k) => ({name: `b${k}`, kind: 'material', mass: 1, velocity: v})),
+    contacts: [{bumper: 'b0', wedge: 'b1', normal: 1}, {bumper: 'b1', wedge: 'b2', normal: 1}],
+  };
+  const steps = [1, 2, 3].map((k) => JSON.parse(m.serialStep(JSON.stringify(cradle), k).step));
+  assert.deepEqual(steps.map((s) => [s.contact, s.collisions, s.finished]), [[0, 1, false], [1, 2, true], [1, 2, true]]);
+  near(steps[0].velocity.map((v) => v[0]), [0, 1, 0], 1);
+  near(steps[0].Fdt, [1, 0], 1);
+  near(steps[1].velocity.map((v) => v[0]), [0, 0, 1], 1);
+  near(steps[1].Fdt, [1, 1], 1);
+  near(steps[1].energy_after, 0.5, 0.5);
+  // 0 is the scene format's "no bound of its own": the whole run.
+  const whole = JSON.parse(m.serialStep(JSON.stringify(cradle), 0).step);
+  assert.deepEqual([whole.contact, whole.collisions, whole.finished], [1, 2, true]);
+});
+
 createImpulseLab().then((m) => {
   let failed = 0;
   for (const [name, body] of checks) {

@@ -10,6 +10,7 @@ namespace impulse::derivations::file {
 
 using GiNaC::ex;
 using GiNaC::is_a;
+using GiNaC::numeric;
 
 namespace {
 
@@ -300,6 +301,61 @@ std::optional<ex> antiderivative(const ex& g, const ex& x, int depth = 0) {
   return std::nullopt;
 }
 
+// A real number when e is one (π and square roots evaluated), else nothing.
+std::optional<double> real_value(const ex& e) {
+  const ex v = GiNaC::evalf(e);
+  if (!is_a<numeric>(v) || !GiNaC::ex_to<numeric>(v).is_real()) {
+    return std::nullopt;
+  }
+  return GiNaC::ex_to<numeric>(v).to_double();
+}
+
+// Whether the formulas of antiderivative() hold for g between a and b: every power of an
+// expression in x with a negative or fractional exponent (1 / (1 + x), \sqrt{x}) has its base
+// linear in x; a negative exponent's base is positive at both limits given as numbers (so on
+// the whole interval; for a whole exponent other than -1, of one sign there), and a fractional
+// one's is not negative at a limit given as a number. A pole between the limits, or between
+// limits that are not numbers, leaves the integral undone rather than evaluated across it.
+bool formulas_hold(const ex& g, const ex& x, const ex& a, const ex& b) {
+  for (auto i = g.preorder_begin(); i != g.preorder_end(); ++i) {
+    if (!is_a<GiNaC::power>(*i) || !i->op(0).has(x)) {
+      continue;
+    }
+    const ex exponent = i->op(1);
+    if (is_a<numeric>(exponent) && GiNaC::ex_to<numeric>(exponent).is_nonneg_integer()) {
+      continue;
+    }
+    const ex base = i->op(0);
+    if (!linear_in(base, x)) {
+      return false;
+    }
+    const auto at_a = real_value(base.subs(x == a));
+    const auto at_b = real_value(base.subs(x == b));
+    if (!is_a<numeric>(exponent)) {
+      return false;  // x^n: the formula x^{n+1} / (n + 1) fails at n = -1
+    }
+    const bool pole = GiNaC::ex_to<numeric>(exponent).is_negative();
+    if (!pole) {
+      // \sqrt{s} and the like: finite, and real where the base is not negative (limits that
+      // are symbols are taken as the file writes them, as for the power itself).
+      if ((at_a && *at_a < 0) || (at_b && *at_b < 0)) {
+        return false;
+      }
+      continue;
+    }
+    if (!at_a || !at_b) {
+      return false;
+    }
+    const bool whole = GiNaC::ex_to<numeric>(exponent).is_integer() && !exponent.is_equal(-1);
+    const bool clear =
+        whole ? (*at_a > 0 && *at_b > 0) || (*at_a < 0 && *at_b < 0) : *at_a > 0 && *at_b > 0;
+    if (!clear) {
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 ex integrate(const ex& f, const ex& x, const ex& a, const ex& b) {
@@ -310,7 +366,8 @@ ex integrate(const ex& f, const ex& x, const ex& a, const ex& b) {
   ex undone = 0;
   for (const ex& term : terms(GiNaC::expand(f))) {
     const auto [constant, varying] = split_term(term, [&](const ex& e) { return e.has(x); });
-    const auto a_of = antiderivative(varying, x);
+    const auto a_of =
+        formulas_hold(varying, x, a, b) ? antiderivative(varying, x) : std::optional<ex>();
     if (a_of) {
       total += constant * (a_of->subs(x == b) - a_of->subs(x == a));
     } else {

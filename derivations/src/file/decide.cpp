@@ -141,16 +141,18 @@ std::vector<ex> doubtful_factors(const ex& e, const Facts& facts) {
 namespace {
 
 // Whether e holds what the facts may simplify: a power with an exponent that is not a whole
-// number (a root, b^n), or a logarithm.
+// number (a root, b^n), a logarithm, an exponential, an absolute value or a hyperbolic function.
 bool needs_facts(const ex& e) {
   for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
     if (is_a<GiNaC::power>(*i) && !i->op(1).info(GiNaC::info_flags::integer)) {
       return true;
     }
-    if (is_a<GiNaC::function>(*i) && (GiNaC::ex_to<GiNaC::function>(*i).get_name() == "log" ||
-                                      GiNaC::ex_to<GiNaC::function>(*i).get_name() == "exp" ||
-                                      GiNaC::ex_to<GiNaC::function>(*i).get_name() == "abs")) {
-      return true;
+    if (is_a<GiNaC::function>(*i)) {
+      const std::string& name = GiNaC::ex_to<GiNaC::function>(*i).get_name();
+      if (name == "log" || name == "exp" || name == "abs" || name == "sinh" || name == "cosh" ||
+          name == "tanh") {
+        return true;
+      }
     }
   }
   return false;
@@ -160,9 +162,34 @@ bool positive(const ex& e, const Facts& facts) {
   return facts.sign(e) == Sign::positive;
 }
 
+// ln q of a positive rational q as a sum of its prime factors' logarithms, so that ln 8 meets
+// 3 ln 2 and ln 6 meets ln 2 + ln 3 (factors up to 10^4 are tried; what is left stays whole).
+ex rational_logarithm(const numeric& q) {
+  ex sum = 0;
+  const auto add = [&](numeric n, int sign) {
+    for (long p = 2; p < 10000 && n > 1; ++p) {
+      while (GiNaC::mod(n, p).is_zero()) {
+        n = n / p;
+        sum += sign * GiNaC::log(numeric(p));
+      }
+    }
+    if (n > 1) {
+      sum += sign * GiNaC::log(n);
+    }
+  };
+  add(q.numer(), 1);
+  add(q.denom(), -1);
+  return sum;
+}
+
 // ln a, with the logarithm of a product of positive factors written as a sum, of a positive
-// base's power as the power times its logarithm, and of an exponential as its argument.
+// base's power as the power times its logarithm, of an exponential as its argument, and of a
+// positive rational as its prime factors'.
 ex logarithm(const ex& a, const Facts& facts) {
+  if (is_a<numeric>(a) && GiNaC::ex_to<numeric>(a).is_rational() &&
+      GiNaC::ex_to<numeric>(a).is_positive()) {
+    return rational_logarithm(GiNaC::ex_to<numeric>(a));
+  }
   if (is_a<GiNaC::mul>(a)) {
     bool all = true;
     for (std::size_t i = 0; i < a.nops() && all; ++i) {
@@ -337,6 +364,17 @@ ex by_facts(const ex& e, const Facts& facts) {
   }
   if (is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "abs") {
     return magnitude(x.op(0), facts);
+  }
+  // The hyperbolic functions as the exponentials they are, so that cosh² - sinh² meets 1.
+  if (is_a<GiNaC::function>(x) && x.nops() == 1) {
+    const std::string& name = GiNaC::ex_to<GiNaC::function>(x).get_name();
+    if (name == "sinh" || name == "cosh" || name == "tanh") {
+      const ex up = exponential(x.op(0), facts);
+      const ex down = exponential(-x.op(0), facts);
+      return name == "sinh"   ? (up - down) / 2
+             : name == "cosh" ? (up + down) / 2
+                              : (up - down) / (up + down);
+    }
   }
   return x;
 }

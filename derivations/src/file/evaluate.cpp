@@ -245,6 +245,18 @@ class Evaluator {
             : std::string());
   }
 
+  // The denominators written inside an integral (or a sum) that hold its variable: the
+  // variable is bound there, so they are no condition on the step's symbols (whether the
+  // integrand is finite between the limits is integrate()'s question).
+  void forget_denominators(std::size_t from, const ex& variable) {
+    for (std::size_t k = denominators_.size(); k-- > from;) {
+      if (denominators_[k].has(variable)) {
+        denominators_.erase(denominators_.begin() + static_cast<std::ptrdiff_t>(k));
+        written_.erase(written_.begin() + static_cast<std::ptrdiff_t>(k));
+      }
+    }
+  }
+
   const Bound* bound(const SymbolName& name) const {
     const std::string key = s_.resolve(name).latex();
     for (auto b = bound_.rbegin(); b != bound_.rend(); ++b) {
@@ -694,7 +706,9 @@ class Evaluator {
     Value body;
     {
       const Binding binding(*this, index_name, index);
+      const std::size_t before = denominators_.size();
       body = unblocked(eval(n.children[0]), n.children[0].offset);
+      forget_denominators(before, index);
     }
     const auto depends = [&](const ex& e) {
       for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
@@ -815,7 +829,9 @@ class Evaluator {
     Value integrand;
     {
       const Binding binding(*this, variable_name, variable);
+      const std::size_t before = denominators_.size();
       integrand = unblocked(eval(n.children[0]), n.children[0].offset);
+      forget_denominators(before, variable);
     }
     ex lower = scalar_of(n.children[1]).subs(s_.substitutions_);
     ex upper = 0;

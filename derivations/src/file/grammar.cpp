@@ -47,8 +47,7 @@ const Token& Grammar::peek() {
 }
 
 const Token& Grammar::ahead(std::size_t k) const {
-  const std::size_t at = std::min(position_ + k, tokens_.size() - 1);
-  return tokens_[at];
+  return token(position_ + k);
 }
 
 Token Grammar::take() {
@@ -287,12 +286,12 @@ Node Grammar::postfix(std::size_t depth, Node base) {
 bool Grammar::bar_ahead() {
   skip_spacing();
   std::size_t i = position_;
-  if (in(tokens_[i], commands::sizes)) {
+  if (in(token(i), commands::sizes)) {
     ++i;
   } else if (abs_depth_ != 0) {
     return false;
   }
-  return is_char(tokens_[i], '|') && is_char(tokens_[i + 1], '_');
+  return is_char(token(i), '|') && is_char(token(i + 1), '_');
 }
 
 // bar := [size] '|' '_' (script | '{' [symbol '='] expression '}') ['^' script]
@@ -342,18 +341,18 @@ Node Grammar::script(std::size_t depth, const Token& caret) {
 
 // LaTeX takes one character from a number after ^ or _ : x^23 is x^2 times 3.
 Node Grammar::single_digit(const Token& t) {
-  Token& token = tokens_[position_];
+  Token& digits = tokens_[position_];
   Node n = make(NodeKind::number, t.offset);
-  n.text = token.text.substr(0, 1);
+  n.text = digits.text.substr(0, 1);
   n.end = t.offset + 1;
-  if (token.text.size() == 1) {
+  if (digits.text.size() == 1) {
     take();
   } else {
-    token.text = token.text.substr(1);
-    token.offset += 1;
-    token.space_before = false;
-    if (token.text[0] == '.') {
-      throw error(token, "expected a digit after the exponent's digit, found '.'");
+    digits.text = digits.text.substr(1);
+    digits.offset += 1;
+    digits.space_before = false;
+    if (digits.text[0] == '.') {
+      throw error(digits, "expected a digit after the exponent's digit, found '.'");
     }
   }
   last_end_ = n.end;
@@ -372,7 +371,7 @@ bool Grammar::starts_atom(const Token& t) const {
       if (in(t, commands::sizes)) {
         // \bigl( opens a group; \bigr) and, inside a sized group, \big) close one
         const auto at = static_cast<std::size_t>(&t - tokens_.data());
-        const Token& next = tokens_[std::min(at + 1, tokens_.size() - 1)];
+        const Token& next = token(at + 1);
         const bool closing = t.text.ends_with("r") || is_char(next, ')') || is_char(next, ']') ||
                              is_command(next, "\\}") || is_command(next, "\\rvert") ||
                              is_command(next, "\\rVert") ||
@@ -394,22 +393,22 @@ bool Grammar::starts_atom(const Token& t) const {
 // Whether the next tokens are a differential: dt, d x, \mathrm{d}x (inside an integrand).
 bool Grammar::differential_ahead() const {
   std::size_t i = position_;
-  while (tokens_[i].kind == Tok::spacing) {
+  while (token(i).kind == Tok::spacing) {
     ++i;
   }
-  const Token& t = tokens_[i];
+  const Token& t = token(i);
   if (t.kind == Tok::letter && t.text == "d") {
     std::size_t k = i + 1;
-    while (tokens_[k].kind == Tok::spacing) {
+    while (token(k).kind == Tok::spacing) {
       ++k;
     }
-    return tokens_[k].kind == Tok::letter ||
-           (tokens_[k].kind == Tok::command && commands::greek.contains(tokens_[k].text));
+    return token(k).kind == Tok::letter ||
+           (token(k).kind == Tok::command && commands::greek.contains(token(k).text));
   }
   return (is_command(t, "\\mathrm") || is_command(t, "\\text") ||
           is_command(t, "\\operatorname")) &&
-         is_char(tokens_[i + 1], '{') && tokens_[i + 2].kind == Tok::letter &&
-         tokens_[i + 2].text == "d" && is_char(tokens_[i + 3], '}');
+         is_char(token(i + 1), '{') && token(i + 2).kind == Tok::letter &&
+         token(i + 2).text == "d" && is_char(token(i + 3), '}');
 }
 
 }  // namespace impulse::derivations::file

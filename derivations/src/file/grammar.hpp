@@ -58,6 +58,8 @@ class Grammar {
   const Token& peek();
   const Token& peek_raw() const { return tokens_[position_]; }
   const Token& ahead(std::size_t k) const;  ///< the k-th token after the next (spacing counted)
+  /// the token at index i, or the closing `end` token for any index past it
+  const Token& token(std::size_t i) const { return tokens_[std::min(i, tokens_.size() - 1)]; }
   Token take();
   void skip_spacing();
   [[nodiscard]] ReadError error(const Token& at, const std::string& message) const {

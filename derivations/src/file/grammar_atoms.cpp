@@ -641,11 +641,11 @@ Node Grammar::norm(std::size_t depth) {
 
 bool Grammar::call_ahead() const {
   std::size_t i = position_;
-  while (tokens_[i].kind == Tok::spacing) {
+  while (token(i).kind == Tok::spacing) {
     ++i;
   }
-  return is_char(tokens_[i], '(') ||
-         (is_command(tokens_[i], "\\left") && is_char(tokens_[i + 1], '('));
+  return is_char(token(i), '(') ||
+         (is_command(token(i), "\\left") && is_char(token(i + 1), '('));
 }
 
 // call := symbol ('(' | '\left(') expression {',' expression} (')' | '\right)')

@@ -184,14 +184,14 @@ void Grammar::take_differential(Node& n) {
 bool Grammar::path_domain() {
   skip_spacing();
   std::size_t at = position_;
-  const bool braced = is_char(tokens_[at], '{');
+  const bool braced = is_char(token(at), '{');
   if (braced) {
     ++at;
-    while (tokens_[at].kind == Tok::spacing) {
+    while (token(at).kind == Tok::spacing) {
       ++at;
     }
   }
-  if (!is_command(tokens_[at], "\\mathcal")) {
+  if (!is_command(token(at), "\\mathcal")) {
     return false;
   }
   position_ = at;

@@ -174,18 +174,18 @@ Node Grammar::decorate(std::size_t depth, Node n) {
 }
 
 bool Grammar::primes_follow() const {
-  const Token& next = tokens_[position_ + 1];
+  const Token& next = token(position_ + 1);
   if (is_command(next, "\\prime")) {
     return true;
   }
   if (is_char(next, '{')) {
     std::size_t k = position_ + 2;
     bool any = false;
-    while (is_command(tokens_[k], "\\prime") || tokens_[k].kind == Tok::spacing) {
-      any = any || is_command(tokens_[k], "\\prime");
+    while (is_command(token(k), "\\prime") || token(k).kind == Tok::spacing) {
+      any = any || is_command(token(k), "\\prime");
       ++k;
     }
-    return any && is_char(tokens_[k], '}');
+    return any && is_char(token(k), '}');
   }
   return false;
 }

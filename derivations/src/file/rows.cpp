@@ -132,6 +132,7 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
   const std::vector<int> d = depths(tokens);
   const auto next_piece = [&](Join join, std::size_t offset) {
     if (!blank_tokens(current.tokens)) {
+      current.tokens = trimmed_tokens(std::move(current.tokens));  // \quad around an arrow
       pieces.push_back(std::move(current));
     } else if (!pieces.empty() && join == Join::row) {
       join = current.join;  // two separators side by side: the first says how
@@ -213,6 +214,7 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
     current.tokens.push_back(t);
   }
   if (!blank_tokens(current.tokens)) {
+    current.tokens = trimmed_tokens(std::move(current.tokens));
     pieces.push_back(std::move(current));
   } else if (pieces.empty()) {
     throw source.error(row.offset, "expected an equation in the row, found only annotations");

@@ -303,7 +303,7 @@ class Sampler {
     values_.assign(symbols_.size(), 0.0);
   }
 
-  NumericOpinion run(std::size_t wanted) {
+  NumericOpinion run(std::size_t wanted, std::chrono::steady_clock::time_point deadline) {
     NumericOpinion opinion;
     try {
       compile_all();
@@ -317,7 +317,12 @@ class Sampler {
       return opinion;
     }
     const std::size_t attempts = 6 * wanted + 20;
+    bool stopped = false;
     for (std::size_t attempt = 0; attempt < attempts && opinion.points < wanted; ++attempt) {
+      if (std::chrono::steady_clock::now() > deadline) {
+        stopped = true;
+        break;
+      }
       draw();
       if (!solver_->solve(values_)) {
         continue;
@@ -348,6 +353,9 @@ class Sampler {
     if (opinion.points == 0) {
       opinion.how = "no point satisfying the equations before and the facts was found in " +
                     std::to_string(attempts) + " attempts";
+    }
+    if (stopped) {
+      opinion.how += " (stopped at the step's time limit)";
     }
     return opinion;
   }
@@ -483,10 +491,10 @@ class Sampler {
 }  // namespace
 
 NumericOpinion sample(const NumericProblem& problem, const Facts& facts, std::uint64_t seed,
-                      std::size_t points) {
+                      std::size_t points, std::chrono::steady_clock::time_point deadline) {
   num::quiet_gsl();
   Sampler sampler(problem, facts, seed);
-  return sampler.run(points);
+  return sampler.run(points, deadline);
 }
 
 double draw_with_sign(num::Random& random, Sign sign) {

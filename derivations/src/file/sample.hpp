@@ -8,6 +8,7 @@
 
 #include <ginac/ginac.h>
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -68,9 +69,11 @@ class Solver {
   std::unique_ptr<State> state_;
 };
 
-/// Evaluates @p problem at up to @p points random points (seeded).
-[[nodiscard]] NumericOpinion sample(const NumericProblem& problem, const Facts& facts,
-                                    std::uint64_t seed, std::size_t points);
+/// Evaluates @p problem at up to @p points random points (seeded), stopping at @p deadline (a
+/// counterexample found by then is kept; fewer points only make a verdict less likely).
+[[nodiscard]] NumericOpinion sample(
+    const NumericProblem& problem, const Facts& facts, std::uint64_t seed, std::size_t points,
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
 
 /// The size a residual of an expression is measured against: its sums add the absolute values
 /// of their terms, its products multiply them (the terms that cancel in floating point).

@@ -334,7 +334,7 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
   } else {
     forward = exact(before, step, e.facts, budget);
   }
-  const NumericOpinion opinion = numeric(before, step, forward, e.facts, index);
+  const NumericOpinion opinion = numeric(before, step, forward, e.facts, index, budget);
   r.numeric_points = opinion.points;
   r.numeric_worst = opinion.worst;
   if (multiple && !opinion.counterexample) {
@@ -686,7 +686,7 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
 // exact method found conditions, the points where one of them is zero are left out like those
 // where a denominator is. Functions and sums get the first instance's formulas.
 NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, const Forward& forward,
-                                const Facts& facts, std::size_t index) {
+                                const Facts& facts, std::size_t index, const Budget& budget) {
   const std::vector<Rule> rules = rules_of(before.differences);
   Scalars b = by_rules(before, rules);
   Scalars s = by_rules(step, rules);
@@ -755,8 +755,8 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
                           forward.implication.conditions.end());
     }
     NumericProblem problem{premises, scales, denominators, s.differences[k], s.scales[k]};
-    const NumericOpinion one =
-        sample(problem, f, options_.seed * 7919 + index * 31 + k, options_.samples);
+    const NumericOpinion one = sample(problem, f, options_.seed * 7919 + index * 31 + k,
+                                      options_.samples, budget.deadline);
     numeric.points += one.points;
     numeric.worst = std::max(numeric.worst, one.worst);
     if (!numeric.counterexample && one.counterexample) {

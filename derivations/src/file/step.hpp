@@ -71,7 +71,7 @@ class Checker {
   Forward instance_failure(const Scalars& before, const Scalars& step, const Facts& facts,
                            const Budget& budget);
   NumericOpinion numeric(const Scalars& before, const Scalars& step, const Forward& forward,
-                         const Facts& facts, std::size_t index);
+                         const Facts& facts, std::size_t index, const Budget& budget);
   std::optional<Implication> converse(const Scalars& before, const Scalars& step,
                                       const Facts& facts, const Budget& budget);
   void drop_given_conditions(Implication& forward, const Scalars& before, const Scalars& step,

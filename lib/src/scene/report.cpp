@@ -6,6 +6,7 @@
 #include <limits>
 #include <variant>
 
+#include "impulse/core/error.hpp"
 #include "impulse/core/text.hpp"
 
 namespace impulse::scene {
@@ -518,6 +519,34 @@ std::vector<std::string> system_warnings(const Result& result, std::string_view 
         .append(
             "): the scene's numbers are beyond what double precision resolves (masses or "
             "moments of inertia too far apart); do not trust this report");
+    warnings.push_back(std::move(line));
+  }
+  return warnings;
+}
+
+std::vector<std::string> elasticity_warnings(const Result& result, std::string_view source) {
+  std::vector<std::string> warnings;
+  bool default_named = false;  // the scene's default is named once, whoever collides at it
+  for (std::size_t k = 0; k < result.bodies.size(); ++k) {
+    const BodyReport& body = result.bodies[k];
+    if (body.kind == BodyKind::static_body || (body.elasticity >= 1.0 && body.elasticity <= 2.0) ||
+        (!body.own_elasticity && default_named)) {
+      continue;
+    }
+    default_named = default_named || !body.own_elasticity;
+    std::string line(source);
+    line.append(": ")
+        .append(body.own_elasticity ? "bodies[" + std::to_string(k) + "].elasticity"
+                                    : std::string("elasticity"))
+        .append(": ")
+        .append(format_number(body.elasticity));
+    if (body.elasticity > 2.0) {
+      line.append(" is above 2 (perfectly elastic): a collision at it creates kinetic energy");
+    } else {
+      line.append(
+          " is below 1 (perfectly inelastic): bodies that collide at it still approach each "
+          "other after the impulse (the elasticity is 1 + the coefficient of restitution)");
+    }
     warnings.push_back(std::move(line));
   }
   return warnings;

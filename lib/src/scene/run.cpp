@@ -57,7 +57,10 @@ Run resolve_once(const World& world, std::string_view source, const Request& req
     return out;
   }
   if (!e) {
-    out.warnings = impulse_warnings(r);
+    out.warnings = elasticity_warnings(r, source);
+    for (std::string& warning : impulse_warnings(r)) {
+      out.warnings.push_back(std::move(warning));
+    }
   }
   for (std::string& warning : system_warnings(r, source)) {
     out.warnings.push_back(std::move(warning));
@@ -65,14 +68,17 @@ Run resolve_once(const World& world, std::string_view source, const Request& req
   return out;
 }
 
-// The warnings of results shown side by side: the system's once (A·Fdt = B is the same for each),
-// the methods left out, then each result's own with its name in front; and the results that did
-// not finish.
+// The warnings of results shown side by side: the elasticities' and the system's once (they and
+// A·Fdt = B are the same for each), the methods left out, then each result's own with its name in
+// front; and the results that did not finish.
 void tell(Run& out, std::string_view source, const std::vector<std::string>& names,
           std::vector<std::string> left_out) {
+  out.warnings = elasticity_warnings(out.results.front(), source);
   for (const Result& r : out.results) {
     if (r.outcome.finished) {
-      out.warnings = system_warnings(r, source);
+      for (std::string& warning : system_warnings(r, source)) {
+        out.warnings.push_back(std::move(warning));
+      }
       break;
     }
   }

@@ -427,6 +427,11 @@ Result report(const World& world, const Solution& paper, methods::Outcome outcom
     result.bodies.push_back({scene.bodies[k].name, scene.bodies[k].kind, motion_of(before[k]),
                              motion_of(after[k]), multipoint::kinetic_energy(before[k]),
                              multipoint::kinetic_energy(after[k])});
+    if (scene.bodies[k].kind != BodyKind::static_body) {
+      result.bodies.back().own_elasticity = scene.bodies[k].elasticity.has_value();
+      result.bodies.back().elasticity =
+          scene.bodies[k].elasticity.value_or(scene.elasticity.value_or(1.0));
+    }
   }
   result.energy_before = multipoint::kinetic_energy(before);
   result.energy_after = multipoint::kinetic_energy(after);

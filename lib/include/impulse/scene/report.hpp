@@ -62,6 +62,18 @@ namespace impulse::scene {
 [[nodiscard]] std::vector<std::string> system_warnings(const Result& result,
                                                        std::string_view source);
 
+/// @brief The warnings about the elasticities the bodies collided at, one sentence each, naming
+/// @p source and the place of the number (`bodies[k].elasticity`, or `elasticity` for the scene's
+/// default, once): above 2, beyond perfectly elastic, a collision creates kinetic energy; below
+/// 1, short of perfectly inelastic, the bodies still approach each other after the impulse (an
+/// elasticity is 1 + the coefficient of restitution: a coefficient typed in its place lands
+/// here). The same for every method of a scene.
+/// @param result a resolved scene
+/// @param source how to name the scene
+/// @return the lines; empty when every elasticity is from 1 to 2
+[[nodiscard]] std::vector<std::string> elasticity_warnings(const Result& result,
+                                                           std::string_view source);
+
 /// @brief Why the method did not finish, naming @p source (`"scene.json: serial collisions did
 /// not end: …"`), or "" when it did.
 /// @param result a resolved scene

@@ -37,10 +37,11 @@ struct Request {
 struct Run {
   Request request;              ///< what was asked
   std::vector<Result> results;  ///< one; or one per method compared, or per law in their order
-  /// Each a sentence for after "impulselab: warning: ": the system's (scene::system_warnings,
-  /// once), the methods left out of a comparison, then each result's impulse warnings
-  /// (scene::impulse_warnings), with the method's or the law's name in front when several are
-  /// shown. None when the one method asked for did not finish.
+  /// Each a sentence for after "impulselab: warning: ": the elasticities'
+  /// (scene::elasticity_warnings, once; not for a row of a sweep) and the system's
+  /// (scene::system_warnings, once), the methods left out of a comparison, then each result's
+  /// impulse warnings (scene::impulse_warnings), with the method's or the law's name in front
+  /// when several are shown. None when the one method asked for did not finish.
   std::vector<std::string> warnings;
   /// Why a method did not finish, one line each naming the scene (`solve` then exits with
   /// status 1); empty when every one did.

@@ -196,6 +196,10 @@ struct BodyReport {
   Motion after;                        ///< motion after (zero for a static body)
   double energy_before = 0.0;          ///< its kinetic energy before
   double energy_after = 0.0;           ///< its kinetic energy after
+  /// The elasticity it collided at: its own (`own_elasticity`, the scene's
+  /// `bodies[k].elasticity`), else the scene's default (`elasticity`); 1 for a static body.
+  double elasticity = 1.0;
+  bool own_elasticity = false;  ///< whether `elasticity` is the body's own
 };
 
 /// @brief The impulse at one contact.

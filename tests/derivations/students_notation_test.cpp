@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What students write (part two of spec/derivation-format.md): each notation read as the contract
+// says, or refused at its place with both readings named. As in notation_test.cpp, "same" pairs
+// can fail: were the two writings read as different things, the step would not follow. Every
+// "refused" case is a notation a silent guess would misread; the expected place was counted by
+// hand in the text given.
+#include <catch2/catch.hpp>
+#include <string>
+#include <vector>
+
+#include "derivations/derivation.hpp"
+
+namespace d = impulse::derivations;
+
+namespace {
+
+std::vector<std::string> verdicts(const std::string& text) {
+  const d::DerivationReport report = d::check_derivation(text, "student.md");
+  std::vector<std::string> list;
+  for (const auto& e : report.equations) {
+    list.push_back(std::string(d::to_string(e.verdict)));
+  }
+  return list;
+}
+
+void same(const std::string& left, const std::string& right, const std::string& setup = "") {
+  INFO(left << "  vs  " << right);
+  CHECK(verdicts(setup + "\n$$" + left + " = c$$\n\n$$" + right + " = c$$\n") ==
+        std::vector<std::string>{"premise", "follows"});
+}
+
+void different(const std::string& left, const std::string& right, const std::string& setup = "") {
+  INFO(left << "  vs  " << right);
+  CHECK(verdicts(setup + "\n$$" + left + " = c$$\n\n$$" + right + " = c$$\n") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
+}
+
+// The text is refused at (line, column) with a message holding `fragment`.
+void refused(const std::string& text, std::size_t line, std::size_t column,
+             const std::string& fragment) {
+  INFO(text);
+  try {
+    (void)d::check_derivation(text, "student.md");
+    FAIL("the text was read");
+  } catch (const d::DerivationError& e) {
+    CHECK(e.line() == line);
+    CHECK(e.column() == column);
+    CHECK_THAT(std::string(e.what()), Catch::Contains(fragment));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Students' displays: \\[ \\], environments, ```math; the rest refused",
+          "[derivations][students-notation]") {
+  const std::vector<std::string> two{"premise", "follows"};
+  CHECK(verdicts("\\[ a = b \\]\n\n\\[ a - b = 0 \\]\n") == two);
+  CHECK(verdicts("\\[\na = b\n\\]\nso\n\\[\n2a = 2b\n\\]\n") == two);
+  CHECK(verdicts("\\begin{equation}\na = b\n\\end{equation}\n\n$$a - b = 0$$\n") == two);
+  CHECK(verdicts("\\begin{align*}\na &= b \\\\\na - b &= 0\n\\end{align*}\n") == two);
+  CHECK(verdicts("```math\na = b\n```\n\n$$a - b = 0$$\n") == two);
+  // A wrong step in \[ \] is checked, not skipped: it fails.
+  CHECK(verdicts("$$a = b$$\n\n\\[ a = 2b \\]\n") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
+  // Inline \( \) is prose, as $…$ is.
+  CHECK(verdicts("Here \\( a = 7 \\) is a remark.\n\n$$a = b$$\n") ==
+        std::vector<std::string>{"premise"});
+  refused("$$a = b$$\n\n\\begin{eqnarray}\na &=& 2b\n\\end{eqnarray}\n", 3, 1, "eqnarray");
+  refused("$$a = b$$\n\n\\begin{displaymath}\na = 2b\n\\end{displaymath}\n", 3, 1, "displaymath");
+  refused("$$a = b$$\n\n\\[ a = 2b\n", 3, 1, "closed by \\]");
+}
+
+TEST_CASE("Students' arrows, annotations and separators inside a display",
+          "[derivations][students-notation]") {
+  CHECK(verdicts("$$a = b \\Rightarrow a - b = 0$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("$$a = b \\implies 2a = 2b \\therefore a - b = 0$$") ==
+        std::vector<std::string>{"premise", "follows", "follows"});
+  CHECK(verdicts("$$a = b \\Rightarrow a = 2b$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
+  // \iff claims an equivalence: a step that holds one way only fails as one.
+  CHECK(verdicts("$$a = b \\iff a - b = 0$$") == std::vector<std::string>{"premise", "follows"});
+  const auto one_way = d::check_derivation("$$a = b \\iff a^2 = b^2$$", "iff.md");
+  CHECK(one_way.equations.at(1).verdict != d::Verdict::follows);
+  CHECK(one_way.equations.at(1).verdict != d::Verdict::follows_one_way);
+  // \text between two equations is an annotation; a comma separates like \\.
+  CHECK(verdicts("$$a = b \\quad\\text{and so}\\quad a - b = 0$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("$$a = b, \\quad a - b = 0$$") == std::vector<std::string>{"premise", "follows"});
+  refused("$$a \\approx b$$", 1, 5, "\\approx");
+  refused("$$a = b$$\n\n$$x = \\pm b$$", 3, 7, "\\pm");
+  // Words after the last equation are an annotation; inside an equation they are refused.
+  CHECK(verdicts("$$a = b \\text{ because the masses are equal}$$\n\n$$a - b = 0$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  refused("$$a = \\text{the mass} b$$", 1, 7, "words");
+}
+
+TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students-notation]") {
+  same("\\big( a + b \\big)^2", "(a + b)^2");
+  same("\\Bigl[ a + b \\Bigr] x", "(a + b) x");
+  same("{a \\over b}", "\\frac{a}{b}", "assume: b > 0");
+  same("v_\\perp", "v_{\\perp}");
+  same("v_\\text{rel}", "v_{rel}");
+  same("v^2_1", "v_1^2");
+  same("{v_1}'", "v_1'");
+  same("\\Delta{p}", "\\Delta p");
+  same("\\hat n", "n");
+  same("\\mathbf n", "n");
+  different("\\bar x", "x");
+  different("v_\\perp", "v_\\parallel");
+  refused("$$\\Delta(m v) = J$$", 1, 9, "\\Delta");  // at its parenthesis
+  refused("$$\\overline{x} = 1$$", 1, 3, "\\overline");
+}
+
+TEST_CASE("Students' functions: inverse, hyperbolic, logarithms, arguments without parentheses",
+          "[derivations][students-notation]") {
+  same("\\sin a \\cos b", "\\sin(a) \\cos(b)");
+  same("\\sin \\cos \\theta", "\\sin(\\cos(\\theta))");
+  same("\\sin\\theta\\, t^2", "\\sin(\\theta t^2)");
+  different("\\sin\\theta\\, t^2", "t^2 \\sin\\theta");
+  same("\\sin^2 x", "(\\sin x)^2");
+  same("\\log_2 8", "3");
+  // e is a symbol (an elasticity), not Euler's number: ln(e^2) = 2 ln e, not 2.
+  same("\\ln(e^{2})", "2 \\ln e", "assume: e > 0");
+  different("\\ln(e^{2})", "2", "assume: e > 0");
+  same("\\exp(2)", "\\exp(1)^2");
+  same("\\arctan 1", "\\frac{\\pi}{4}");
+  same("\\cosh^2 x - \\sinh^2 x", "1");
+  same("3!", "6");
+  refused("$$y = \\log x$$", 1, 7, "\\log");
+  refused("$$y = \\sin^{-1} x$$", 1, 13, "\\sin^{-1}");
+}
+
+TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
+          "[derivations][students-notation]") {
+  // F(t) declared a function is F of t; J = ∫ F dt does not give F T^2 / 2.
+  CHECK(verdicts("function: F\n\n$$J = \\int_0^T F(t)\\,dt$$\n\n$$J = \\frac{F T^2}{2}$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
+  // Undeclared, F(t) inside an integral over t is refused: F times t, or F of t?
+  refused("$$J = \\int_0^T F(t)\\,dt$$\n\n$$J = \\frac{F T^2}{2}$$", 1, 16, "F(t)");
+  // Outside an integral an undeclared m(v_1 - v_2) is a product.
+  same("m(v_1 - v_2)", "m v_1 - m v_2");
+  // ∫_0^T a t dt = a T^2 / 2 (hand: the antiderivative a t^2 / 2 at T minus at 0).
+  CHECK(verdicts("$$W = \\int_0^T a t\\,dt$$\n\n$$W = \\frac{a T^2}{2}$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  // ∫_0^1 dx / (1 + x) = ln 2 (hand: ln(1 + x) from 0 to 1).
+  same("\\int_0^1 \\frac{1}{1 + x}\\,dx", "\\ln 2");
+  // ∫_0^π sin u du = 2 (hand: -cos π + cos 0).
+  same("\\int_0^{\\pi} \\sin u\\,du", "2");
+  // Across the pole of 1 / x the formula ln|x| does not hold: the integral is left whole, and
+  // the step claiming ln 2 - ln 1 for it is not passed.
+  CHECK(verdicts("$$W = \\int_{-1}^{2} \\frac{1}{x}\\,dx$$\n\n$$W = \\ln 2$$") !=
+        std::vector<std::string>{"premise", "follows"});
+  // The fundamental theorem: ∫_0^T dp/dt dt = p(T) - p(0).
+  CHECK(verdicts("function: p\n\n$$J = \\int_0^T \\frac{dp}{dt}\\,dt$$\n\n$$J = p(T) - p(0)$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  // d/dt (m v) with v a function and m a constant: m dv/dt.
+  same("\\frac{d}{dt}\\left(m v\\right)", "m \\dot v", "function: v");
+  refused("$$J = \\int F\\,dt$$", 1, 7, "limits");
+  // Σ_{i=1}^{3} i = 6; Σ_{i=1}^{N} (c a_i + b) = c Σ a_i + N b.
+  same("\\sum_{i=1}^{3} i", "6");
+  same("\\sum_{i=1}^{N} (k a_i + b)", "k \\sum_{i=1}^{N} a_i + N b");
+}
+
+TEST_CASE("Students' facts: ranges and relations keep divisions from conditions",
+          "[derivations][students-notation]") {
+  // 1 + e > 0 on 0 ≤ e ≤ 1: dividing by it needs no condition.
+  CHECK(verdicts("assume: 0 \\le e \\le 1\n\n$$(1 + e) x = 1$$\n\n$$x = \\frac{1}{1 + e}$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("assume: e \\in [0, 1]\n\n$$(1 + e) x = 1$$\n\n$$x = \\frac{1}{1 + e}$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  // Without the range, cancelling 1 + e holds only where it is not 0. (From (1 + e) x = 1 alone,
+  // x = 1 / (1 + e) follows: the premise itself keeps 1 + e from 0.)
+  CHECK(verdicts("$$(1 + e) x = (1 + e) y$$\n\n$$x = y$$") ==
+        std::vector<std::string>{"premise", "follows-if"});
+  CHECK(verdicts("assume: 0 \\le e \\le 1\n\n$$(1 + e) x = (1 + e) y$$\n\n$$x = y$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("$$(1 + e) x = 1$$\n\n$$x = \\frac{1}{1 + e}$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  // a < b makes b - a positive.
+  CHECK(verdicts("assume: a < b\n\n$$(b - a) x = 1$$\n\n$$x = \\frac{1}{b - a}$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  // 4 - 3 sin²θ ≥ 1 for every θ.
+  CHECK(verdicts("$$(4 - 3\\sin^2\\theta) x = 1$$\n\n$$x = \\frac{1}{4 - 3\\sin^2\\theta}$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  // √(V²) = V only for V ≥ 0.
+  CHECK(verdicts("assume: V > 0\n\n$$y = \\sqrt{V^2}$$\n\n$$y = V$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("$$y = \\sqrt{V^2}$$\n\n$$y = V$$") !=
+        std::vector<std::string>{"premise", "follows"});
+}
