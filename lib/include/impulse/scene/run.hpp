@@ -25,7 +25,7 @@ struct Request {
     methods,  ///< every method that can take the scene (`--compare`), on one solved system
     laws,     ///< every restitution law, each by the scene's method (`--compare restitution`)
   };
-  Compare compare = Compare::nothing;
+  Compare compare = Compare::nothing;  ///< what is set side by side; nothing by default
   /// The method instead of the scene's `solver.method` (not with a comparison).
   std::optional<methods::Method> method = std::nullopt;
   /// A row of `sweep`: every body at this elasticity (World::with_elasticity). Its warnings
