@@ -55,7 +55,8 @@ target_link_libraries(impulselab_web PRIVATE ImpulseLab::impulse)
 target_compile_options(impulselab_web PRIVATE -fwasm-exceptions)
 # One classic script with the WebAssembly inside (SINGLE_FILE: no fetch, so it loads from
 # file://), defining createImpulseLab(), which resolves to the module; no file system, memory
-# that grows with the scene.
+# that grows with the scene. The last four keep it within 1 MiB (web:size; web/README.md weighs
+# them): a small allocator, and no loader code for options, eval or a missing TextDecoder.
 target_link_options(impulselab_web PRIVATE
   -fwasm-exceptions
   --bind
@@ -64,7 +65,11 @@ target_link_options(impulselab_web PRIVATE
   -sEXPORT_NAME=createImpulseLab
   -sENVIRONMENT=web,node
   -sALLOW_MEMORY_GROWTH=1
-  -sFILESYSTEM=0)
+  -sFILESYSTEM=0
+  -sMALLOC=emmalloc
+  -sINCOMING_MODULE_JS_API=[]
+  -sDYNAMIC_EXECUTION=0
+  -sTEXTDECODER=2)
 # Emscripten's JavaScript optimiser needs Debian's acorn (node-acorn, in /usr/share/nodejs),
 # which a Node not installed from Debian does not look for.
 if(IS_DIRECTORY "/usr/share/nodejs")

@@ -11,7 +11,8 @@
 //   await browser.close();
 //
 // Each page records what the page printed to the console as an error, the exceptions it threw
-// and every request it made (page.problems(), page.requests).
+// and every request it made (page.problems(), page.requests). Browser.launch({hostResolverRules})
+// lets a host through, e.g. 'MAP * ~NOTFOUND, EXCLUDE 127.0.0.1' for a test's own web server.
 import {spawn} from 'node:child_process';
 import {mkdtempSync, rmSync} from 'node:fs';
 import {tmpdir} from 'node:os';
@@ -25,7 +26,7 @@ export class Browser {
       '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
       '--disable-background-networking', '--disable-component-update', '--disable-sync',
       '--disable-default-apps', '--disable-extensions', '--mute-audio', '--hide-scrollbars',
-      '--host-resolver-rules=MAP * ~NOTFOUND',
+      `--host-resolver-rules=${options.hostResolverRules || 'MAP * ~NOTFOUND'}`,
       `--user-data-dir=${profile}`, '--remote-debugging-pipe', 'about:blank',
     ];
     const child = spawn(executable, args, {stdio: ['ignore', 'ignore', 'pipe', 'pipe', 'pipe']});

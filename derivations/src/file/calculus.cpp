@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "file/calculus.hpp"
 
+#include "file/decide.hpp"
+
 #include <algorithm>
 #include <mutex>
 #include <set>
@@ -546,9 +548,30 @@ std::vector<ex> function_variables(const ex& e) {
   return found;
 }
 
+namespace {
+
+// Whether an equation can give a rule: it holds a value of a function, and it expands into few
+// terms ((a+b+c)^{1000} would be half a million, and nobody writes F(t) = … inside one).
+bool may_give_rule(const ex& equation) {
+  if (expanded_terms(equation) > most_expanded_terms) {
+    return false;
+  }
+  for (auto i = equation.preorder_begin(); i != equation.preorder_end(); ++i) {
+    if (is_abstract(*i) && i->nops() == 1 && is_a<GiNaC::symbol>(i->op(0))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 std::vector<Rule> rules_of(const std::vector<ex>& equations) {
   std::vector<Rule> rules;
   for (const ex& equation : equations) {
+    if (!may_give_rule(equation)) {
+      continue;
+    }
     const ex e = GiNaC::expand(equation);
     // The candidates in one order in every run: values before derivatives, then by their text.
     std::vector<std::pair<std::pair<std::size_t, std::string>, ex>> candidates;

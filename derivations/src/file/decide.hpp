@@ -76,6 +76,9 @@ struct Budget {
 
 /// An upper estimate of the terms of @p e once expanded (for the size guard).
 [[nodiscard]] double expanded_terms(const GiNaC::ex& e);
+/// The most terms an expression may expand into for the work around a verdict (a residual brought
+/// over one denominator, a function's rule read from an equation); a larger one is left as it is.
+inline constexpr double most_expanded_terms = 4000;
 
 /// Whether @p e is small enough to factor: few terms, symbols and degrees (factoring a
 /// polynomial of many symbols and high degrees can take minutes).

@@ -644,8 +644,7 @@ bool Grammar::call_ahead() const {
   while (token(i).kind == Tok::spacing) {
     ++i;
   }
-  return is_char(token(i), '(') ||
-         (is_command(token(i), "\\left") && is_char(token(i + 1), '('));
+  return is_char(token(i), '(') || (is_command(token(i), "\\left") && is_char(token(i + 1), '('));
 }
 
 // call := symbol ('(' | '\left(') expression {',' expression} (')' | '\right)')

@@ -57,7 +57,7 @@ std::string trimmed(std::string text) {
 }
 
 ex readable(const ex& e) {
-  if (expanded_terms(e) > 4000) {
+  if (expanded_terms(e) > most_expanded_terms) {
     return e;  // too large to bring over one denominator: shown as it stands
   }
   const ex n = GiNaC::normal(e);
@@ -208,6 +208,9 @@ std::string plain_of(const ex& e) {
     const bool group = GiNaC::is_a<GiNaC::add>(x) || (denominator && GiNaC::is_a<GiNaC::mul>(x));
     return group ? "(" + t + ")" : t;
   };
+  if (expanded_terms(e) > most_expanded_terms) {
+    return print(e);  // too large to bring over one denominator: printed as it stands
+  }
   ex parts;
   try {
     parts = GiNaC::normal(e).numer_denom();
@@ -555,6 +558,36 @@ Checker::Forward Checker::exact(const Scalars& given_before, const Scalars& give
   return forward;
 }
 
+namespace {
+
+// An equation that names a function at its variable (F(t) = …) holds for every value of that
+// variable: its numerator split into the coefficients of each power of each variable. A part that
+// would expand into too many terms, or is no polynomial in the variable, stays whole.
+std::vector<ex> by_powers(const ex& written, const std::vector<ex>& variables) {
+  std::vector<ex> parts{written};
+  for (const ex& v : variables) {
+    std::vector<ex> split;
+    for (const ex& part : parts) {
+      if (expanded_terms(part) > most_expanded_terms) {
+        split.push_back(part);
+        continue;
+      }
+      const ex expanded = GiNaC::expand(GiNaC::normal(part).numer());
+      if (!expanded.has(v) || !expanded.is_polynomial(v)) {
+        split.push_back(part);
+        continue;
+      }
+      for (int d = 0; d <= expanded.degree(v); ++d) {
+        split.push_back(expanded.coeff(v, d));
+      }
+    }
+    parts = split;
+  }
+  return parts;
+}
+
+}  // namespace
+
 // Small formulas for the file's functions and values for the numbers of terms of its sums, in
 // turn: a failure under one of them is a real counterexample.
 Checker::Forward Checker::instance_failure(const Scalars& given_before, const Scalars& given_step,
@@ -576,26 +609,11 @@ Checker::Forward Checker::instance_failure(const Scalars& given_before, const Sc
       }
       return list;
     };
-    // An equation that names a function at its variable (F(t) = …) holds for every value of
-    // it: under the formulas, each power of the variable on its own.
+    // Under the formulas, each power of a function's variable on its own (by_powers).
     std::vector<ex> premises;
     for (const ex& p : before.differences) {
-      ex written = instantiated(p, instance, renamed);
-      std::vector<ex> parts{written};
-      for (const ex& v : function_variables(p)) {
-        std::vector<ex> split;
-        for (const ex& part : parts) {
-          const ex expanded = GiNaC::expand(GiNaC::normal(part).numer());
-          if (!expanded.has(v) || !expanded.is_polynomial(v)) {
-            split.push_back(part);
-            continue;
-          }
-          for (int k = 0; k <= expanded.degree(v); ++k) {
-            split.push_back(expanded.coeff(v, k));
-          }
-        }
-        parts = split;
-      }
+      const ex written = instantiated(p, instance, renamed);
+      const std::vector<ex> parts = by_powers(written, function_variables(p));
       premises.insert(premises.end(), parts.begin(), parts.end());
     }
     const std::vector<ex> premise_denominators = apply(before.denominators);
@@ -700,26 +718,10 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
     std::vector<ex> premises;
     std::vector<ex> scales;
     for (std::size_t k = 0; k < b.differences.size(); ++k) {
-      // An equation that names a function at its variable holds for every value of it: each
-      // power of the variable on its own, under the formulas.
+      // Under the formula, each power of a function's variable on its own (by_powers).
       const ex written =
           list.empty() ? b.differences[k] : instantiated(b.differences[k], list[0], renamed);
-      std::vector<ex> parts{written};
-      for (const ex& v : function_variables(b.differences[k])) {
-        std::vector<ex> split;
-        for (const ex& part : parts) {
-          const ex expanded = GiNaC::expand(GiNaC::normal(part).numer());
-          if (!expanded.has(v) || !expanded.is_polynomial(v)) {
-            split.push_back(part);
-            continue;
-          }
-          for (int d = 0; d <= expanded.degree(v); ++d) {
-            split.push_back(expanded.coeff(v, d));
-          }
-        }
-        parts = split;
-      }
-      for (const ex& p : parts) {
+      for (const ex& p : by_powers(written, function_variables(b.differences[k]))) {
         premises.push_back(p);
         scales.push_back(term_scale(p));
       }

@@ -1,0 +1,3 @@
+return createImpulseLabCheck;
+};
+var createImpulseLabCheck = impulselabCheckModule();
