@@ -13,7 +13,6 @@
 #include "derivations/check.hpp"
 #include "derivations/derivation.hpp"
 #include "impulse/core/error.hpp"
-#include "impulse/scene/json.hpp"
 #include "output.hpp"
 
 namespace impulselab {
@@ -52,7 +51,7 @@ std::string read_derivation(const std::string& path) {
                       std::to_string(check::max_derivation_bytes >> 20) + " MiB, this one holds " +
                       std::to_string(std::filesystem::file_size(path, error)) + " bytes");
   }
-  return impulse::scene::read_file(path, check::max_derivation_bytes + 1);
+  return read_file(path, check::max_derivation_bytes);
 }
 
 check::DerivationOptions settings_of(const CheckOptions& options) {
@@ -128,8 +127,7 @@ check::FileRow check_one(const std::string& path, const std::optional<check::Tas
 // Why a report fails, for the message on standard error.
 std::string failure_of(const check::DerivationReport& report) {
   for (const auto& e : report.equations) {
-    if (e.verdict == check::Verdict::does_not_follow || e.verdict == check::Verdict::dimensions ||
-        e.verdict == check::Verdict::undecided) {
+    if (check::fails(e.verdict)) {
       return report.file + ": line " + std::to_string(e.line) + " " +
              std::string(check::to_string(e.verdict)) + " (the first equation that does not pass)";
     }

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -31,19 +32,21 @@ std::string system_error(std::string_view what, const std::string& path, int err
   return message;
 }
 
-// At most one byte more than a scene may hold: parse_scene then refuses it as too large.
-std::string read_stdin() {
-  constexpr std::size_t max_bytes = impulse::scene::ReadLimits{}.max_bytes;
+// The whole of a stream, up to one byte past max_bytes (a pipe or a device has no size to ask
+// first): the caller refuses what is longer. A failure is "<cannot> <the system's reason>".
+std::string read_all(std::FILE* stream, std::size_t max_bytes, const std::string& cannot) {
   std::string text;
   std::array<char, 65536> buffer{};
   std::size_t count = 0;
-  while (text.size() <= max_bytes &&
-         (count = std::fread(buffer.data(), 1, std::min(buffer.size(), max_bytes + 1 - text.size()),
-                             stdin)) > 0) {
+  const auto room = [&] {  // up to one byte past the limit (no overflow at its largest value)
+    const std::size_t left = max_bytes - text.size();
+    return left < buffer.size() ? left + 1 : buffer.size();
+  };
+  while (text.size() <= max_bytes && (count = std::fread(buffer.data(), 1, room(), stream)) > 0) {
     text.append(buffer.data(), count);
   }
-  if (std::ferror(stdin) != 0) {
-    throw impulse::InvalidInput(system_error("cannot read", "<stdin>", errno));
+  if (std::ferror(stream) != 0) {
+    throw impulse::InvalidInput(cannot + " " + std::strerror(errno));
   }
   return text;
 }
@@ -66,11 +69,25 @@ std::string scene_name(const std::string& path) {
   return path == "-" ? "<stdin>" : path;
 }
 
-impulse::scene::World read_world(const std::string& path) {
-  if (path == "-") {
-    return impulse::scene::parse_world(read_stdin(), scene_name(path));
+std::string read_file(const std::string& path, std::size_t max_bytes) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw impulse::InvalidInput(path + ": cannot read: it is a directory");
   }
-  return impulse::scene::load_world(path);
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                             &std::fclose);
+  if (!file) {
+    throw impulse::InvalidInput(path + ": cannot read: " + std::strerror(errno));
+  }
+  return read_all(file.get(), max_bytes, path + ": cannot read:");
+}
+
+impulse::scene::World read_world(const std::string& path) {
+  constexpr std::size_t max_bytes = impulse::scene::ReadLimits{}.max_bytes;
+  // Read up to one byte past the limit: the reader then refuses the scene as too large.
+  return impulse::scene::parse_world(
+      path == "-" ? read_all(stdin, max_bytes, "cannot read <stdin>:") : read_file(path, max_bytes),
+      scene_name(path));
 }
 
 void print_warnings(const std::vector<std::string>& warnings) {

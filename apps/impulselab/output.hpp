@@ -3,6 +3,7 @@
 // output or, atomically, to a file.
 #pragma once
 
+#include <cstddef>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -17,6 +18,14 @@ namespace impulselab {
 /// @param path a file or "-"
 /// @return the checked scene
 impulse::scene::World read_world(const std::string& path);
+
+/// The contents of a file up to one byte past @p max_bytes (a device or a pipe without end is
+/// read no further): the caller refuses a text longer than @p max_bytes with its own words.
+/// impulse::InvalidInput (`"<path>: cannot read: <reason>"`) when it cannot be read.
+/// @param path the file
+/// @param max_bytes the most the caller accepts
+/// @return its bytes, at most @p max_bytes + 1
+std::string read_file(const std::string& path, std::size_t max_bytes);
 
 /// How messages name the scene at @p path: the path itself, or "<stdin>" for "-".
 /// @param path a file or "-"

@@ -7,6 +7,7 @@
 
 #include "app.hpp"
 #include "impulse/scene/json.hpp"
+#include "impulse/scene/report.hpp"
 #include "output.hpp"
 
 namespace impulselab {
@@ -22,28 +23,28 @@ struct SolveOptions {
   std::string compare_what;  // "" or "methods": the methods; "restitution": the three laws
 };
 
-// The library makes the report, the refusals and the warnings (impulse::scene::solve_output,
-// the same path as the page that runs the library in a browser); this writes them out.
+// The library resolves the scene and says what to warn about (impulse::scene::run, as for the
+// page that runs the library in a browser); this writes it out.
 void solve(const SolveOptions& options) {
   namespace sc = impulse::scene;
   const sc::World world = read_world(options.scene);
   const std::string source = scene_name(options.scene);
-  const sc::Format format = options.format == "json" ? sc::Format::json : sc::Format::text;
-  const bool colour = colour_wanted(options.output);
-  const sc::SolveOutput output =
-      !options.compare
-          ? sc::solve_output(world, source,
-                             impulse::value_named<impulse::methods::Method>(options.method), format,
-                             colour)
-      : options.compare_what == "restitution"
-          ? sc::compare_laws_output(world, source, format, colour)
-          : sc::compare_output(world, source, format, colour);
-  if (!output.report.empty()) {
-    write_output(options.output, [&](std::FILE* out) { std::fputs(output.report.c_str(), out); });
+  sc::Request request;
+  request.method = impulse::value_named<impulse::methods::Method>(options.method);
+  if (options.compare) {
+    request.compare = options.compare_what == "restitution" ? sc::Request::Compare::laws
+                                                            : sc::Request::Compare::methods;
   }
-  print_warnings(output.warnings);
-  if (!output.unfinished.empty()) {
-    throw WorkFailed(output.unfinished);  // exit 1: serial collisions at their bound, and so on
+  const sc::Run run = sc::run(world, source, request);
+  const std::string report = options.format == "json"
+                                 ? sc::report_json(run, source)
+                                 : sc::text(run, source, colour_wanted(options.output));
+  if (!report.empty()) {
+    write_output(options.output, [&](std::FILE* out) { std::fputs(report.c_str(), out); });
+  }
+  print_warnings(run.warnings);
+  if (!run.unfinished.empty()) {
+    throw WorkFailed(run.unfinished);  // exit 1: serial collisions at their bound, and so on
   }
 }
 

@@ -12,8 +12,7 @@
 
 #include "app.hpp"
 #include "impulse/core/error.hpp"
-#include "impulse/scene/report.hpp"
-#include "impulse/scene/scene.hpp"
+#include "impulse/scene/run.hpp"
 #include "output.hpp"
 
 namespace impulselab {
@@ -55,29 +54,15 @@ std::string csv_number(double value) {
   return impulse::format_number(value + 0.0);  // shortest text that reads back; no "-0"
 }
 
-impulse::scene::Result solve_at(const impulse::scene::World& world, double e,
-                                const std::string& source) {
-  impulse::scene::Result result = [&] {
-    try {
-      return impulse::scene::resolve(world.with_elasticity(e));
-    } catch (const impulse::InvalidInput& error) {
-      // With friction: an elasticity the exact rule cannot take, or a method that cannot.
-      throw impulse::InvalidInput(source + ": " + error.what() + " (at elasticity " +
-                                  impulse::format_number(e) + ")");
-    }
-  }();
-  if (result.status != impulse::SolveStatus::success) {
-    throw impulse::InvalidInput(source + ": the numbers overflow at elasticity " +
-                                impulse::format_number(e) +
-                                ": A·Fdt = B or the state after the collision is not finite");
+// The scene at elasticity e (scene::run): a scene whose solver.method is serial must end its
+// collisions within their bound.
+impulse::scene::Run run_at(const impulse::scene::World& world, double e,
+                           const std::string& source) {
+  impulse::scene::Run run = impulse::scene::run(world, source, {.elasticity = e});
+  if (!run.unfinished.empty()) {
+    throw WorkFailed(run.unfinished);
   }
-  // A scene whose solver.method is serial: its collisions must end within their bound.
-  const std::string unfinished = impulse::scene::unfinished_message(
-      result, source + " at elasticity " + impulse::format_number(e));
-  if (!unfinished.empty()) {
-    throw WorkFailed(unfinished);
-  }
-  return result;
+  return run;
 }
 
 void sweep(const SweepOptions& options) {
@@ -86,18 +71,18 @@ void sweep(const SweepOptions& options) {
   const impulse::scene::World world = read_world(options.scene);
   // Impulses are linear in the elasticity and energies quadratic: if both ends of the range are
   // finite, so is every value between, and nothing is written before the ends are known good;
-  // their results are the first and last rows. A does not depend on the elasticity: one warning
-  // about its conditioning serves every row.
-  const impulse::scene::Result first = solve_at(world, range.at(0), source);
-  const std::optional<impulse::scene::Result> last =
-      range.count > 1 ? std::optional(solve_at(world, range.at(range.count - 1), source))
+  // their results are the first and last rows. A does not depend on the elasticity: the first
+  // row's warning about its conditioning serves every row.
+  const impulse::scene::Run first = run_at(world, range.at(0), source);
+  const std::optional<impulse::scene::Run> last =
+      range.count > 1 ? std::optional(run_at(world, range.at(range.count - 1), source))
                       : std::nullopt;
-  const std::vector<std::string> warnings = impulse::scene::system_warnings(first, source);
   const auto row_result = [&](std::size_t i) {
     if (i == 0) {
-      return first;
+      return first.results.front();
     }
-    return last && i + 1 == range.count ? *last : solve_at(world, range.at(i), source);
+    return last && i + 1 == range.count ? last->results.front()
+                                        : run_at(world, range.at(i), source).results.front();
   };
 
   const std::size_t contacts = world.scene().contacts.size();
@@ -129,7 +114,7 @@ void sweep(const SweepOptions& options) {
       }
     }
   });
-  print_warnings(warnings);
+  print_warnings(first.warnings);
 }
 
 }  // namespace

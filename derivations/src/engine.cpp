@@ -3,48 +3,6 @@
 
 namespace impulse::derivations {
 
-std::string_view to_string(Kind kind) {
-  switch (kind) {
-    case Kind::equation:
-      return "equation";
-    case Kind::step:
-      return "step";
-    case Kind::claim:
-      return "claim";
-  }
-  return "?";
-}
-
-std::string_view to_string(Method method) {
-  switch (method) {
-    case Method::symbolic:
-      return "symbolic";
-    case Method::numeric:
-      return "numeric";
-    case Method::quadrature:
-      return "quadrature";
-    case Method::ode:
-      return "ode";
-    case Method::search:
-      return "search";
-  }
-  return "?";
-}
-
-std::string_view to_string(Status status) {
-  switch (status) {
-    case Status::verified:
-      return "verified";
-    case Status::erratum:
-      return "erratum";
-    case Status::refuted:
-      return "refuted";
-    case Status::failed:
-      return "failed";
-  }
-  return "?";
-}
-
 bool in_section(std::string_view section, std::string_view filter) {
   if (filter.empty()) {
     return true;

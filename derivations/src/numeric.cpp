@@ -50,32 +50,55 @@ Eigen::Vector2d Random::vector(double scale) {
   return {uniform(-scale, scale), uniform(-scale, scale)};
 }
 
+namespace {
+
+// GSL's rk8pd driver of y' = rhs(t, y), relative and absolute tolerance 1e-13. The system it
+// points at lives with it: the driver keeps a pointer to it.
+class OdeDriver {
+ public:
+  OdeDriver(const OdeRhs& rhs, std::size_t dimension, double initial_step)
+      : system_{[](double t, const double y[], double dydt[], void* params) -> int {
+                  (*static_cast<const OdeRhs*>(params))(t, y, dydt);
+                  return GSL_SUCCESS;
+                },
+                nullptr, dimension, const_cast<OdeRhs*>(&rhs)},
+        driver_(nullptr, gsl_odeiv2_driver_free) {
+    quiet_gsl();
+    driver_.reset(
+        gsl_odeiv2_driver_alloc_y_new(&system_, gsl_odeiv2_step_rk8pd, initial_step, 1e-13, 1e-13));
+    if (!driver_) {
+      throw std::runtime_error("gsl_odeiv2_driver_alloc_y_new failed");
+    }
+  }
+  OdeDriver(const OdeDriver&) = delete;
+  OdeDriver& operator=(const OdeDriver&) = delete;
+
+  // From t to @p to, y in place; throws when GSL fails.
+  void apply(double& t, double to, std::vector<double>& y) {
+    const int status = gsl_odeiv2_driver_apply(driver_.get(), &t, to, y.data());
+    if (status != GSL_SUCCESS) {
+      throw std::runtime_error(std::string("ODE integration failed: ") + gsl_strerror(status));
+    }
+  }
+
+  void reset() { gsl_odeiv2_driver_reset(driver_.get()); }
+
+ private:
+  gsl_odeiv2_system system_;
+  std::unique_ptr<gsl_odeiv2_driver, void (*)(gsl_odeiv2_driver*)> driver_;
+};
+
+}  // namespace
+
 std::vector<std::vector<double>> integrate_to(const OdeRhs& rhs, std::vector<double> y0,
                                               const std::vector<double>& times,
                                               double initial_step) {
-  quiet_gsl();
-  gsl_odeiv2_system system;
-  system.function = [](double t, const double y[], double dydt[], void* params) -> int {
-    (*static_cast<const OdeRhs*>(params))(t, y, dydt);
-    return GSL_SUCCESS;
-  };
-  system.jacobian = nullptr;
-  system.dimension = y0.size();
-  system.params = const_cast<OdeRhs*>(&rhs);
-  std::unique_ptr<gsl_odeiv2_driver, void (*)(gsl_odeiv2_driver*)> driver(
-      gsl_odeiv2_driver_alloc_y_new(&system, gsl_odeiv2_step_rk8pd, initial_step, 1e-13, 1e-13),
-      gsl_odeiv2_driver_free);
-  if (!driver) {
-    throw std::runtime_error("gsl_odeiv2_driver_alloc_y_new failed");
-  }
+  OdeDriver driver(rhs, y0.size(), initial_step);
   std::vector<std::vector<double>> states;
   double t = 0.0;
   for (const double next : times) {
     if (next > t) {
-      const int status = gsl_odeiv2_driver_apply(driver.get(), &t, next, y0.data());
-      if (status != GSL_SUCCESS) {
-        throw std::runtime_error(std::string("ODE integration failed: ") + gsl_strerror(status));
-      }
+      driver.apply(t, next, y0);
     }
     states.push_back(y0);
   }
@@ -121,22 +144,7 @@ double gauss_legendre(const std::function<std::vector<double>(const std::vector<
 
 OdeResult integrate_until(const OdeRhs& rhs, std::vector<double> y0, const OdeEvent& event,
                           double initial_step, double t_max, double event_tolerance) {
-  quiet_gsl();
-  const std::size_t n = y0.size();
-  gsl_odeiv2_system system;
-  system.function = [](double t, const double y[], double dydt[], void* params) -> int {
-    (*static_cast<const OdeRhs*>(params))(t, y, dydt);
-    return GSL_SUCCESS;
-  };
-  system.jacobian = nullptr;
-  system.dimension = n;
-  system.params = const_cast<OdeRhs*>(&rhs);
-  std::unique_ptr<gsl_odeiv2_driver, void (*)(gsl_odeiv2_driver*)> driver(
-      gsl_odeiv2_driver_alloc_y_new(&system, gsl_odeiv2_step_rk8pd, initial_step, 1e-13, 1e-13),
-      gsl_odeiv2_driver_free);
-  if (!driver) {
-    throw std::runtime_error("gsl_odeiv2_driver_alloc_y_new failed");
-  }
+  OdeDriver driver(rhs, y0.size(), initial_step);
   OdeResult result;
   double t = 0.0;
   std::vector<double> y = std::move(y0);
@@ -144,14 +152,10 @@ OdeResult integrate_until(const OdeRhs& rhs, std::vector<double> y0, const OdeEv
   // the last interval by re-integrating from its start.
   const double interval = initial_step;
   while (t < t_max) {
-    std::vector<double> saved = y;
+    const std::vector<double> saved = y;
     const double t_saved = t;
-    double t_next = t + interval;
-    const int status = gsl_odeiv2_driver_apply(driver.get(), &t, t_next, y.data());
+    driver.apply(t, t + interval, y);
     ++result.steps;
-    if (status != GSL_SUCCESS) {
-      throw std::runtime_error(std::string("ODE integration failed: ") + gsl_strerror(status));
-    }
     if (event(t, y.data()) <= 0.0) {
       double low = t_saved;
       double high = t;
@@ -160,11 +164,8 @@ OdeResult integrate_until(const OdeRhs& rhs, std::vector<double> y0, const OdeEv
         const double mid = 0.5 * (low + high);
         std::vector<double> y_mid = y_low;
         double t_mid = low;
-        gsl_odeiv2_driver_reset(driver.get());
-        const int s = gsl_odeiv2_driver_apply(driver.get(), &t_mid, mid, y_mid.data());
-        if (s != GSL_SUCCESS) {
-          throw std::runtime_error(std::string("ODE integration failed: ") + gsl_strerror(s));
-        }
+        driver.reset();
+        driver.apply(t_mid, mid, y_mid);
         if (event(mid, y_mid.data()) > 0.0) {
           low = mid;
           y_low = y_mid;

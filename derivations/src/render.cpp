@@ -319,8 +319,8 @@ void legend(std::ostringstream& out) {
          "thresholds:\n\n"
       << "| method | model | holds below | fails above |\n|---|---|---|---|\n";
   for (const models::Model& m : models::all()) {
-    out << "| " << m.method << " | " << m.name << " | " << num::brief(m.holds_below, 2) << " | "
-        << num::brief(m.fails_above, 2) << " |\n";
+    out << "| " << name_of(m.method) << " | " << m.name << " | " << num::brief(m.holds_below, 2)
+        << " | " << num::brief(m.fails_above, 2) << " |\n";
   }
   out << "\nA check is verified when its exact method proves it, or, where algebra cannot reach "
          "(integrals over pulses, a simulated contact), when every model it names holds; an exact "

@@ -158,19 +158,19 @@ TEST_CASE("The library's entry point prints what solve --format json prints, and
     for (const auto method : impulse::methods::all_methods) {
       const std::string name(impulse::name_of(method));
       CAPTURE(scene, name);
-      const sc::SolveOutput library = sc::solve_to_json(t::read_text(scene), scene, method);
+      const sc::JsonRun library = sc::solve_to_json(t::read_text(scene), scene, {.method = method});
       const auto program = t::run("solve " + t::quote(scene) + " --format json --method " + name);
       std::string warnings;
-      for (const std::string& line : library.warnings) {
+      for (const std::string& line : library.run.warnings) {
         warnings.append("impulselab: warning: ").append(line).append("\n");
       }
-      if (library.unfinished.empty()) {
+      if (library.run.unfinished.empty()) {
         CHECK(program.status == 0);
         CHECK(library.report == program.out);
         CHECK(warnings == program.err);
       } else {
         CHECK(program.status == 1);
-        CHECK_THAT(program.err, Contains(library.unfinished));
+        CHECK_THAT(program.err, Contains(library.run.unfinished));
       }
     }
   }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// impulselab solve on scenes with friction (issue 17): the issue's rod through the program in
+// impulselab solve on scenes with friction: a rod on a rough floor through the program in
 // text and JSON, the energy warning on standard error, --compare restitution, refusals (exit 2).
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/program.hpp"
+#include "output.hpp"
 
 namespace t = impulselab::test;
 using Catch::Matchers::Contains;
@@ -28,6 +29,12 @@ TEST_CASE("Input without end is refused at the size limit", "[cli][limits]") {
   check_refused(t::run("solve /dev/zero"), "/dev/zero: " + limit);
   check_refused(t::run("solve -", "/dev/zero"), "<stdin>: " + limit);
   check_refused(t::run("sweep - --elasticity 0:2:1", "/dev/zero"), "<stdin>: " + limit);
+}
+
+TEST_CASE("A file without end is read no further than the limit", "[cli][limits]") {
+  // /dev/zero never ends: read_file stops one byte past the limit, which is how a huge file or
+  // a device costs at most the limit in memory (the reader then refuses it: the test above).
+  CHECK(impulselab::read_file("/dev/zero", 1000).size() == 1001);
 }
 
 TEST_CASE("Too many contacts, and too many for the dense method, are refused", "[cli][limits]") {

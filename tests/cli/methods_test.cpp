@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// solve with the other methods (issue 9): --method, --compare (text and JSON), the warning for
+// solve with the other methods: --method, --compare (text and JSON), the warning for
 // every negative impulse, and serial collisions that reach their bound (exit 1, a clear message).
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

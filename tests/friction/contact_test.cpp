@@ -69,7 +69,7 @@ TEST_CASE("A point mass sliding on a rough floor throughout: the three laws agre
   // v + (P_t, P_n) / m = (3 - 0.3, -1 + 1.5) = (2.7, 0.5).
   const PointMass ball{2.0, {6.0, -2.0}};
   for (const RestitutionLaw law : all_laws) {
-    CAPTURE(friction::to_string(law));
+    CAPTURE(impulse::name_of(law));
     const auto c = friction::collide(ball, StaticBody{}, Vector2d(0, 0), down,
                                      ContactLaw{0.2, Elasticity(1.5), law});
     REQUIRE(c.impulse.status == ContactStatus::resolved);
@@ -101,7 +101,7 @@ TEST_CASE("A point mass that stops slipping and sticks: the three laws agree", "
   // Velocity after: (0.5 - 1/2, -1 + 3/2) = (0, 0.5).
   const PointMass ball{2.0, {1.0, -2.0}};
   for (const RestitutionLaw law : all_laws) {
-    CAPTURE(friction::to_string(law));
+    CAPTURE(impulse::name_of(law));
     const auto c = friction::collide(ball, StaticBody{}, Vector2d(0, 0), down,
                                      ContactLaw{1.0, Elasticity(1.5), law});
     REQUIRE(c.impulse.status == ContactStatus::resolved);
@@ -172,7 +172,7 @@ TEST_CASE("The rod at 45 degrees on a rough floor: slip, stick, and three differ
   CHECK(w.u0.isApprox(Vector2d(-1.0, 0.7), 1e-15));
 
   for (const Expected& expected : cases) {
-    CAPTURE(friction::to_string(expected.law));
+    CAPTURE(impulse::name_of(expected.law));
     const auto c =
         friction::collide(before, StaticBody{}, end, down, {0.8, Elasticity(1.9), expected.law});
     REQUIRE(c.impulse.status == ContactStatus::resolved);
@@ -242,7 +242,7 @@ TEST_CASE("Without friction the rod gets the paper's impulse, and its slip may r
   // changes at du_t/dP_n = W_tn = -1.5: it reaches 0 at P_n = 0.7 / 1.5 = 7/15 and, with no
   // friction to hold it, goes on the other way (reversed).
   for (const RestitutionLaw law : all_laws) {
-    CAPTURE(friction::to_string(law));
+    CAPTURE(impulse::name_of(law));
     const auto c =
         friction::collide(rod(), StaticBody{}, Vector2d(0, 0), down, {0.0, Elasticity(1.9), law});
     CHECK(c.impulse.normal == Approx(0.76).epsilon(1e-14));
@@ -284,7 +284,7 @@ TEST_CASE("With a huge coefficient of friction the energetic law is Poisson's", 
   // (e - 1)^2 a P_c / 2 = (a / P_c) x^2 / 2, gives x = (e - 1) P_c: Poisson's. Both end at
   // 1.9 * 0.3625 = 0.68875.
   for (const RestitutionLaw law : {RestitutionLaw::poisson, RestitutionLaw::energetic}) {
-    CAPTURE(friction::to_string(law));
+    CAPTURE(impulse::name_of(law));
     const auto c =
         friction::collide(rod(), StaticBody{}, Vector2d(0, 0), down, {1e300, Elasticity(1.9), law});
     CHECK(c.impulse.normal == Approx(0.68875).epsilon(1e-14));
@@ -296,7 +296,7 @@ TEST_CASE("Elasticity 1 ends every law at the end of compression", "[friction]")
   // Perfectly inelastic: Newton's separation (1 - 1) * 1 = 0 is reached at compression's end,
   // Poisson's 1 * 0.3625 is that impulse, the energetic work 0 * |...| is reached at once.
   for (const RestitutionLaw law : all_laws) {
-    CAPTURE(friction::to_string(law));
+    CAPTURE(impulse::name_of(law));
     const auto c =
         friction::collide(rod(), StaticBody{}, Vector2d(0, 0), down, {0.8, Elasticity(1.0), law});
     CHECK(c.impulse.normal == Approx(0.3625).epsilon(1e-14));
@@ -428,12 +428,12 @@ TEST_CASE("Bad input throws with the bad value", "[friction]") {
 
 TEST_CASE("Names as the scene format spells them", "[friction]") {
   for (const RestitutionLaw law : all_laws) {
-    CHECK(friction::restitution_law_named(friction::to_string(law)) == law);
+    CHECK(impulse::value_named<RestitutionLaw>(impulse::name_of(law)) == law);
   }
-  CHECK(friction::to_string(RestitutionLaw::newton) == "newton");
-  CHECK(friction::to_string(RestitutionLaw::poisson) == "poisson");
-  CHECK(friction::to_string(RestitutionLaw::energetic) == "energetic");
-  CHECK_FALSE(friction::restitution_law_named("Newton").has_value());
+  CHECK(impulse::name_of(RestitutionLaw::newton) == "newton");
+  CHECK(impulse::name_of(RestitutionLaw::poisson) == "poisson");
+  CHECK(impulse::name_of(RestitutionLaw::energetic) == "energetic");
+  CHECK_FALSE(impulse::value_named<RestitutionLaw>("Newton").has_value());
   CHECK(friction::to_string(Slip::slip) == "slip");
   CHECK(friction::to_string(Slip::stick) == "stick");
   CHECK(friction::to_string(Slip::reversed) == "reversed");

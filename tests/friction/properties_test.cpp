@@ -98,7 +98,7 @@ TEST_CASE("Without friction the three laws give the paper's impulse at a single 
       const double scale = std::max(
           speed_scale(h), e.value() * std::sqrt(2 * A * (energy(h.bumper) + energy(h.wedge))));
       for (const RestitutionLaw law : all_laws) {
-        CAPTURE(friction::to_string(law));
+        CAPTURE(impulse::name_of(law));
         const auto c = friction::collide(h.bumper, h.wedge, h.point, h.normal, {0.0, e, law});
         CHECK(c.impulse.tangential == 0.0);
         if (c.impulse.status == ContactStatus::not_approaching) {
@@ -148,7 +148,7 @@ TEST_CASE(
       CAPTURE(i, h.point, h.normal, mu, e.value());
       const double energy_before = energy(h.bumper) + energy(h.wedge);
       for (const RestitutionLaw law : all_laws) {
-        CAPTURE(friction::to_string(law));
+        CAPTURE(impulse::name_of(law));
         const auto c = friction::collide(h.bumper, h.wedge, h.point, h.normal, {mu, e, law});
         const auto& impulse = c.impulse;
         // Bodies of the sections always resolve (W is positive definite with one movable body).

@@ -280,7 +280,7 @@ TEST_CASE("Impulse stepping on the bodies agrees with Routh's method on random c
       continue;  // not approaching (or barely): nothing to integrate
     }
     CAPTURE(checked, bumper.p, bumper.L, bumper.position, h.point, h.normal, law.friction,
-            law.elasticity.value(), friction::to_string(law.restitution));
+            law.elasticity.value(), impulse::name_of(law.restitution));
     compare(h, law, steps, 5.0, worst);
     ++checked;
   }

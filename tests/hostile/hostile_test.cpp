@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Numerically hostile scenes (issue 8): mass and inertia ratios from 1e-9 to 1e9, normals 1e-8
+// Numerically hostile scenes: mass and inertia ratios from 1e-9 to 1e9, normals 1e-8
 // rad apart, duplicated contacts, 1,000 contacts on one body, elasticities 0 and 1e6. Every
 // result must be finite and carry its condition estimate κ; each scene is checked against values
 // worked by hand where the configuration allows, and against the laws of support/laws.hpp:

@@ -8,7 +8,7 @@
 
 #include "impulse/core/error.hpp"
 #include "impulse/methods/complementarity.hpp"
-#include "impulse/methods/methods.hpp"
+#include "impulse/methods/resolve.hpp"
 #include "impulse/methods/serial.hpp"
 #include "impulse/multipoint/multipoint.hpp"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Beyond the paper (issue 17): Coulomb friction at many contacts as one complementarity problem
+// Beyond the paper: Coulomb friction at many contacts as one complementarity problem
 // (impulse/methods/friction_complementarity.hpp), and Lemke's method on a general problem. Every
 // expected value is worked by hand in the comment above it, or is a law checked on the bodies.
 #include <catch2/catch.hpp>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Three ways to resolve many contacts (issue 9), on scenes whose answers are worked by hand: the
+// Three ways to resolve many contacts, on scenes whose answers are worked by hand: the
 // paper's simultaneous system, the complementarity problem (impulses only push) and serial
 // collisions (one contact at a time, the fastest-approaching first).
 #include <catch2/catch.hpp>

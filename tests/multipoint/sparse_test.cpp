@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Sections 4 and 5 at scale: the sparse storage and the sparse method (issue 7) against the
+// Sections 4 and 5 at scale: the sparse storage and the sparse method against the
 // dense complete orthogonal decomposition, on generated stacks, pyramids and cradles, and on
 // dependent systems whose minimum-norm impulses are worked by hand.
 #include <catch2/catch.hpp>

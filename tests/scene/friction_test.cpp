@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Scenes with friction and the three restitution laws (issue 17): the keys `friction` and
+// Scenes with friction and the three restitution laws: the keys `friction` and
 // `solver.restitution` read, checked with their place, and resolved through the pipeline by the
 // exact single-contact rule (impulse::friction::collide). Every expected value is worked by hand
 // in the comment above it.
@@ -12,6 +12,7 @@
 #include "impulse/core/error.hpp"
 #include "impulse/scene/json.hpp"
 #include "impulse/scene/report.hpp"
+#include "support/scene_files.hpp"
 
 using Catch::Matchers::Contains;
 using Catch::Matchers::Message;
@@ -204,10 +205,8 @@ TEST_CASE("Friction: without the keys, or with friction 0 and Newton's law, noth
   const std::string with_keys = R"({"friction": 0, "solver": {"restitution": "newton"},)" +
                                 plain.substr(1) + R"(], "friction": 0}]})";
   for (const auto method : impulse::methods::all_methods) {
-    CHECK(sc::solve_output(sc::parse_world(with_keys, "s.json"), "s.json", method, sc::Format::json)
-              .report ==
-          sc::solve_output(sc::parse_world(without, "s.json"), "s.json", method, sc::Format::json)
-              .report);
+    CHECK(sc::solve_to_json(with_keys, "s.json", {.method = method}).report ==
+          sc::solve_to_json(without, "s.json", {.method = method}).report);
   }
   // And the paper's frictionless impulse 1.9/2.5 = 0.76 is what all three laws give at μ = 0.
   for (const std::string law : {"newton", "poisson", "energetic"}) {
@@ -274,8 +273,7 @@ TEST_CASE("Friction: several contacts: serial collisions, the other methods refu
   // contacts at once: contact 1 separates (the other ball leaves at 5), so the answer is contact
   // 0's alone, as above.
   CHECK_THROWS_MATCHES(
-      sc::solve_output(world, "s.json", impulse::methods::Method::simultaneous, sc::Format::text),
-      InvalidInput,
+      sc::run(world, "s.json", {.method = impulse::methods::Method::simultaneous}), InvalidInput,
       Message("s.json: contacts: the method \"simultaneous\" cannot resolve 2 contacts with "
               "friction (contacts[0] has 0.2): the paper's simultaneous system has no friction "
               "and only Newton's law; the serial method (solver.method \"serial\", or --method "
@@ -301,8 +299,8 @@ TEST_CASE("Friction: several contacts: serial collisions, the other methods refu
               "exact single-contact rule"));
   // --compare compares the methods that can: serial and complementarity, and says why not the
   // paper's.
-  const sc::SolveOutput compared = sc::compare_output(world, "s.json", sc::Format::json);
-  const json j = json::parse(compared.report);
+  const sc::Run compared = sc::run(world, "s.json", {.compare = sc::Request::Compare::methods});
+  const json j = json::parse(sc::report_json(compared, "s.json"));
   CHECK(!j.contains("simultaneous"));
   CHECK(j.contains("complementarity"));
   CHECK(j.contains("serial"));
@@ -316,8 +314,8 @@ TEST_CASE("Friction: several contacts: serial collisions, the other methods refu
 // The box of tutorials/scenes/box-lands-flat.json (2 wide, 1 high, m = 1, I = 5/12, corners on
 // the static ground at (-1, 0) and (1, 0), e = 1.5) with μ = 0.5, by the complementarity method.
 sc::Result box_by_complementarity(double vx) {
-  json scene =
-      json::parse(sc::read_file(std::string(IMPULSELAB_SCENES_DIR) + "/box-lands-flat.json"));
+  json scene = json::parse(impulselab::test::read_scene_text(std::string(IMPULSELAB_SCENES_DIR) +
+                                                             "/box-lands-flat.json"));
   scene["friction"] = 0.5;
   scene["bodies"][1]["velocity"] = {vx, -1};
   scene["solver"] = {{"method", "complementarity"}};
@@ -331,7 +329,7 @@ TEST_CASE("Friction: the box landing flat on two corners, complementarity with f
   // and P_t = 0 meets Coulomb's law: it is the friction problem's answer too (the squeeze ±f,
   // |f| <= 0.375, would change nothing; the least-norm choice reports 0). KE 0.5 -> 0.125.
   const sc::Result r = box_by_complementarity(0.0);
-  REQUIRE(sc::finished(r));
+  REQUIRE(r.outcome.finished);
   CHECK(r.impulses[0].magnitude == Approx(0.75).epsilon(1e-12));
   CHECK(r.impulses[1].magnitude == Approx(0.75).epsilon(1e-12));
   CHECK(std::abs(numbers(r, "tangential")[0]) < 1e-12);
@@ -352,7 +350,7 @@ TEST_CASE("Friction: the box sliding flat on two corners, complementarity with f
   // P_t = (-0.28125, -0.46875), v' = (1 - 0.75, 0.5) = (0.25, 0.5) (still sliding forwards),
   // KE 1 -> 0.15625.
   const sc::Result r = box_by_complementarity(1.0);
-  REQUIRE(sc::finished(r));
+  REQUIRE(r.outcome.finished);
   CHECK(r.impulses[0].magnitude == Approx(0.5625).epsilon(1e-12));
   CHECK(r.impulses[1].magnitude == Approx(0.9375).epsilon(1e-12));
   CHECK(numbers(r, "tangential")[0] == Approx(-0.28125).epsilon(1e-12));
@@ -366,17 +364,15 @@ TEST_CASE("Friction: the box sliding flat on two corners, complementarity with f
 TEST_CASE("Friction: several contacts with friction 0 give today's results, byte for byte",
           "[scene][friction]") {
   // μ = 0 everywhere and Newton's law: no contact law, so the frictionless path runs.
-  json scene =
-      json::parse(sc::read_file(std::string(IMPULSELAB_SCENES_DIR) + "/box-lands-flat.json"));
+  json scene = json::parse(impulselab::test::read_scene_text(std::string(IMPULSELAB_SCENES_DIR) +
+                                                             "/box-lands-flat.json"));
   const std::string without = scene.dump();
   scene["friction"] = 0;
   scene["solver"] = {{"restitution", "newton"}};
   const std::string with_keys = scene.dump();
   for (const auto method : impulse::methods::all_methods) {
-    CHECK(sc::solve_output(sc::parse_world(with_keys, "s.json"), "s.json", method, sc::Format::json)
-              .report ==
-          sc::solve_output(sc::parse_world(without, "s.json"), "s.json", method, sc::Format::json)
-              .report);
+    CHECK(sc::solve_to_json(with_keys, "s.json", {.method = method}).report ==
+          sc::solve_to_json(without, "s.json", {.method = method}).report);
   }
 }
 
@@ -387,13 +383,13 @@ TEST_CASE("Friction: the box landing flat on two corners, serial collisions with
   // wedge of both contacts, the ground static) gains exactly minus the summed impulses on the
   // bumper; the energetic law never gains energy at a collision (tests/friction), so neither does
   // their sequence.
-  json scene =
-      json::parse(sc::read_file(std::string(IMPULSELAB_SCENES_DIR) + "/box-lands-flat.json"));
+  json scene = json::parse(impulselab::test::read_scene_text(std::string(IMPULSELAB_SCENES_DIR) +
+                                                             "/box-lands-flat.json"));
   scene["friction"] = 0.5;
   scene["bodies"][1]["velocity"] = {0.5, -1};
   scene["solver"] = {{"method", "serial"}, {"restitution", "energetic"}};
   const sc::Result r = sc::resolve(sc::parse_world(scene.dump(), "box.json"));
-  REQUIRE(sc::finished(r));
+  REQUIRE(r.outcome.finished);
   Eigen::Vector2d total = Eigen::Vector2d::Zero();
   for (std::size_t v = 0; v < r.impulses.size(); ++v) {
     CHECK(std::abs(numbers(r, "tangential")[v]) <= 0.5 * r.impulses[v].magnitude * (1 + 1e-12));

@@ -12,6 +12,7 @@
 
 #include "impulse/core/error.hpp"
 #include "impulse/scene/json.hpp"
+#include "support/scene_files.hpp"
 
 namespace sc = impulse::scene;
 
@@ -40,7 +41,7 @@ TEST_CASE("Every input the fuzzer found is refused, or solved with honest diagno
   CHECK_FALSE(files.empty());
   for (const auto& file : files) {
     CAPTURE(file.filename().string());
-    const std::string text = sc::read_file(file.string());
+    const std::string text = impulselab::test::read_scene_text(file.string());
     sc::Scene scene;
     try {
       scene = sc::parse_scene(text, "found.json");
@@ -73,7 +74,8 @@ TEST_CASE("An inertia of 4e-301 in a stack: the solver says that it lost part of
   // count as zero) kept rank 1: contacts 4 and 5, between the middle and the top box, whose A
   // is of order 1, got no impulse and the residual is of the order of |B|. Doubles cannot
   // resolve both scales in one factorisation; the diagnostics must say so.
-  const sc::Result r = sc::solve(sc::load_scene(path_of("stack-inertia-1e-300.json")));
+  const sc::Result r =
+      sc::solve(impulselab::test::load_scene(path_of("stack-inertia-1e-300.json")));
   REQUIRE(r.status == impulse::SolveStatus::success);
   CHECK(r.system.rank == 1);
   CHECK_FALSE(r.system.consistent);
@@ -89,7 +91,7 @@ TEST_CASE("Masses 7.8e7 and 1 on a line: the error grows with the square root of
   // velocity (about 2.6e4 here): its QR is accurate relative to those, so Fdt carries an error of
   // about ε √(M/m) = 2e-12 relative to 8 — not the ε of a division. The bound the fuzzer now
   // uses, 64 (N + K + 2) ε (1 + √κ + √s) (|A||Fdt| + |B|) with s = M/m, holds it.
-  const sc::Scene scene = sc::load_scene(path_of("mass-ratio-residual.json"));
+  const sc::Scene scene = impulselab::test::load_scene(path_of("mass-ratio-residual.json"));
   const double M = scene.bodies[0].mass;
   const sc::Result r = sc::solve(scene);
   REQUIRE(r.status == impulse::SolveStatus::success);
@@ -108,7 +110,7 @@ TEST_CASE("Elasticity 5e-323: impulses of subnormal size, the motion unchanged",
   // Fdt of order e), and each velocity changes by less than 1e-300 — which rounds to no change
   // at all for the moving ball (1 ± 1e-322 is 1). The fuzzer's bound had no absolute term for
   // underflow and refused an approach speed one subnormal (4.9e-324) off; it now has one.
-  const sc::Scene scene = sc::load_scene(path_of("subnormal-elasticity.json"));
+  const sc::Scene scene = impulselab::test::load_scene(path_of("subnormal-elasticity.json"));
   REQUIRE(scene.elasticity.value_or(1.0) < std::numeric_limits<double>::min());  // subnormal
   const sc::Result r = sc::solve(scene);
   REQUIRE(r.status == impulse::SolveStatus::success);
@@ -128,7 +130,8 @@ TEST_CASE("Elasticity 2.1e-299: every number tiny, nothing lost to underflow", "
   // of order 1e-299. The harness measured them with Eigen's norm(), whose squares underflow to
   // 0 below 1e-154, and its tolerance vanished; it now uses stableNorm(). The solver was right:
   // it is consistent, and the residual is rounding relative to B.
-  const sc::Scene scene = sc::load_scene(path_of("tiny-elasticity-norm-underflow.json"));
+  const sc::Scene scene =
+      impulselab::test::load_scene(path_of("tiny-elasticity-norm-underflow.json"));
   const sc::Result r = sc::solve(scene);
   REQUIRE(r.status == impulse::SolveStatus::success);
   CHECK(r.system.consistent);

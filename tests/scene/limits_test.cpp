@@ -74,16 +74,6 @@ TEST_CASE("A text larger than the limit is refused before it is parsed", "[scene
                                            " bytes, the most a scene file may hold");
 }
 
-TEST_CASE("A file without end is read no further than the limit", "[scene][json][limits]") {
-  // /dev/zero never ends: read_file stops one byte past the limit and refuses it, which is how
-  // a huge file or a device costs at most the limit in memory.
-  CHECK_THROWS_WITH(sc::load_scene("/dev/zero"),
-                    "/dev/zero: holds more than 67108864 bytes (64 MiB), the most a scene file "
-                    "may hold");
-  CHECK_THROWS_WITH(sc::read_file("/dev/zero", 1000),
-                    "/dev/zero: holds more than 1000 bytes, the most a scene file may hold");
-}
-
 TEST_CASE("Nesting deeper than the limit is refused where it happens", "[scene][json][limits]") {
   // One million '[' (what would cost the parser a frame each): refused at the 65th, column 65.
   CHECK(refusal(std::string(1'000'000, '[')) ==

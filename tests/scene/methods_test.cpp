@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Scenes and the other methods (issue 9): solver.method and solver.max_collisions read and
+// Scenes and the other methods: solver.method and solver.max_collisions read and
 // refused like the other keys, the result of each method, and its JSON report.
 #include <catch2/catch.hpp>
 #include <string>
@@ -76,7 +76,7 @@ TEST_CASE("Bad methods and bounds are refused with the place", "[scene][json][me
       Catch::Matchers::StartsWith("s.json: solver.metod: unknown key (did you mean \"method\"?)"));
   sc::Scene scene = sc::parse_scene(two_hit_one(""), "s.json");
   scene.serial.max_collisions = -1;
-  CHECK_THROWS_WITH(sc::validate(scene), "solver.max_collisions: must be at least 1, got -1");
+  CHECK_THROWS_WITH(sc::World(scene), "solver.max_collisions: must be at least 1, got -1");
 }
 
 TEST_CASE("Each method's result: the impulses, the bodies after, the system's diagnostics",
@@ -90,7 +90,7 @@ TEST_CASE("Each method's result: the impulses, the bodies after, the system's di
   const auto serial = sc::solve(sc::parse_scene(two_hit_one(R"({"method": "serial"})"), "s.json"));
   for (const auto* r : {&simultaneous, &lcp, &serial}) {
     REQUIRE(r->status == impulse::SolveStatus::success);
-    CHECK(sc::finished(*r));
+    CHECK(r->outcome.finished);
     CHECK(r->energy_change == Approx(0.0).margin(1e-14));
     CHECK(r->momentum_after.x() == Approx(1.5).epsilon(1e-14));
     // The system is the paper's whatever the method: A = [[2, -1], [-1, 2]], B = (6, 3), rank 2.
@@ -120,7 +120,7 @@ TEST_CASE("Each method's result: the impulses, the bodies after, the system's di
   // A bound below the 3 collisions it needs: the method did not finish.
   const auto cut = sc::solve(
       sc::parse_scene(two_hit_one(R"({"method": "serial", "max_collisions": 2})"), "s.json"));
-  CHECK_FALSE(sc::finished(cut));
+  CHECK_FALSE(cut.outcome.finished);
   const auto& diagnostics = std::get<me::SerialDiagnostics>(cut.outcome.solution);
   CHECK(diagnostics.status == me::SerialStatus::collision_limit);
   CHECK(diagnostics.still_approaching == 0);

@@ -196,7 +196,7 @@ void routh(const std::filesystem::path& out, int number, const Setup& s, double 
     const friction::ContactImpulse& i = ends[k].impulse;
     csv.row({static_cast<double>(k), i.normal, i.tangential, i.u_after.x(), i.u_after.y(),
              i.compression, energy(ends[k])});
-    std::printf("    %-10s %s\n", std::string(friction::to_string(laws[k])).c_str(),
+    std::printf("    %-10s %s\n", std::string(impulse::name_of(laws[k])).c_str(),
                 phases(i).c_str());
   }
 }
@@ -250,7 +250,7 @@ int main(int argc, char** argv) try {
       const auto c = strike(before, mu, e, laws[k]);
       const double after = energy(c);
       std::printf("  %-10s %14.10g %14.10g %14.10g %+14.10g  %s\n",
-                  std::string(friction::to_string(laws[k])).c_str(), c.impulse.normal,
+                  std::string(impulse::name_of(laws[k])).c_str(), c.impulse.normal,
                   c.impulse.tangential, after, after - energy_before, phases(c.impulse).c_str());
       csv.row({static_cast<double>(k), mu, c.impulse.normal, c.impulse.tangential,
                c.impulse.compression, energy_before, after,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The one door from the interactive page into the library (embind): a scene's text in, the
-// library's own answer out. It calls exactly what `impulselab solve --format json` calls (the
-// scene reader, the solver, the JSON report and warnings (lib/scene_json)), so that the page's
+// library's own answer out. It calls exactly what `impulselab solve --format json` calls
+// (scene::solve_to_json: the scene reader, scene::run, the JSON report), so that the page's
 // numbers are the command line's numbers. Everything else the page shows that is not in that
 // report (each body's motion before the collision, its kinetic energy before and after) comes
 // from the same solved result, never from JavaScript.
@@ -17,7 +17,7 @@
 
 #include "impulse/core/error.hpp"
 #include "impulse/scene/json.hpp"
-#include "impulse/scene/report.hpp"
+#include "impulse/scene/run.hpp"
 #include "impulse/scene/scene.hpp"
 
 namespace {
@@ -29,10 +29,14 @@ namespace scene = impulse::scene;
 // the scene is what the reader needs (the command line puts the file name there).
 constexpr std::string_view source = "scene";
 
+// The message without the scene's name in front ("scene: " or, for a row of a sweep, "scene "
+// before "at elasticity E: ").
 std::string without_source(std::string_view message) {
   const std::string prefix = std::string(source) + ": ";
   if (message.substr(0, prefix.size()) == prefix) {
     message.remove_prefix(prefix.size());
+  } else if (message.substr(0, source.size() + 1) == std::string(source) + " ") {
+    message.remove_prefix(source.size() + 1);
   }
   return std::string(message);
 }
@@ -82,20 +86,17 @@ val solve_scene(const std::string& text) {
   std::vector<std::string> warnings;
   std::string error;
   try {
-    // `impulselab solve --format json`'s path (scene::solve_to_json), with the resolved scene
-    // kept for the drawing: the world read and checked, resolved once, and the library's own
-    // report, refusals (numbers that overflow, a method that did not finish) and warnings.
-    const scene::World world = scene::parse_world(text, source);
-    const scene::Result result = scene::resolve(world);
-    const scene::SolveOutput output = scene::solve_output(result, source, scene::Format::json);
-    if (!output.unfinished.empty()) {
-      throw impulse::InvalidInput(output.unfinished);  // the command line's exit 1
+    // `impulselab solve --format json`'s path: the world read and checked, resolved once, and the
+    // library's own report, refusals and warnings.
+    const scene::JsonRun solved = scene::solve_to_json(text, source);
+    if (!solved.run.unfinished.empty()) {
+      throw impulse::InvalidInput(solved.run.unfinished);  // the command line's exit 1
     }
-    for (const std::string& line : output.warnings) {
+    for (const std::string& line : solved.run.warnings) {
       warnings.push_back(without_source(line));
     }
-    result_text = output.report;
-    details_text = details_json(result).dump();
+    result_text = solved.report;
+    details_text = details_json(solved.run.results.front()).dump();
   } catch (const impulse::InvalidInput& e) {
     error = without_source(e.what());
   } catch (const std::exception& e) {
@@ -115,23 +116,26 @@ val solve_scene(const std::string& text) {
 val compare_scene(const std::string& text, const std::string& what) {
   val out = val::object();
   std::string error;
-  scene::SolveOutput output;
+  std::string result_text;
+  scene::Run run;
   try {
-    const scene::World world = scene::parse_world(text, source);
-    output = what == "restitution" ? scene::compare_laws_output(world, source, scene::Format::json)
-                                   : scene::compare_output(world, source, scene::Format::json);
+    const scene::Request request{.compare = what == "restitution"
+                                                ? scene::Request::Compare::laws
+                                                : scene::Request::Compare::methods};
+    run = scene::run(scene::parse_world(text, source), source, request);
+    result_text = scene::report_json(run, source);
   } catch (const impulse::InvalidInput& e) {
     error = without_source(e.what());
   } catch (const std::exception& e) {
     error = std::string("internal error (please report it): ") + e.what();
   }
   std::vector<std::string> warnings;
-  for (const std::string& line : output.warnings) {
+  for (const std::string& line : run.warnings) {
     warnings.push_back(without_source(line));
   }
-  out.set("result", output.report);
+  out.set("result", result_text);
   out.set("warnings", strings(warnings));
-  out.set("unfinished", without_source(output.unfinished));
+  out.set("unfinished", without_source(run.unfinished));
   out.set("error", error);
   return out;
 }
@@ -140,7 +144,7 @@ val compare_scene(const std::string& text, const std::string& what) {
 // command line does; an array of numbers): {rows, error}, `rows` a JSON array with one row per
 // elasticity, the CSV's columns [elasticity, energy_after, energy_change, impulse_0..,
 // approach_after_0..]; `error` why the scene or an elasticity was refused (every body collides at
-// the swept elasticity).
+// the swept elasticity). Each row is scene::run at its elasticity, as the command line's sweep.
 val sweep_scene(const std::string& text, const val& elasticities) {
   val out = val::object();
   std::string error;
@@ -148,19 +152,11 @@ val sweep_scene(const std::string& text, const val& elasticities) {
   try {
     const scene::World world = scene::parse_world(text, source);
     for (const double e : emscripten::vecFromJSArray<double>(elasticities)) {
-      const std::string at = " (at elasticity " + impulse::format_number(e) + ")";
-      scene::Result r;
-      try {
-        r = scene::resolve(world.with_elasticity(e));
-      } catch (const impulse::InvalidInput& refused) {
-        throw impulse::InvalidInput(std::string(refused.what()) + at);
+      const scene::Run run = scene::run(world, source, {.elasticity = e});
+      if (!run.unfinished.empty()) {
+        throw impulse::InvalidInput(run.unfinished);
       }
-      if (r.status != impulse::SolveStatus::success) {
-        throw impulse::InvalidInput(scene::overflow_message(r, source, false) + at);
-      }
-      if (!scene::finished(r)) {
-        throw impulse::InvalidInput(scene::unfinished_message(r, source) + at);
-      }
+      const scene::Result& r = run.results.front();
       nlohmann::ordered_json row = {e, r.energy_after, r.energy_change};
       for (const scene::ImpulseReport& impulse : r.impulses) {
         row.push_back(impulse.magnitude);
@@ -211,7 +207,7 @@ val serial_step(const std::string& text, int k) {
             {"velocity", velocities},
             {"angular_velocity", spins},
             {"energy_after", r.energy_after},
-            {"finished", scene::finished(r)}};
+            {"finished", r.outcome.finished}};
   } catch (const impulse::InvalidInput& e) {
     error = without_source(e.what());
   } catch (const std::exception& e) {

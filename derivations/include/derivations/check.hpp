@@ -3,13 +3,17 @@
 /// @brief The derivation checker: every equation, step and claim of the paper as a check.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
+
+#include "impulse/core/names.hpp"
 
 /// @brief The checker of the paper *Collision handling* (`impulselab check`).
 ///
@@ -43,18 +47,61 @@ enum class Status {
   failed,    ///< none of these: a defect of the checker or an unresolved finding
 };
 
-/// @brief The report name of a kind ("equation", "step", "claim").
-/// @param kind the kind
+/// @brief A method's row of its table: its name in the report, and the directive that names a
+/// model of it in a file.
+struct MethodName {
+  Method value;           ///< the method
+  std::string_view name;  ///< "symbolic", "numeric", …
+  std::string_view
+      directive;  ///< `ode:`, `quadrature:`, `model:` (numeric), `search:`; "" for none
+};
+
+}  // namespace impulse::derivations
+
+namespace impulse {
+/// @brief The kinds of check, by their names in the report.
+template <>
+struct EnumNames<derivations::Kind> {
+  /// one row per kind
+  static constexpr std::array<Named<derivations::Kind>, 3> table{
+      {{derivations::Kind::equation, "equation"},
+       {derivations::Kind::step, "step"},
+       {derivations::Kind::claim, "claim"}}};
+};
+/// @brief The methods of a check, by their names in the report and in a file.
+template <>
+struct EnumNames<derivations::Method> {
+  /// one row per method
+  static constexpr std::array<derivations::MethodName, 5> table{
+      {{derivations::Method::symbolic, "symbolic", ""},
+       {derivations::Method::numeric, "numeric", "model"},
+       {derivations::Method::quadrature, "quadrature", "quadrature"},
+       {derivations::Method::ode, "ode", "ode"},
+       {derivations::Method::search, "search", "search"}}};
+};
+/// @brief The statuses of a check, by their names in the report.
+template <>
+struct EnumNames<derivations::Status> {
+  /// one row per status
+  static constexpr std::array<Named<derivations::Status>, 4> table{
+      {{derivations::Status::verified, "verified"},
+       {derivations::Status::erratum, "erratum"},
+       {derivations::Status::refuted, "refuted"},
+       {derivations::Status::failed, "failed"}}};
+};
+}  // namespace impulse
+
+namespace impulse::derivations {
+
+/// @brief The report name of a kind, a method or a status ("equation", "symbolic", "verified").
+/// @tparam Enum Kind, Method or Status
+/// @param value the value
 /// @return its name
-[[nodiscard]] std::string_view to_string(Kind kind);
-/// @brief The report name of a method ("symbolic", …).
-/// @param method the method
-/// @return its name
-[[nodiscard]] std::string_view to_string(Method method);
-/// @brief The report name of a status ("verified", …).
-/// @param status the status
-/// @return its name
-[[nodiscard]] std::string_view to_string(Status status);
+template <typename Enum>
+[[nodiscard]] constexpr std::string_view to_string(Enum value) requires
+    std::is_same_v<Enum, Kind> || std::is_same_v<Enum, Method> || std::is_same_v<Enum, Status> {
+  return name_of(value);
+}
 
 /// @brief What evaluating a check found.
 struct Outcome {

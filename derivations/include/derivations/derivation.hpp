@@ -4,6 +4,7 @@
 /// (`impulselab check NOTES.md`; the contract is spec/derivation-format.md).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "derivations/check.hpp"
+#include "impulse/core/names.hpp"
 
 namespace impulse::derivations {
 
@@ -27,10 +29,48 @@ enum class Verdict {
   undecided,        ///< neither the exact nor the numeric method could decide
 };
 
+/// @brief A verdict's row of its table: its name in the report, and whether it fails the step.
+struct VerdictName {
+  Verdict value;          ///< the verdict
+  std::string_view name;  ///< "follows-one-way"
+  bool fails;             ///< the step does not pass: `check` exits with status 1
+};
+
+}  // namespace impulse::derivations
+
+namespace impulse {
+/// @brief The verdicts' names and which of them fail a step.
+template <>
+struct EnumNames<derivations::Verdict> {
+  /// one row per verdict
+  static constexpr std::array<derivations::VerdictName, 7> table{{
+      {derivations::Verdict::premise, "premise", false},
+      {derivations::Verdict::follows, "follows", false},
+      {derivations::Verdict::follows_one_way, "follows-one-way", false},
+      {derivations::Verdict::follows_if, "follows-if", false},
+      {derivations::Verdict::does_not_follow, "does-not-follow", true},
+      {derivations::Verdict::dimensions, "dimensions", true},
+      {derivations::Verdict::undecided, "undecided", true},
+  }};
+};
+}  // namespace impulse
+
+namespace impulse::derivations {
+
 /// @brief The report name of a verdict ("follows-one-way", …).
 /// @param verdict the verdict
 /// @return its name in the report
-[[nodiscard]] std::string_view to_string(Verdict verdict);
+[[nodiscard]] constexpr std::string_view to_string(Verdict verdict) {
+  return name_of(verdict);
+}
+
+/// @brief Whether a step with this verdict does not pass (does-not-follow, dimensions,
+/// undecided).
+/// @param verdict the verdict
+/// @return whether it fails
+[[nodiscard]] constexpr bool fails(Verdict verdict) {
+  return row_of(verdict).fails;
+}
 
 /// @brief Every verdict, in the order of the report's summary.
 inline constexpr Verdict all_verdicts[] = {

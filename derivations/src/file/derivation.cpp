@@ -18,30 +18,9 @@
 
 namespace impulse::derivations {
 
-std::string_view to_string(Verdict verdict) {
-  switch (verdict) {
-    case Verdict::premise:
-      return "premise";
-    case Verdict::follows:
-      return "follows";
-    case Verdict::follows_one_way:
-      return "follows-one-way";
-    case Verdict::follows_if:
-      return "follows-if";
-    case Verdict::does_not_follow:
-      return "does-not-follow";
-    case Verdict::dimensions:
-      return "dimensions";
-    case Verdict::undecided:
-      return "undecided";
-  }
-  return "?";
-}
-
 int exit_status(const DerivationReport& report) {
-  const bool failing = report.count(Verdict::does_not_follow) + report.count(Verdict::dimensions) +
-                           report.count(Verdict::undecided) >
-                       0;
+  const bool failing = std::any_of(report.equations.begin(), report.equations.end(),
+                                   [](const EquationResult& e) { return fails(e.verdict); });
   return failing || (report.task && !report.task->target_reached) ? 1 : 0;
 }
 

@@ -14,10 +14,6 @@ namespace impulse::derivations {
 
 namespace {
 
-bool failing(Verdict v) {
-  return v == Verdict::does_not_follow || v == Verdict::dimensions || v == Verdict::undecided;
-}
-
 std::string value_text(double x, const std::string& exact) {
   return exact.empty() ? num::brief(x, 6) : exact;
 }
@@ -128,7 +124,7 @@ std::string render_text(const DerivationReport& r, bool colour) {
   std::optional<std::size_t> first_failure;
   const std::string indent(34, ' ');
   for (const EquationResult& e : r.equations) {
-    const bool fails = failing(e.verdict);
+    const bool fails = derivations::fails(e.verdict);
     const bool first = fails && !first_failure;
     if (first) {
       first_failure = e.line;
@@ -219,7 +215,7 @@ std::string render_markdown(const DerivationReport& r) {
         details = e.decided_by;
         break;
     }
-    const bool fails = failing(e.verdict);
+    const bool fails = derivations::fails(e.verdict);
     out << "| " << e.line << " | " << (fails ? "**" : "") << to_string(e.verdict)
         << (fails ? "**" : "") << " | $" << escape_markdown(e.latex) << "$ | "
         << escape_markdown(details) << " |\n";
@@ -318,7 +314,7 @@ std::string render_json(const DerivationReport& r) {
 
 std::optional<std::size_t> first_failing(const DerivationReport& r) {
   for (const EquationResult& e : r.equations) {
-    if (failing(e.verdict)) {
+    if (fails(e.verdict)) {
       return e.line;
     }
   }

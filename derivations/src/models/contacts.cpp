@@ -89,4 +89,23 @@ std::vector<Point> two_rigid_bodies_one_elasticity(Probe&, const Settings& s) {
   return rigid_pairs(s, 0.0, 3.0);
 }
 
+std::vector<Model> contacts_models() {
+  return {
+      {Method::numeric, "two rigid bodies at one contact, elastic",
+       "Two rigid bodies touching at one point (masses 1e-3 to 1e3, radii of gyration on the "
+       "scale of their arms), resolved by the law of restitution with elasticity 2 from the "
+       "contact Jacobian: the body's m, I, p, L, arm r and outward normal n, the other's m_o, "
+       "I_o, p_o, L_o and arm r_o, the impulse F (dt = 1), the contact points' velocities "
+       "after (v_v', v_o' and their parts along n, v'_vn and v'_on) and the kinetic energies.",
+       two_rigid_bodies_elastic},
+      {Method::numeric, "two rigid bodies at one contact, inelastic",
+       "The same, with elasticity 1: the contact points leave with one velocity along the "
+       "normal.",
+       two_rigid_bodies_inelastic},
+      {Method::numeric, "two rigid bodies at one contact, one elasticity",
+       "The same, with one elasticity for both bodies drawn from 0 to 3.",
+       two_rigid_bodies_one_elasticity},
+  };
+}
+
 }  // namespace impulse::derivations::models

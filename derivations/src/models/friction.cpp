@@ -295,4 +295,32 @@ std::vector<Point> rods_striking_rough_floors(Probe&, const Settings& s) {
   return points;
 }
 
+std::vector<Model> friction_models() {
+  return {
+      {Method::numeric, "point cloud struck obliquely",
+       "The body of point masses (3 to 6) receiving an impulse P_n n + P_t t at one of its "
+       "points (arm r) along any two unit directions n and t, not necessarily at right angles; "
+       "its response by Gauss's principle: the centre's velocity v and spin omega before, v' "
+       "and omega' after.",
+       point_cloud_struck_obliquely},
+      {Method::numeric, "rod on a rough floor, slip then stick",
+       "A uniform rod (m 0.01 to 100, L 0.1 to 10, I = m L^2 / 12) strikes a floor tilted by "
+       "up to 0.5 rad at its lower end (mu 0 to 1.5, elasticity 1 to 2), followed through its "
+       "normal impulse by increments: Coulomb's law picks each increment's tangential impulse, "
+       "the momentum and the angular momentum take it, and an event inside an increment (the "
+       "slip stopping, compression ending, a law of restitution met) is located by bisection "
+       "on its length. Kept: the cases where the slip stopped before compression ended and the "
+       "end stuck from there on. It gives the slip's sign s at the start, the normal impulse "
+       "P_s where the slip stopped, P_c where compression ended, the work w_c of the normal "
+       "impulse until then (summed increment by increment), and the impulses at each law's "
+       "end.",
+       rod_slip_then_stick, 1e-9, 1e-6, false, true},
+      {Method::search, "rods striking rough floors",
+       "The rods and floors of the model above, every case (slip throughout, slip then stick, "
+       "slip that stops and starts again): the normal and tangential impulses at Newton's end "
+       "(P_N, P_tN), Poisson's (P_P, P_tP) and the energetic law's (P_E, P_tE).",
+       rods_striking_rough_floors, 1e-9, 1e-6, false, true},
+  };
+}
+
 }  // namespace impulse::derivations::models

@@ -46,4 +46,16 @@ std::vector<Point> library_rigid_body_hit_at_several_points(Probe&, const Settin
   return points;
 }
 
+std::vector<Model> library_models() {
+  return {
+      {Method::numeric, "the library's rigid body hit at several points",
+       "A rigid body of impulse::rigid_2d (masses 1e-3 to 1e3, radii of gyration 0.1 to 10) "
+       "receiving impulses -n_k F_k dt at three arms r_k, one at a time by "
+       "rigid_2d::apply_impulse; the velocity of the point at arm r_v before and after by "
+       "rigid_2d::point_velocity, split into the centre's (v_vt, v'_vt) and the rest (v_vr, "
+       "v'_vr).",
+       library_rigid_body_hit_at_several_points},
+  };
+}
+
 }  // namespace impulse::derivations::models

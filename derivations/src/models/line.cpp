@@ -230,4 +230,41 @@ std::vector<Point> changes_of_units_on_a_line(Probe&, const Settings& s) {
   return points;
 }
 
+std::vector<Model> line_models() {
+  return {
+      {Method::ode, "linear spring contact on a line",
+       "Two bodies on a line meet; while they overlap a linear spring pushes them apart (GSL "
+       "rk8pd until the overlap is gone); the impulse is the time integral of the spring's "
+       "force sampled along the motion (Simpson's rule), the momenta after come from the "
+       "velocities at the end.",
+       spring_contact_on_a_line},
+      {Method::ode, "damper contact on a line",
+       "As the linear spring, with a damper alone (force proportional to the closing speed): "
+       "the contact ends when the bodies stop closing.",
+       damper_contact_on_a_line},
+      {Method::ode, "spring-damper contact on a line",
+       "A linear spring and damper of damping ratio 0.05, 0.2 or 0.5: the textbook coefficient "
+       "of restitution exp(-z pi / sqrt(1 - z^2)) gives elasticity_1 = elasticity_2 = 1 + that "
+       "coefficient.",
+       spring_damper_contact_on_a_line},
+      {Method::search, "bodies on a line, one elasticity",
+       "Approaching bodies on a line (small whole numbers first, then masses from 1e-3 to 1e3 "
+       "and speeds up to 10) with one elasticity for both, from -3 to 10 (0, 1 and 2 "
+       "included).",
+       bodies_on_a_line_one_elasticity},
+      {Method::search, "bodies on a line, two elasticities",
+       "Approaching bodies on a line with an elasticity each, from 1 to 2 (the pairs 2, 1 and "
+       "1, 2 on small whole numbers first).",
+       bodies_on_a_line_two_elasticities},
+      {Method::search, "bodies and impulses on a line",
+       "Bodies on a line and any impulse between them, from -1e6 to 1e6.",
+       bodies_and_impulses_on_a_line},
+      {Method::numeric, "changes of units on a line",
+       "Bodies on a line seen in other units of mass, length and time (each changed by a "
+       "factor from 1e-3 to 1e3): the same quantities, numbered with a tilde, in the new "
+       "units.",
+       changes_of_units_on_a_line},
+  };
+}
+
 }  // namespace impulse::derivations::models

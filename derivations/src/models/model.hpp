@@ -8,8 +8,8 @@
 //
 //     ode: spring-damper contact on a line
 //
-// Adding a model: write its points function in a file of this folder and add it to the table in
-// models.cpp (method, name, what it sets, its tolerance).
+// Adding a model: write its points function in a file of this folder and add its row to that
+// family's table at the end of the file (method, name, what it sets, its tolerance).
 #pragma once
 
 #include <Eigen/Core>
@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "derivations/check.hpp"
 #include "file/time.hpp"
 
 namespace impulse::derivations::models {
@@ -75,16 +76,15 @@ struct Settings {
 
 /// A named model.
 struct Model {
-  std::string_view method;             ///< "ode", "quadrature", "numeric" (`model:`) or "search"
-  std::string_view name;               ///< what a file writes after the method
-  std::string_view summary;            ///< one sentence: the physics, for the docs and the report
-  std::vector<std::string_view> sets;  ///< the symbols its points give values (for the docs)
-  double holds_below = 1e-9;           ///< worst relative residual of a statement that holds on it
-  double fails_above = 1e-6;           ///< smallest worst residual of one that does not
+  Method method = Method::numeric;  ///< ode, quadrature, numeric (`model:`) or search
+  std::string_view name;            ///< what a file writes after the method
+  std::string_view summary;         ///< the physics, and the symbols its points give values
+  std::vector<Point> (*points)(Probe& probe, const Settings& settings) = nullptr;
+  double holds_below = 1e-9;  ///< worst relative residual of a statement that holds on it
+  double fails_above = 1e-6;  ///< smallest worst residual of one that does not
   /// Symbols of the file a point leaves unset are drawn at random (quadrature models: they only
   /// shape the force); otherwise they must follow from the equations before.
   bool draws_the_rest = false;
-  std::vector<Point> (*points)(Probe& probe, const Settings& settings) = nullptr;
   /// Its points are made once per file and shared by the checks that name it, as an ODE
   /// model's are (a costly model that does not read the probe).
   bool shared = false;
@@ -94,6 +94,6 @@ struct Model {
 [[nodiscard]] const std::vector<Model>& all();
 
 /// The model a file names, or null.
-[[nodiscard]] const Model* find(std::string_view method, std::string_view name);
+[[nodiscard]] const Model* find(Method method, std::string_view name);
 
 }  // namespace impulse::derivations::models

@@ -91,4 +91,24 @@ std::vector<Point> pucks(Probe&, const Settings& s) {
   return points;
 }
 
+std::vector<Model> plane_models() {
+  return {
+      {Method::numeric, "a base turned to a vector",
+       "Vectors of the plane and their coordinates in a base turned to a direction: the "
+       "rotation of Eigen::Rotation2D by minus the direction's angle, not a dot product. The "
+       "coordinate of x along v is cast_v, that of p along the unit normal n (also given as "
+       "tau = tan(angle/2)) is p_n.",
+       base_turned_to_a_vector},
+      {Method::search, "momenta and normals in the plane",
+       "A momentum and a unit normal (with tau = tan(angle/2)): first p = (0, 2) against n = "
+       "(1, 0), then random ones, every fourth along the contact's tangent.",
+       momenta_and_normals_in_the_plane},
+      {Method::search, "pucks",
+       "Two point masses in the plane (masses 1e-3 to 1e3, any momenta), the bumper's outward "
+       "normal n (and tau), one elasticity for both (2, 1 or from 0 to 3); first the bumper at "
+       "(-1, 0) caught up by the wedge at (-3, 0) against n = (1, 0).",
+       pucks},
+  };
+}
+
 }  // namespace impulse::derivations::models

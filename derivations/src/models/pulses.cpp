@@ -148,4 +148,28 @@ std::vector<Point> pulses_on_a_turning_body(Probe&, const Settings& s) {
   return points;
 }
 
+std::vector<Model> pulses_models() {
+  return {
+      {Method::quadrature, "pulses of force on a body",
+       "A point mass m of momentum p receiving three mean forces F_1, F_2, F_3 over a contact "
+       "of duration dt, all shaped by one pulse (constant, half-sine, triangular, or peaking "
+       "early, in turn); its motion along the normal n_v integrated in time (GSL rk8pd). At an "
+       "instant t of the contact: the path S_v along n_v so far, and the rates of the path, of "
+       "the momentum and of the velocity along n_v (d S_v, d p_v, d v_v per dt); over the "
+       "whole contact, Delta E_vt the change of the kinetic energy of the motion along n_v; "
+       "v_v the velocity along n_v before.",
+       pulses_on_a_body, 1e-9, 1e-6, true},
+      {Method::quadrature, "pulses of force on a turning body",
+       "Three mean forces F_1, F_2, F_3 at arms r_1, r_2, r_3 of a body of inertia I and "
+       "angular momentum L, over a contact of duration dt, all shaped by one pulse (constant, "
+       "half-sine, triangular, or peaking early, in turn); the body's turning integrated in "
+       "time (GSL rk8pd) from the torque, and Delta E_vr the work of the first force along n_v "
+       "on the rotational motion of the point at arm r_v, integrated with it; at an instant t "
+       "of the contact, the angle alpha turned so far and the rates of the angle, of the rate "
+       "of turning and of the angular momentum (d alpha, d omega, d L per dt); omega the rate "
+       "of turning before.",
+       pulses_on_a_turning_body, 1e-9, 1e-6, true},
+  };
+}
+
 }  // namespace impulse::derivations::models

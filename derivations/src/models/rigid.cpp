@@ -259,4 +259,44 @@ std::vector<Point> rod_on_a_penalty_damper(Probe&, const Settings& s) {
   return points;
 }
 
+std::vector<Model> rigid_models() {
+  return {
+      {Method::numeric, "point cloud rigid body",
+       "A rigid body made of 3 to 6 point masses: its mass, inertia, momentum, angular "
+       "momentum and kinetic energy summed point by point; an impulse -n F dt at one of its "
+       "points (arm r), the body's response by Gauss's principle (the rigid motion nearest, in "
+       "the mass metric, to the points' free response); the point's velocity before and after "
+       "by a complex-step derivative of its motion, and its parts: v_t the centre's velocity, "
+       "v_r the rest.",
+       point_cloud_rigid_body},
+      {Method::numeric, "point cloud rigid body hit at several points",
+       "The body of point masses receiving impulses -n_k F_k dt at three of its points (arms "
+       "r_1, r_2, r_3): its angular momentum's change dL summed point by point after Gauss's "
+       "principle, and the velocity of a fourth point (arm r_v) before and after, split into "
+       "the centre's v_vt, v'_vt and the rest v_vr, v'_vr.",
+       point_cloud_hit_at_several_points},
+      {Method::numeric, "point cloud pinned",
+       "Point masses turning together about a pin O: the kinetic energy E, angular momentum "
+       "L_O and inertia I_O about O summed point by point, the inertia I about the centre of "
+       "mass, the mass m, the distance d from O to the centre and the rate of turning omega.",
+       point_cloud_pinned},
+      {Method::numeric, "turned point",
+       "A material point at arm r_v turned by a small angle d alpha: its displacement along a "
+       "unit normal n_v, d S_v, from the complex-step derivative of its rotation.",
+       turned_point},
+      {Method::ode, "rigid rod on a penalty spring",
+       "A uniform rod falls, turning, onto a ground tilted by up to 0.3 rad; while its end is "
+       "below the ground a stiff linear spring (1e14 times its mass) pushes it out along the "
+       "ground's normal (GSL rk8pd). The impulse is the push's integral sampled along the "
+       "motion; r is the end's arm when it touches, n the rod's outward normal there (minus "
+       "the ground's); the ground does not move (E_o = E_o' = 0). The rod turns a little while "
+       "it is pushed, so the instant impulse is matched to about 1e-7.",
+       rod_on_a_penalty_spring, 1e-6, 1e-3},
+      {Method::ode, "rigid rod on a penalty damper",
+       "As the rod on a spring, held by a damper (1e8 times its mass) that stops its end: the "
+       "contact ends when the end stops sinking.",
+       rod_on_a_penalty_damper, 1e-6, 1e-3},
+  };
+}
+
 }  // namespace impulse::derivations::models

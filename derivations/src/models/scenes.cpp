@@ -210,6 +210,148 @@ Work work_at(const many::Scene& s, const VectorXd& F, std::size_t body, std::siz
   return w;
 }
 
+// One scene drawn and solved: its impulses F (the law's, or the file's blocks summed), the bodies
+// after them, the elasticity and the coefficients it was solved with.
+struct Case {
+  Drawn drawn;
+  VectorXd F;
+  many::Scene after;
+  double e = 2;
+  const Coefficients* k = nullptr;
+  double dt = 1;
+};
+
+// The motion the file's coefficients give: a point at every contact, seen from its first body.
+void add_summed_points(const Family& f, const Case& c, std::vector<Point>& points) {
+  const many::Scene& s = c.drawn.scene;
+  for (const many::Contact& contact : s.contacts) {
+    const many::Body& a = s.bodies[contact.a];
+    const Vector2d centre_after = c.after.bodies[contact.a].p / a.m;
+    Point p;
+    p.set("E", many::energy(s)).set("E'", many::energy(c.after));
+    p.set("m", a.m).set("\\vec{p}", a.p).set("\\vec{n_v}", contact.n);
+    p.set("\\vec{v_{vt}'}", centre_after);
+    if (f.rigid) {
+      p.set("I", a.I).set("L", a.L).set("\\vec{r_v}", contact.point - a.position);
+      p.set("\\vec{v_{vr}'}",
+            Vector2d(c.after.bodies[contact.a].velocity_at(contact.point) - centre_after));
+    }
+    p.set("\\vec{v_{vo}'}", c.after.bodies[contact.b].velocity_at(contact.point));
+    if (f.elasticity == 0) {
+      p.set("\\mathit{elasticity}", c.e);
+    }
+    points.push_back(std::move(p));
+  }
+}
+
+// What every point of a scene solved by the law shares: dt, the energies, the two bodies, and the
+// first body's impulses numbered as the file's indices: 1 to 3 the pair's, 4 and 5 the others' (a
+// slot without a contact: no impulse, any normal and arm).
+Point common_values(num::Random& r, const Family& f, const Case& c) {
+  const many::Scene& s = c.drawn.scene;
+  const many::Body& own = s.bodies[0];
+  const many::Body& other = s.bodies[1];
+  Point common;
+  common.set("dt", c.dt).set("E", many::energy(s)).set("E'", many::energy(c.after));
+  common.set("m", own.m).set("\\vec{p}", own.p).set("m_o", other.m).set("\\vec{p_o}", other.p);
+  if (f.rigid) {
+    common.set("I", own.I).set("L", own.L).set("I_o", other.I).set("L_o", other.L);
+  }
+  for (std::size_t q = 0; q < (f.others ? 5U : 3U); ++q) {
+    Vector2d n = r.unit_vector();
+    Vector2d arm = r.vector(2);
+    double mean = 0;
+    if (const auto at = c.drawn.slots[q]) {
+      const many::Contact& contact = s.contacts[*at];
+      n = contact.a == 0 ? contact.n : Vector2d(-contact.n);
+      arm = contact.point - own.position;
+      mean = c.F(static_cast<Eigen::Index>(*at)) / c.dt;
+    }
+    common.set(numbered("F_", q + 1, ""), mean)
+        .set(numbered("\\vec{n_", q + 1), n)
+        .set(numbered("\\vec{F_", q + 1), Vector2d(-n * mean));
+    if (f.rigid) {
+      common.set(numbered("\\vec{r_", q + 1), arm);
+    }
+  }
+  return common;
+}
+
+// Every body's block over the slots (zero where a slot has no contact); the impulse of the slot
+// the first body is not in; and the blocks added and solved: their impulses G_q over dt, slot by
+// slot (NaN when the file does not define the coefficients), beside the law's motion p', p_o'.
+void add_blocks(const Family& f, const Case& c, Point& common) {
+  const std::vector<std::optional<std::size_t>>& slots = c.drawn.slots;
+  const std::vector<many::System> each = blocks(c.drawn.scene, *c.k);
+  const auto entry = [&](std::size_t slot) { return static_cast<Eigen::Index>(*slots[slot]); };
+  for (std::size_t body = 0; body < each.size(); ++body) {
+    const many::System& b = each[body];
+    const std::string name = std::to_string(body + 1);
+    for (std::size_t v = 0; v < slots.size(); ++v) {
+      common.set("b_{" + name + std::to_string(v + 1) + "}", slots[v] ? b.B(entry(v)) : 0.0);
+      for (std::size_t i = 0; i < slots.size(); ++i) {
+        common.set("a_{" + name + std::to_string(v + 1) + std::to_string(i + 1) + "}",
+                   slots[v] && slots[i] ? b.A(entry(v), entry(i)) : 0.0);
+      }
+    }
+  }
+  if (f.others) {
+    common.set("F_6", c.F(entry(5)) / c.dt);
+  }
+  const many::System sum = added(each);
+  const bool defined = sum.A.allFinite() && sum.B.allFinite();
+  const VectorXd G =
+      defined ? many::solve(sum.A, sum.B) : VectorXd::Constant(sum.B.size(), std::nan(""));
+  for (std::size_t q = 0; q < slots.size(); ++q) {
+    common.set(numbered("G_", q + 1, ""), slots[q] ? G(entry(q)) / c.dt : 0.0);
+  }
+  common.set("\\vec{p'}", c.after.bodies[0].p).set("\\vec{p_o'}", c.after.bodies[1].p);
+}
+
+// A point per contact of the pair: the first body's velocities there before and after, the
+// other's, the impulse it receives there and the work the impulses do.
+void add_contact_points(const Family& f, const Case& c, const Point& common,
+                        std::vector<Point>& points) {
+  const many::Scene& s = c.drawn.scene;
+  const many::Body& own = s.bodies[0];
+  const Vector2d centre_after = c.after.bodies[0].p / own.m;
+  for (std::size_t v = 0; v < 3; ++v) {
+    if (!c.drawn.slots[v]) {
+      continue;
+    }
+    const std::size_t slot = *c.drawn.slots[v];
+    const many::Contact& contact = s.contacts[slot];
+    Point p = common;
+    p.set("\\vec{n_v}", contact.n);
+    const Vector2d point_after = c.after.bodies[0].velocity_at(contact.point);
+    p.set("\\vec{v_{vt}'}", centre_after).set("\\vec{v_{vt}}", Vector2d(own.p / own.m));
+    if (f.rigid) {
+      p.set("\\vec{r_v}", contact.point - own.position);
+      p.set("\\vec{v_{vr}}", Vector2d(own.velocity_at(contact.point) - own.p / own.m));
+      p.set("\\vec{v_{vr}'}", Vector2d(point_after - centre_after));
+    }
+    p.set("\\vec{v_{vo}}", s.bodies[1].velocity_at(contact.point));
+    p.set("\\vec{v_{vo}'}", c.after.bodies[1].velocity_at(contact.point));
+    // The impulse the body receives there: the momentum that contact's impulse alone gives the
+    // body at rest (scene.hpp's after), over dt.
+    const auto at = static_cast<Eigen::Index>(slot);
+    VectorXd alone = VectorXd::Zero(c.F.size());
+    alone(at) = c.F(at);
+    many::Scene resting = s;
+    resting.bodies[0].p.setZero();
+    p.set("F_v", c.F(at) / c.dt)
+        .set("\\vec{F_v}", Vector2d(many::after(resting, alone).bodies[0].p / c.dt));
+    const Work mine_v = work_at(s, c.F, 0, slot);
+    const Work theirs = work_at(s, c.F, 1, slot);
+    p.set("\\Delta E_{vt}", mine_v.translational);
+    p.set("\\Delta E_{vo}", theirs.translational + theirs.rotational);
+    if (f.rigid) {
+      p.set("\\Delta E_{vr}", mine_v.rotational);
+    }
+    points.push_back(std::move(p));
+  }
+}
+
 std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Family& f) {
   num::Random r(settings.seed);
   std::vector<Point> points;
@@ -217,12 +359,13 @@ std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Fa
   const Coefficients elastic = coefficients(probe, f.rigid, true);
   const std::size_t scenes = settings.share(f.others ? 20 : 10);
   for (std::size_t count = 0; count < scenes; ++count) {
-    const Drawn drawn = draw_scene(r, f);
-    const many::Scene& s = drawn.scene;
-    double e = f.elasticity;
-    if (e == 0) {
+    Case c;
+    c.drawn = draw_scene(r, f);
+    const many::Scene& s = c.drawn.scene;
+    c.e = f.elasticity;
+    if (c.e == 0) {
       const int which = r.integer(0, 2);
-      e = which == 0 ? 1.0 : which == 1 ? 2.0 : r.uniform(1.0, 2.0);
+      c.e = which == 0 ? 1.0 : which == 1 ? 2.0 : r.uniform(1.0, 2.0);
     }
     // The law of restitution's system. A scene where it is ill-conditioned (impulses that
     // push against each other, 1e4 times larger than the speeds call for: nearly parallel
@@ -230,145 +373,34 @@ std::vector<Point> scene_points(Probe& probe, const Settings& settings, const Fa
     // there, not the file's statements.
     const many::Model md = many::model(s);
     const MatrixXd A = md.A();
-    const VectorXd B = md.J * (e * md.velocity);
-    VectorXd F = many::solve(A, B);
-    if (A.norm() * F.norm() > 1e4 * B.norm()) {
+    const VectorXd B = md.J * (c.e * md.velocity);
+    c.F = many::solve(A, B);
+    if (A.norm() * c.F.norm() > 1e4 * B.norm()) {
       continue;
     }
     // The impulses: the file's blocks summed, or the law's.
-    const Coefficients& k = f.elasticity == 0 || e == 1 ? inelastic : elastic;
+    c.k = f.elasticity == 0 || c.e == 1 ? &inelastic : &elastic;
     if (f.from_file) {
-      many::System sum = added(blocks(s, k));
+      many::System sum = added(blocks(s, *c.k));
       if (f.elasticity == 0) {
-        sum.B *= e;  // elasticity times the inelastic b
+        sum.B *= c.e;  // elasticity times the inelastic b
       }
       if (!sum.A.allFinite() || !sum.B.allFinite()) {
         continue;  // the file does not define the coefficients: nothing to test with
       }
-      F = many::solve(sum.A, sum.B);
+      c.F = many::solve(sum.A, sum.B);
     }
-    const many::Scene after = many::after(s, F);
+    c.after = many::after(s, c.F);
     if (f.from_file) {
-      // The motion the file's coefficients give: a point at every contact, seen from its first
-      // body.
-      for (const many::Contact& c : s.contacts) {
-        const many::Body& a = s.bodies[c.a];
-        const Vector2d centre_after = after.bodies[c.a].p / a.m;
-        Point p;
-        p.set("E", many::energy(s)).set("E'", many::energy(after));
-        p.set("m", a.m).set("\\vec{p}", a.p).set("\\vec{n_v}", c.n);
-        p.set("\\vec{v_{vt}'}", centre_after);
-        if (f.rigid) {
-          p.set("I", a.I).set("L", a.L).set("\\vec{r_v}", c.point - a.position);
-          p.set("\\vec{v_{vr}'}", Vector2d(after.bodies[c.a].velocity_at(c.point) - centre_after));
-        }
-        p.set("\\vec{v_{vo}'}", after.bodies[c.b].velocity_at(c.point));
-        if (f.elasticity == 0) {
-          p.set("\\mathit{elasticity}", e);
-        }
-        points.push_back(std::move(p));
-      }
+      add_summed_points(f, c, points);
       continue;
     }
-    const double dt = r.log_uniform(1e-3, 1.0);
-    const many::Body& own = s.bodies[0];
-    const many::Body& other = s.bodies[1];
-    Point common;
-    common.set("dt", dt).set("E", many::energy(s)).set("E'", many::energy(after));
-    common.set("m", own.m).set("\\vec{p}", own.p).set("m_o", other.m).set("\\vec{p_o}", other.p);
-    if (f.rigid) {
-      common.set("I", own.I).set("L", own.L).set("I_o", other.I).set("L_o", other.L);
-    }
-    // The first body's impulses, numbered as the file's indices: 1 to 3 the pair's, 4 and 5
-    // the others' (a slot without a contact: no impulse, any normal and arm).
-    for (std::size_t q = 0; q < (f.others ? 5U : 3U); ++q) {
-      Vector2d n = r.unit_vector();
-      Vector2d arm = r.vector(2);
-      double mean = 0;
-      if (const auto c = drawn.slots[q]) {
-        const many::Contact& contact = s.contacts[*c];
-        n = contact.a == 0 ? contact.n : Vector2d(-contact.n);
-        arm = contact.point - own.position;
-        mean = F(static_cast<Eigen::Index>(*c)) / dt;
-      }
-      common.set(numbered("F_", q + 1, ""), mean)
-          .set(numbered("\\vec{n_", q + 1), n)
-          .set(numbered("\\vec{F_", q + 1), Vector2d(-n * mean));
-      if (f.rigid) {
-        common.set(numbered("\\vec{r_", q + 1), arm);
-      }
-    }
+    c.dt = r.log_uniform(1e-3, 1.0);
+    Point common = common_values(r, f, c);
     if (f.blocks) {
-      // Every body's block over the slots (zero where a slot has no contact), and the blocks
-      // added.
-      const std::vector<many::System> each = blocks(s, k);
-      for (std::size_t body = 0; body < each.size(); ++body) {
-        const many::System& b = each[body];
-        const std::string name = std::to_string(body + 1);
-        for (std::size_t v = 0; v < drawn.slots.size(); ++v) {
-          const auto cv = drawn.slots[v];
-          common.set("b_{" + name + std::to_string(v + 1) + "}",
-                     cv ? b.B(static_cast<Eigen::Index>(*cv)) : 0.0);
-          for (std::size_t i = 0; i < drawn.slots.size(); ++i) {
-            const auto ci = drawn.slots[i];
-            common.set("a_{" + name + std::to_string(v + 1) + std::to_string(i + 1) + "}",
-                       cv && ci
-                           ? b.A(static_cast<Eigen::Index>(*cv), static_cast<Eigen::Index>(*ci))
-                           : 0.0);
-          }
-        }
-      }
-      // The impulse of the slot the first body is not in (the second and third bodies').
-      if (f.others) {
-        common.set("F_6", F(static_cast<Eigen::Index>(*drawn.slots[5])) / dt);
-      }
-      // The summed system solved: its impulses G_q over dt, slot by slot (NaN when the file
-      // does not define the coefficients), beside the law's motion p', p_o'.
-      const many::System sum = added(each);
-      const bool defined = sum.A.allFinite() && sum.B.allFinite();
-      const VectorXd G =
-          defined ? many::solve(sum.A, sum.B) : VectorXd::Constant(sum.B.size(), std::nan(""));
-      for (std::size_t q = 0; q < drawn.slots.size(); ++q) {
-        const auto c = drawn.slots[q];
-        common.set(numbered("G_", q + 1, ""), c ? G(static_cast<Eigen::Index>(*c)) / dt : 0.0);
-      }
-      common.set("\\vec{p'}", after.bodies[0].p).set("\\vec{p_o'}", after.bodies[1].p);
+      add_blocks(f, c, common);
     }
-    const Vector2d centre_after = after.bodies[0].p / own.m;
-    for (std::size_t v = 0; v < 3; ++v) {
-      if (!drawn.slots[v]) {
-        continue;
-      }
-      const many::Contact& c = s.contacts[*drawn.slots[v]];
-      Point p = common;
-      p.set("\\vec{n_v}", c.n);
-      const Vector2d point_after = after.bodies[0].velocity_at(c.point);
-      p.set("\\vec{v_{vt}'}", centre_after).set("\\vec{v_{vt}}", Vector2d(own.p / own.m));
-      if (f.rigid) {
-        p.set("\\vec{r_v}", c.point - own.position);
-        p.set("\\vec{v_{vr}}", Vector2d(own.velocity_at(c.point) - own.p / own.m));
-        p.set("\\vec{v_{vr}'}", Vector2d(point_after - centre_after));
-      }
-      p.set("\\vec{v_{vo}}", other.velocity_at(c.point));
-      p.set("\\vec{v_{vo}'}", after.bodies[1].velocity_at(c.point));
-      // The impulse the body receives there: the momentum that contact's impulse alone gives
-      // the body at rest (scene.hpp's after), over dt.
-      const auto at = static_cast<Eigen::Index>(*drawn.slots[v]);
-      VectorXd alone = VectorXd::Zero(F.size());
-      alone(at) = F(at);
-      many::Scene resting = s;
-      resting.bodies[0].p.setZero();
-      p.set("F_v", F(at) / dt)
-          .set("\\vec{F_v}", Vector2d(many::after(resting, alone).bodies[0].p / dt));
-      const Work mine_v = work_at(s, F, 0, *drawn.slots[v]);
-      const Work theirs = work_at(s, F, 1, *drawn.slots[v]);
-      p.set("\\Delta E_{vt}", mine_v.translational);
-      p.set("\\Delta E_{vo}", theirs.translational + theirs.rotational);
-      if (f.rigid) {
-        p.set("\\Delta E_{vr}", mine_v.rotational);
-      }
-      points.push_back(std::move(p));
-    }
+    add_contact_points(f, c, common, points);
   }
   return points;
 }
@@ -469,6 +501,83 @@ std::vector<Point> point_mass_against_three_walls(Probe&, const Settings& settin
     }
   }
   return points;
+}
+
+namespace {
+
+// What the scene models are and the values they give.
+constexpr std::string_view two_bodies_law =
+    "Two point masses (masses 1e-3 to 1e3, any momenta) touching at one to three points, the "
+    "normals of the pair at least 6 degrees apart; their impulses by the law of restitution (the "
+    "contact Jacobian J, A = J M^-1 "
+    "J^T, B = J (e v), the minimum-norm solution), elasticity 2 or 1 as named. A point per contact "
+    "v, seen from the first body: its impulses F_k (mean forces over dt; a slot without a contact "
+    "has none) and outward normals n_k, the impulse it receives at v, the velocities before and "
+    "after, the work of the pair's impulses at v on either body (forces constant over the "
+    "contact), the kinetic energy before and after; and every body's block a_{Bqs}, b_{Bq} (B its "
+    "number) of the coefficients the file defines (its (4.5) or (4.8)), with the impulses G_q "
+    "dt of their sum solved, and the law's momenta after, p' and p_o'. A scene whose system is "
+    "ill-conditioned (impulses 1e4 times what the speeds call for) is left out.";
+constexpr std::string_view scenes_law =
+    "Four point masses (the fourth static one time in four): the first touches the second at one "
+    "to three points (impulses 1 to 3, the pair's), the third and the fourth at one each (4 and "
+    "5), the second the third at one (6); impulses and points as for two point masses.";
+constexpr std::string_view scenes_summed =
+    "The scenes of four point masses, their impulses from the file's own coefficients: each "
+    "body's block of its a_{vi(elastic)} and b_{v(elastic)} (or inelastic, as named) at its own "
+    "contacts and normals, the blocks added, the system solved (minimum-norm). A point per "
+    "contact of the scene, seen from its first body: the velocities after, the kinetic energy of "
+    "the scene before and after.";
+constexpr std::string_view two_rigid_law =
+    "Two rigid bodies (radii of gyration fitted to their arms) touching at one to three points, as "
+    "the two point masses are, with their arms r_k and r_v, the turning part of a point's "
+    "velocity v_vr and the work on the turning Delta E_vr.";
+constexpr std::string_view rigid_scenes_summed =
+    "Four rigid bodies (the fourth static one time in four) touching as the point masses do, their "
+    "impulses from the file's a_{vk(elastic)} and b_{v(elastic)} (or inelastic, as named), summed "
+    "and solved; a point per contact of the scene, seen from its first body.";
+constexpr std::string_view rigid_scenes_elasticity =
+    "As the rigid bodies with the inelastic coefficients summed, b_{v(inelastic)} times an "
+    "elasticity: 1, 2 or between, drawn in turn.";
+}  // namespace
+
+std::vector<Model> scenes_models() {
+  return {
+      {Method::numeric, "two point masses at one to three contacts, elastic", two_bodies_law,
+       two_point_masses_elastic, 1e-8},
+      {Method::numeric, "two point masses at one to three contacts, inelastic", two_bodies_law,
+       two_point_masses_inelastic, 1e-8},
+      {Method::numeric, "point masses in scenes, elastic", scenes_law,
+       point_masses_in_scenes_elastic, 1e-8},
+      {Method::numeric, "point masses in scenes, inelastic", scenes_law,
+       point_masses_in_scenes_inelastic, 1e-8},
+      {Method::numeric, "point masses in scenes, the elastic coefficients summed", scenes_summed,
+       point_masses_summed_elastic, 1e-8},
+      {Method::numeric, "point masses in scenes, the inelastic coefficients summed", scenes_summed,
+       point_masses_summed_inelastic, 1e-8},
+      {Method::numeric, "two rigid bodies at one to three contacts, elastic", two_rigid_law,
+       two_rigid_bodies_at_three_contacts_elastic, 1e-8},
+      {Method::numeric, "two rigid bodies at one to three contacts, inelastic", two_rigid_law,
+       two_rigid_bodies_at_three_contacts_inelastic, 1e-8},
+      {Method::numeric, "rigid bodies in scenes, the elastic coefficients summed",
+       rigid_scenes_summed, rigid_bodies_summed_elastic, 1e-8},
+      {Method::numeric, "rigid bodies in scenes, the inelastic coefficients summed",
+       rigid_scenes_summed, rigid_bodies_summed_inelastic, 1e-8},
+      {Method::numeric, "rigid bodies in scenes, elasticity times the inelastic coefficients",
+       rigid_scenes_elasticity, rigid_bodies_summed_any_elasticity, 1e-8},
+      {Method::search, "point masses in scenes, an elasticity each",
+       "The scenes of four point masses, each body's block of the file's a_{vi(inelastic)} and "
+       "b_{v(inelastic)} with its b times an elasticity of its own from 0 to 3, summed; rho "
+       "the least-squares residual of the system relative to its terms (scene.hpp's "
+       "inconsistency).",
+       point_masses_an_elasticity_each},
+      {Method::search, "a point mass against three walls, the nearest equal impulses",
+       "A point mass against three static walls (first mass 1 at (2, 1) into the corner of "
+       "walls with outward normals (1, 0), (0, 1) and the diagonal, then random ones); f the "
+       "equal impulse over dt = 1 nearest (least squares) to solving the system of the law of "
+       "restitution with elasticity 2 (the contact Jacobian). A point per wall v.",
+       point_mass_against_three_walls},
+  };
 }
 
 }  // namespace impulse::derivations::models

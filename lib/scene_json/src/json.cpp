@@ -3,13 +3,9 @@
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <memory>
 #include <optional>
 #include <set>
 #include <type_traits>
@@ -20,6 +16,7 @@
 
 #include "impulse/core/error.hpp"
 #include "impulse/core/normal.hpp"
+#include "impulse/core/text.hpp"
 #include "impulse/scene/report.hpp"
 
 namespace impulse::scene {
@@ -28,30 +25,6 @@ namespace {
 
 using Eigen::Vector2d;
 using nlohmann::json;
-
-// ---------------------------------------------------------------------------------------------
-// Places in the document, as messages name them: "bodies[1].mass", "solver.dependent".
-
-std::string child(std::string_view path, std::string_view key) {
-  std::string result(path);
-  if (!result.empty()) {
-    result.append(".");
-  }
-  result.append(key);
-  return result;
-}
-
-std::string element(std::string_view path, std::size_t index) {
-  std::string result(path);
-  result.append("[").append(std::to_string(index)).append("]");
-  return result;
-}
-
-std::string in_quotes(std::string_view text) {
-  std::string result("\"");
-  result.append(text).append("\"");
-  return result;
-}
 
 // What a value is, for "expected …, got …".
 std::string describe(const json& value) {
@@ -117,7 +90,8 @@ class Tracker {
   std::string place() const {
     std::string path;
     for (const Frame& f : frames_) {
-      path = f.object ? (f.key.empty() ? path : child(path, f.key)) : element(path, f.index);
+      path = f.object ? (f.key.empty() ? path : member_place(path, f.key))
+                      : element_place(path, f.index);
     }
     return path;
   }
@@ -335,7 +309,7 @@ class Reader {
     const json& bodies = required(document, "", "bodies", "the scene");
     require_array(bodies, "bodies", "an array of bodies");
     for (std::size_t i = 0; i < bodies.size(); ++i) {
-      scene.bodies.push_back(body(bodies[i], element("bodies", i)));
+      scene.bodies.push_back(body(bodies[i], element_place("bodies", i)));
     }
     try {
       // The library's rule, before the contacts look names up: a repeated name is reported as
@@ -351,7 +325,7 @@ class Reader {
     const json& contacts = required(document, "", "contacts", "the scene");
     require_array(contacts, "contacts", "an array of contacts");
     for (std::size_t v = 0; v < contacts.size(); ++v) {
-      scene.contacts.push_back(contact(contacts[v], element("contacts", v)));
+      scene.contacts.push_back(contact(contacts[v], element_place("contacts", v)));
     }
     if (const json* s = optional(document, "solver")) {
       solver(*s, "solver", scene);
@@ -397,7 +371,7 @@ class Reader {
       if (std::find(known.begin(), known.end(), key) != known.end()) {
         std::string message("does not apply to a ");
         message.append(kind).append(" body (its keys are ").append(join(allowed)).append(")");
-        fail(child(path, key), message);
+        fail(member_place(path, key), message);
       }
       std::string message("unknown key");
       std::string_view nearest;
@@ -413,7 +387,7 @@ class Reader {
         message.append(" (did you mean ").append(in_quotes(nearest)).append("?)");
       }
       message.append("; expected one of ").append(join(known));
-      fail(child(path, key), message);
+      fail(member_place(path, key), message);
     }
   }
 
@@ -467,7 +441,7 @@ class Reader {
     if (!value.is_array() || value.size() != 2) {
       expected(value, path, "[x, y], an array of 2 numbers (the scene has dimension 2)");
     }
-    return {number(value[0], element(path, 0)), number(value[1], element(path, 1))};
+    return {number(value[0], element_place(path, 0)), number(value[1], element_place(path, 1))};
   }
 
   // A name of the enum's table (impulse::EnumNames), or a refusal that lists them.
@@ -484,8 +458,9 @@ class Reader {
     require_object(value, path, "a body, an object");
     refuse_unknown_keys(value, path, body_keys, body_keys, "");
     Body b;
-    b.name = string(required(value, path, "name", "every body"), child(path, "name"));
-    b.kind = member_of<BodyKind>(required(value, path, "kind", "every body"), child(path, "kind"));
+    b.name = string(required(value, path, "name", "every body"), member_place(path, "name"));
+    b.kind = member_of<BodyKind>(required(value, path, "kind", "every body"),
+                                 member_place(path, "kind"));
     const std::string kind(name_of(b.kind));
     switch (b.kind) {
       case BodyKind::material:
@@ -499,7 +474,7 @@ class Reader {
         return b;  // immovable: nothing more to read
     }
     const std::string owner = "a " + kind + " body";
-    b.mass = number(required(value, path, "mass", owner), child(path, "mass"));
+    b.mass = number(required(value, path, "mass", owner), member_place(path, "mass"));
     const json* velocity = optional(value, "velocity");
     const json* momentum = optional(value, "momentum");
     if (velocity != nullptr && momentum != nullptr) {
@@ -510,10 +485,10 @@ class Reader {
     }
     b.linear_given = velocity != nullptr ? Given::velocity : Given::momentum;
     b.linear = vector(velocity != nullptr ? *velocity : *momentum,
-                      child(path, velocity != nullptr ? "velocity" : "momentum"));
+                      member_place(path, velocity != nullptr ? "velocity" : "momentum"));
     if (b.kind == BodyKind::rigid) {
-      b.inertia = number(required(value, path, "inertia", owner), child(path, "inertia"));
-      b.position = vector(required(value, path, "position", owner), child(path, "position"));
+      b.inertia = number(required(value, path, "inertia", owner), member_place(path, "inertia"));
+      b.position = vector(required(value, path, "position", owner), member_place(path, "position"));
       const json* omega = optional(value, "angular_velocity");
       const json* L = optional(value, "angular_momentum");
       if (omega != nullptr && L != nullptr) {
@@ -521,13 +496,13 @@ class Reader {
       }
       b.angular_given = L != nullptr ? Given::momentum : Given::velocity;
       if (omega != nullptr) {
-        b.angular = number(*omega, child(path, "angular_velocity"));
+        b.angular = number(*omega, member_place(path, "angular_velocity"));
       } else if (L != nullptr) {
-        b.angular = number(*L, child(path, "angular_momentum"));
+        b.angular = number(*L, member_place(path, "angular_momentum"));
       }
     }
     if (const json* e = optional(value, "elasticity")) {
-      b.elasticity = number(*e, child(path, "elasticity"));
+      b.elasticity = number(*e, member_place(path, "elasticity"));
     }
     return b;
   }
@@ -553,8 +528,10 @@ class Reader {
     require_object(value, path, "a contact, an object");
     refuse_unknown_keys(value, path, contact_keys, contact_keys, "");
     Contact c;
-    c.bumper = body_named(required(value, path, "bumper", "every contact"), child(path, "bumper"));
-    c.wedge = body_named(required(value, path, "wedge", "every contact"), child(path, "wedge"));
+    c.bumper =
+        body_named(required(value, path, "bumper", "every contact"), member_place(path, "bumper"));
+    c.wedge =
+        body_named(required(value, path, "wedge", "every contact"), member_place(path, "wedge"));
     const json* normal = optional(value, "normal");
     const json* angle = optional(value, "normal_angle");
     if (normal != nullptr && angle != nullptr) {
@@ -564,20 +541,21 @@ class Reader {
       fail(path, "missing \"normal\" (or \"normal_angle\"), which every contact needs");
     }
     if (normal != nullptr) {
-      c.normal = vector(*normal, child(path, "normal"));
+      c.normal = vector(*normal, member_place(path, "normal"));
     } else if (dimension_ != 2) {
-      fail(child(path, "normal_angle"),
+      fail(member_place(path, "normal_angle"),
            "does not apply in dimension 1 (give \"normal\": +1 or -1)");
     } else {
       // Degrees counter-clockwise from the x axis, exact at multiples of 90 (a finite number:
       // the reader refuses any other).
-      c.normal = UnitNormal::from_degrees(number(*angle, child(path, "normal_angle"))).vector();
+      c.normal =
+          UnitNormal::from_degrees(number(*angle, member_place(path, "normal_angle"))).vector();
     }
     if (const json* point = optional(value, "point")) {
-      c.point = vector(*point, child(path, "point"));
+      c.point = vector(*point, member_place(path, "point"));
     }
     if (const json* f = optional(value, "friction")) {
-      c.friction = number(*f, child(path, "friction"));  // its range is the library's rule
+      c.friction = number(*f, member_place(path, "friction"));  // its range is the library's rule
     }
     return c;
   }
@@ -589,32 +567,22 @@ class Reader {
     refuse_unknown_keys(value, path, solver_keys, solver_keys, "");
     SolverOptions& options = scene.solver;
     if (const json* d = optional(value, "dependent")) {
-      options.dependent = member_of<DependentPolicy>(*d, child(path, "dependent"));
+      options.dependent = member_of<DependentPolicy>(*d, member_place(path, "dependent"));
     }
     if (const json* i = optional(value, "inconsistent")) {
-      options.inconsistent = member_of<InconsistentPolicy>(*i, child(path, "inconsistent"));
+      options.inconsistent = member_of<InconsistentPolicy>(*i, member_place(path, "inconsistent"));
     }
     if (const json* m = optional(value, "method")) {
-      scene.method = member_of<methods::Method>(*m, child(path, "method"));
+      scene.method = member_of<methods::Method>(*m, member_place(path, "method"));
     }
     if (const json* r = optional(value, "restitution")) {
-      const std::string where = child(path, "restitution");
-      const std::string name = string(*r, where);
-      const std::optional<friction::RestitutionLaw> law = friction::restitution_law_named(name);
-      if (!law) {
-        std::string names;
-        for (const auto each : {friction::RestitutionLaw::newton, friction::RestitutionLaw::poisson,
-                                friction::RestitutionLaw::energetic}) {
-          names.append(names.empty() ? "" : ", ").append(in_quotes(friction::to_string(each)));
-        }
-        fail(where, "expected one of " + names + ", got " + in_quotes(name));
-      }
-      scene.restitution = *law;
+      scene.restitution =
+          member_of<friction::RestitutionLaw>(*r, member_place(path, "restitution"));
     }
     if (const json* c = optional(value, "max_collisions")) {
       // The type is a whole number of collisions, at least 1 (0 is not written: a scene without
       // the key gets the default); the bound above is the scene's rule, the same number.
-      const std::string where = child(path, "max_collisions");
+      const std::string where = member_place(path, "max_collisions");
       const double most = static_cast<double>(methods::most_collisions);
       const double bound = c->is_number() ? c->get<double>() : 0.0;
       if (!(bound >= 1.0 && bound <= most && bound == std::floor(bound))) {
@@ -679,50 +647,6 @@ World parse_world(std::string_view text, std::string_view source, const ReadLimi
 
 Scene parse_scene(std::string_view text, std::string_view source, const ReadLimits& limits) {
   return parse_world(text, source, limits).scene();
-}
-
-std::string read_file(const std::string& path, std::size_t max_bytes) {
-  const auto cannot_read = [&](const std::string& why) {
-    std::string message(path);
-    message.append(": cannot read: ").append(why);
-    return InvalidInput(message);
-  };
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    throw cannot_read("it is a directory");
-  }
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                             &std::fclose);
-  if (!file) {
-    throw cannot_read(std::strerror(errno));
-  }
-  // At most one byte more than the limit is read (a pipe or a device has no size to ask first).
-  std::string text;
-  std::array<char, 65536> buffer{};
-  std::size_t count = 0;
-  const auto room = [&] {  // up to one byte past the limit (no overflow at its largest value)
-    const std::size_t left = max_bytes - text.size();
-    return left < buffer.size() ? left + 1 : buffer.size();
-  };
-  while (text.size() <= max_bytes &&
-         (count = std::fread(buffer.data(), 1, room(), file.get())) > 0) {
-    text.append(buffer.data(), count);
-  }
-  if (std::ferror(file.get()) != 0) {
-    throw cannot_read(std::strerror(errno));
-  }
-  if (text.size() > max_bytes) {
-    throw InvalidInput(too_large_message(path, max_bytes));
-  }
-  return text;
-}
-
-Scene load_scene(const std::string& path, const ReadLimits& limits) {
-  return parse_scene(read_file(path, limits.max_bytes), path, limits);
-}
-
-World load_world(const std::string& path, const ReadLimits& limits) {
-  return parse_world(read_file(path, limits.max_bytes), path, limits);
 }
 
 namespace {
@@ -828,8 +752,8 @@ nlohmann::ordered_json to_json(const Result& result) {
   system["condition_estimate"] = s.condition_estimate;
   out["system"] = std::move(system);
 
-  // The method's own diagnostics, after the keys above so that their order stays; the paper's
-  // method has none, so that its report is the one the scene format specifies.
+  // The method's own diagnostics, after the keys the scene format specifies; the paper's method
+  // has none, so that its report is exactly the specified one.
   if (!o.diagnostics.empty()) {
     const std::string name(name_of(result.method));
     out["method"] = name;
@@ -845,192 +769,41 @@ nlohmann::ordered_json to_json(const Result& result) {
   return out;
 }
 
-nlohmann::ordered_json comparison_json(std::span<const Result> results, std::string_view source) {
-  nlohmann::ordered_json out = nlohmann::ordered_json::object();
-  for (const Result& r : results) {
-    const std::string name(name_of(r.method));
-    if (r.outcome.finished) {
-      nlohmann::ordered_json result = to_json(r);
-      if (!result.contains("method")) {
-        result["method"] = name;  // the paper's report names no method; here every one does
-      }
-      out[name] = std::move(result);
-    } else {
-      out[name] = {{"method", name}, {"error", unfinished_message(r, source)}};
-    }
-  }
-  return out;
-}
-
 std::string report_json(const Result& result) {
   return to_json(result).dump(2) + "\n";
 }
 
-namespace {
-// resolve(), with a refusal of the scene (a method that cannot take its friction) naming it.
-template <typename Method>
-auto resolved(const World& world, std::string_view source, const Method& method) {
-  try {
-    return resolve(world, method);
-  } catch (const InvalidInput& e) {
-    std::string message(source);
-    message.append(": ").append(e.what());
-    throw InvalidInput(message);
+std::string report_json(const Run& run, std::string_view source) {
+  const Result& first = run.results.front();
+  if (run.request.compare == Request::Compare::nothing) {
+    return first.outcome.finished ? report_json(first) : "";
   }
-}
-}  // namespace
-
-SolveOutput solve_output(const World& world, std::string_view source,
-                         std::optional<methods::Method> method, Format format, bool colour) {
-  return solve_output(resolved(world, source, method.value_or(world.scene().method)), source,
-                      format, colour);
-}
-
-SolveOutput solve_output(const Result& result, std::string_view source, Format format,
-                         bool colour) {
-  if (result.status != SolveStatus::success) {
-    // Every number of the scene is a valid double, but their products or sums are not: the
-    // input is beyond what double precision can solve, so it is refused like other bad input.
-    throw InvalidInput(overflow_message(result, source, false));
+  // A comparison: one member per method (or law), each naming it, even the paper's method,
+  // whose own report names none.
+  const bool laws = run.request.compare == Request::Compare::laws;
+  const std::string key = laws ? "restitution" : "method";
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (std::size_t k = 0; k < run.results.size(); ++k) {
+    const Result& r = run.results[k];
+    const std::string name(laws ? EnumNames<friction::RestitutionLaw>::table[k].name
+                                : name_of(r.method));
+    if (!r.outcome.finished) {
+      out[name] = {{key, name}, {"error", unfinished_message(r, source)}};
+      continue;
+    }
+    out[name] = to_json(r);
+    if (!out[name].contains(key)) {
+      out[name][key] = name;
+    }
   }
-  SolveOutput output;
-  output.unfinished = unfinished_message(result, source);
-  if (!output.unfinished.empty()) {
-    return output;
-  }
-  output.report =
-      format == Format::json ? report_json(result) : text_report(result, source, colour);
-  output.warnings = elasticity_warnings(result, source);
-  for (std::string& warning : impulse_warnings(result)) {
-    output.warnings.push_back(std::move(warning));
-  }
-  for (std::string& warning : system_warnings(result, source)) {
-    output.warnings.push_back(std::move(warning));
-  }
-  return output;
+  return out.dump(2) + "\n";
 }
 
-SolveOutput compare_output(const World& world, std::string_view source, Format format,
-                           bool colour) {
-  // The methods that can resolve the scene (with friction at several contacts, the paper's
-  // simultaneous method cannot): the others are left out, and the warnings say why. If none can
-  // be compared, resolved() refuses the scene with the first method's reason.
-  std::vector<methods::Method> compared;
-  std::vector<std::string> left_out;
-  const methods::Options options = world.options();
-  for (const methods::Method method : methods::all_methods) {
-    const std::string why = methods::unsupported(method, world.configuration(), options);
-    if (why.empty()) {
-      compared.push_back(method);
-    } else {
-      left_out.push_back(std::string(name_of(method)) + ": not compared: " + why);
-    }
-  }
-  if (compared.size() < 2) {
-    compared.assign(methods::all_methods.begin(), methods::all_methods.end());
-    left_out.clear();
-  }
-  const std::vector<Result> results =
-      resolved(world, source, std::span<const methods::Method>(compared));
-  for (const Result& r : results) {
-    if (r.status != SolveStatus::success) {
-      throw InvalidInput(overflow_message(r, source, true));
-    }
-  }
-  SolveOutput output;
-  output.report = format == Format::json ? comparison_json(results, source).dump(2) + "\n"
-                                         : comparison_text(results, source, colour);
-  // The elasticities and the system A·Fdt = B are the same for every method: one warning each.
-  output.warnings = elasticity_warnings(results.front(), source);
-  for (const Result& r : results) {
-    if (r.outcome.finished) {
-      for (std::string& warning : system_warnings(r, source)) {
-        output.warnings.push_back(std::move(warning));
-      }
-      break;
-    }
-  }
-  for (std::string& why : left_out) {
-    output.warnings.push_back(std::move(why));
-  }
-  for (const Result& r : results) {
-    if (r.outcome.finished) {
-      for (std::string& warning : impulse_warnings(r, std::string(name_of(r.method)) + ": ")) {
-        output.warnings.push_back(std::move(warning));
-      }
-    } else {
-      output.unfinished.append(output.unfinished.empty() ? "" : "\n");
-      output.unfinished.append(unfinished_message(r, source));
-    }
-  }
-  return output;
-}
-
-SolveOutput compare_laws_output(const World& world, std::string_view source, Format format,
-                                bool colour) {
-  constexpr std::array<friction::RestitutionLaw, 3> laws{friction::RestitutionLaw::newton,
-                                                         friction::RestitutionLaw::poisson,
-                                                         friction::RestitutionLaw::energetic};
-  std::vector<Result> results;
-  for (const friction::RestitutionLaw law : laws) {
-    Scene scene = world.scene();
-    scene.restitution = law;
-    try {
-      results.push_back(resolve(World(std::move(scene))));
-    } catch (const InvalidInput& e) {
-      std::string message(source);
-      message.append(": ").append(e.what()).append(" (--compare restitution, the law \"");
-      message.append(friction::to_string(law)).append("\")");
-      throw InvalidInput(message);
-    }
-    if (results.back().status != SolveStatus::success) {
-      throw InvalidInput(overflow_message(results.back(), source, false));
-    }
-  }
-  SolveOutput output;
-  if (format == Format::json) {
-    nlohmann::ordered_json out = nlohmann::ordered_json::object();
-    for (std::size_t k = 0; k < laws.size(); ++k) {
-      const std::string name(friction::to_string(laws[k]));
-      if (results[k].outcome.finished) {
-        nlohmann::ordered_json result = to_json(results[k]);
-        result["restitution"] = name;
-        out[name] = std::move(result);
-      } else {
-        out[name] = {{"restitution", name}, {"error", unfinished_message(results[k], source)}};
-      }
-    }
-    output.report = out.dump(2) + "\n";
-  } else {
-    output.report = laws_comparison_text(results, laws, source, colour);
-  }
-  output.warnings = elasticity_warnings(results.front(), source);
-  for (const Result& r : results) {
-    if (r.outcome.finished) {
-      for (std::string& warning : system_warnings(r, source)) {
-        output.warnings.push_back(std::move(warning));
-      }
-      break;
-    }
-  }
-  for (std::size_t k = 0; k < laws.size(); ++k) {
-    const Result& r = results[k];
-    if (r.outcome.finished) {
-      for (std::string& warning :
-           impulse_warnings(r, std::string(friction::to_string(laws[k])) + ": ")) {
-        output.warnings.push_back(std::move(warning));
-      }
-    } else {
-      output.unfinished.append(output.unfinished.empty() ? "" : "\n");
-      output.unfinished.append(unfinished_message(r, source));
-    }
-  }
-  return output;
-}
-
-SolveOutput solve_to_json(std::string_view text, std::string_view source,
-                          std::optional<methods::Method> method, const ReadLimits& limits) {
-  return solve_output(parse_world(text, source, limits), source, method, Format::json);
+JsonRun solve_to_json(std::string_view text, std::string_view source, const Request& request,
+                      const ReadLimits& limits) {
+  JsonRun out{run(parse_world(text, source, limits), source, request), {}};
+  out.report = report_json(out.run, source);
+  return out;
 }
 
 }  // namespace impulse::scene

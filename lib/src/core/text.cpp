@@ -34,6 +34,21 @@ std::string vector_text(const Eigen::Vector2d& v, int dimension, double scale) {
   return text;
 }
 
+std::string member_place(std::string_view path, std::string_view key) {
+  std::string place(path);
+  return place.append(path.empty() ? "" : ".").append(key);
+}
+
+std::string element_place(std::string_view path, std::size_t index) {
+  std::string place(path);
+  return place.append("[").append(std::to_string(index)).append("]");
+}
+
+std::string in_quotes(std::string_view text) {
+  std::string result("\"");
+  return result.append(text).append("\"");
+}
+
 std::string counted(std::size_t count, std::string_view one, std::string_view many) {
   std::string text = std::to_string(count);
   text.append(" ").append(count == 1 ? one : many);

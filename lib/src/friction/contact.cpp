@@ -22,12 +22,6 @@ namespace impulse::friction {
 
 namespace {
 
-constexpr std::array<std::pair<RestitutionLaw, std::string_view>, 3> law_names{{
-    {RestitutionLaw::newton, "newton"},
-    {RestitutionLaw::poisson, "poisson"},
-    {RestitutionLaw::energetic, "energetic"},
-}};
-
 // How far W may be from symmetric, and |W_nt| above sqrt(W_nn W_tt), relative to W's size.
 constexpr double matrix_tolerance = 1e-12;
 constexpr double infinity = std::numeric_limits<double>::infinity();
@@ -116,25 +110,41 @@ double to_work(double left, double d_n, double u_n, double v_n) {
   throw InvalidInput(message);
 }
 
+// W made exactly symmetric, its coupling within the semi-definite bound (validate() allowed a
+// rounding's worth beyond either): the stick phase then never speeds up the approach.
+Eigen::Matrix2d symmetrised(Eigen::Matrix2d W) {
+  const double bound = std::sqrt(W(0, 0)) * std::sqrt(W(1, 1));
+  const double coupling = std::clamp((W(0, 1) + W(1, 0)) / 2.0, -bound, bound);
+  W(0, 1) = coupling;
+  W(1, 0) = coupling;
+  return W;
+}
+
+// du along a phase's direction d. At stick the slip stays 0 (W_tn W_tt - W_tt W_tn, zero but
+// for rounding), and the separation grows by (W_nn W_tt - W_nt^2) / scale with the determinant
+// computed without cancellation when it is known.
+Eigen::Vector2d rate(const Eigen::Matrix2d& W, std::optional<double> determinant, Slip regime,
+                     const Direction& d) {
+  Eigen::Vector2d v = W * Eigen::Vector2d(d.normal, d.tangential);
+  if (regime == Slip::stick) {
+    v.y() = 0.0;
+    if (determinant && W(1, 1) > 0.0) {
+      v.x() = *determinant * (d.normal / W(1, 1));
+    }
+  }
+  return v;
+}
+
+// The first regime and its slip direction s: slip along the slip there is; from rest, stick if
+// the ratio allows (s = 0), else slip the way W_tn drives the contact.
+std::pair<Slip, double> first_regime(const Eigen::Matrix2d& W, double mu, double slip) {
+  if (slip != 0.0) {
+    return {Slip::slip, sign(slip)};
+  }
+  return can_stick(W, mu) ? std::pair{Slip::stick, 0.0} : std::pair{Slip::slip, sign(W(1, 0))};
+}
+
 }  // namespace
-
-std::string_view to_string(RestitutionLaw law) {
-  for (const auto& [l, name] : law_names) {
-    if (l == law) {
-      return name;
-    }
-  }
-  return "?";
-}
-
-std::optional<RestitutionLaw> restitution_law_named(std::string_view name) {
-  for (const auto& [l, known] : law_names) {
-    if (known == name) {
-      return l;
-    }
-  }
-  return std::nullopt;
-}
 
 std::string_view to_string(Slip regime) {
   switch (regime) {
@@ -234,14 +244,7 @@ ContactImpulse resolve_contact(const ContactDynamics& contact, const ContactLaw&
   const double mu = law.friction;
   const double e = law.elasticity.value();
 
-  // W made exactly symmetric, its coupling within the semi-definite bound (validate() allowed a
-  // rounding's worth beyond either): the stick phase then never speeds up the approach.
-  Eigen::Matrix2d W = contact.W;
-  const double bound = std::sqrt(W(0, 0)) * std::sqrt(W(1, 1));
-  const double coupling = std::clamp((W(0, 1) + W(1, 0)) / 2.0, -bound, bound);
-  W(0, 1) = coupling;
-  W(1, 0) = coupling;
-
+  const Eigen::Matrix2d W = symmetrised(contact.W);
   ContactImpulse r;
   r.u_before = contact.u0;
   r.u_after = contact.u0;
@@ -252,18 +255,7 @@ ContactImpulse resolve_contact(const ContactDynamics& contact, const ContactLaw&
     return r;
   }
 
-  // The first regime: slip along the slip there is; from rest, stick if the ratio allows, else
-  // slip the way W_tn drives the contact.
-  Slip regime = Slip::slip;
-  double s = sign(u.y());
-  if (u.y() == 0.0) {
-    if (can_stick(W, mu)) {
-      regime = Slip::stick;
-      s = 0.0;
-    } else {
-      s = sign(W(1, 0));
-    }
-  }
+  auto [regime, s] = first_regime(W, mu, u.y());
   // Only a slip that has a speed to lose can stop: a slip from rest or a reversed slip is
   // driven by W_tn beyond what friction holds, and goes on to the end.
   bool slip_can_stop = regime == Slip::slip && u.y() != 0.0;
@@ -280,14 +272,7 @@ ContactImpulse resolve_contact(const ContactDynamics& contact, const ContactLaw&
     // Each pass ends at least one of: the slip stops (once), compression ends, the law is met.
     assert(event < 3);
     const Direction d = regime == Slip::stick ? stick_direction(W) : slip_direction(mu, s);
-    Eigen::Vector2d v = W * Eigen::Vector2d(d.normal, d.tangential);  // du along the direction
-    if (regime == Slip::stick) {
-      v.y() = 0.0;  // W_tn W_tt - W_tt W_tn, zero but for rounding
-      if (contact.determinant && W(1, 1) > 0.0) {
-        // (W_nn W_tt - W_nt^2) / scale with the determinant computed without cancellation.
-        v.x() = *contact.determinant * (d.normal / W(1, 1));
-      }
-    }
+    const Eigen::Vector2d v = rate(W, contact.determinant, regime, d);
 
     // How far along the direction each end lies (infinity: not in this phase).
     double to_slip_stop = infinity;
@@ -367,9 +352,8 @@ ContactImpulse resolve_contact(const ContactDynamics& contact, const ContactLaw&
   r.tangential = Pt;
   r.u_after = u;
   r.outcome = regime;
-  const bool finite =
-      all_finite(P, Pt, u.x(), u.y(), r.work_compression, r.work_restitution, r.work_tangential);
-  if (!finite && r.status == ContactStatus::resolved) {
+  if (!all_finite(P, Pt, u.x(), u.y(), r.work_compression, r.work_restitution, r.work_tangential) &&
+      r.status == ContactStatus::resolved) {
     r.status = ContactStatus::non_finite;
   }
   return r;

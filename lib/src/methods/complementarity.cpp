@@ -339,38 +339,25 @@ double dependence_threshold(const MatrixXd& G, double rank_tolerance) {
                                     std::numeric_limits<double>::epsilon();
 }
 
-Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, const VectorXd& B,
-                      double tolerance, double rank_tolerance, int max_pivots,
-                      const VectorXd& start) {
-  const Index n = G.cols();
-  Pivoted result;
-  VectorXd x = VectorXd::Zero(n);
-  std::vector<bool> passive(static_cast<std::size_t>(n), false);
-  std::vector<bool> refused(static_cast<std::size_t>(n), false);
-  const auto at = [](std::vector<bool>& flags, Index j) {
-    return flags[static_cast<std::size_t>(j)];
-  };
-  if (G.rows() == 0) {
-    result.z = x;
-    result.solved = true;  // nothing can move: no impulse does anything, and none is wanted
-    return result;
-  }
-  detail::UpdatedQR qr(G, g, dependence_threshold(G, rank_tolerance));
-  // Removes from P every contact whose least-squares impulse in z (P's order) is not positive.
-  const auto drop_not_positive = [&](const VectorXd& z) {
-    for (auto k = static_cast<Index>(z.size()); k-- > 0;) {
-      if (!(z(k) > 0.0)) {
-        const Index j = qr.columns()[static_cast<std::size_t>(k)];
-        at(passive, j) = false;
-        x(j) = 0.0;
-        qr.remove(static_cast<std::size_t>(k));
-        ++result.pivots;
-      }
-    }
-  };
-  if (start.size() == n) {
+// The state of the active-set method: the impulses x, the set P (the QR factorisation of its
+// columns and a flag per contact), the contacts refused until a step succeeds, and the pivots.
+class ActiveSet {
+ public:
+  ActiveSet(const MatrixXd& G, const VectorXd& g, double rank_tolerance, int max_pivots)
+      : qr_(G, g, dependence_threshold(G, rank_tolerance)),
+        x_(VectorXd::Zero(G.cols())),
+        passive_(static_cast<std::size_t>(G.cols()), false),
+        refused_(static_cast<std::size_t>(G.cols()), false),
+        max_pivots_(max_pivots) {}
+
+  [[nodiscard]] bool may_pivot() const { return result_.pivots < max_pivots_; }
+
+  // P the support of `start`, taken column by column, the largest impulse first (a column that
+  // depends on those before is left out); then, while the least squares on P give an impulse that
+  // is not positive, its contact leaves P.
+  void start_from(const VectorXd& start) {
     std::vector<Index> order;
-    for (Index j = 0; j < n; ++j) {
+    for (Index j = 0; j < start.size(); ++j) {
       if (start(j) > 0.0) {
         order.push_back(j);
       }
@@ -378,105 +365,169 @@ Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, c
     std::stable_sort(order.begin(), order.end(),
                      [&](Index a, Index b) { return start(a) > start(b); });
     for (const Index j : order) {
-      at(passive, j) = qr.insert(j);
+      at(passive_, j) = qr_.insert(j);
     }
-    while (!qr.columns().empty() && result.pivots < max_pivots) {
-      const VectorXd z = qr.solve();
+    while (!qr_.columns().empty() && may_pivot()) {
+      const VectorXd z = qr_.solve();
       if (z.minCoeff() > 0.0) {
-        x(qr.columns()) = z;
+        x_(qr_.columns()) = z;
         break;
       }
       drop_not_positive(z);
     }
   }
-  const MatrixXd A_abs = A.cwiseAbs();
-  const VectorXd B_abs = B.cwiseAbs();
-  while (result.pivots < max_pivots) {
-    // The contact that most wants an impulse: the most negative slack among those without one.
-    const VectorXd want = G.transpose() * (g - G * x);  // -(A F - B)
-    const double scale = (A_abs * x.cwiseAbs() + B_abs).maxCoeff();
+
+  // The contact that most wants an impulse: the most negative slack among those without one
+  // (-1: none, the method has ended).
+  [[nodiscard]] Index entering(const MatrixXd& G, const VectorXd& g, const MatrixXd& A_abs,
+                               const VectorXd& B_abs, double tolerance) const {
+    const VectorXd want = G.transpose() * (g - G * x_);  // -(A F - B)
+    const double scale = (A_abs * x_.cwiseAbs() + B_abs).maxCoeff();
     Index t = -1;
-    for (Index j = 0; j < n; ++j) {
-      if (!at(passive, j) && !at(refused, j) && want(j) > 0.5 * tolerance * scale &&
-          (t < 0 || want(j) > want(t))) {
+    for (Index j = 0; j < x_.size(); ++j) {
+      if (!passive_[static_cast<std::size_t>(j)] && !refused_[static_cast<std::size_t>(j)] &&
+          want(j) > 0.5 * tolerance * scale && (t < 0 || want(j) > want(t))) {
         t = j;
       }
     }
-    if (t < 0) {
-      result.solved = true;
-      break;
-    }
-    ++result.pivots;
-    if (!qr.insert(t)) {
+    return t;
+  }
+
+  // Contact t enters P, and the least squares on P are followed until every impulse is
+  // positive.
+  void bring_in(Index t) {
+    ++result_.pivots;
+    if (!qr_.insert(t)) {
       // Its column lies in the span of P's (to the pivot threshold): in exact arithmetic its
       // slack would then be 0; rounding left it negative. Refuse t until a step succeeds.
-      at(refused, t) = true;
-      continue;
+      at(refused_, t) = true;
+      return;
     }
-    at(passive, t) = true;
+    at(passive_, t) = true;
     bool first = true;
-    while (result.pivots < max_pivots) {
-      const std::vector<Index>& set = qr.columns();
+    while (may_pivot()) {
+      const std::vector<Index>& set = qr_.columns();
       if (set.empty()) {
         break;  // not expected: t keeps a positive impulse through its first step
       }
-      const VectorXd z = qr.solve();
+      const VectorXd z = qr_.solve();
       if (first && !(z(z.size() - 1) > 0.0)) {
         // In exact arithmetic impossible (a contact with negative slack gets a positive
         // impulse); rounding did it: refuse t until a step succeeds.
-        at(passive, t) = false;
-        at(refused, t) = true;
-        qr.remove(set.size() - 1);
+        at(passive_, t) = false;
+        at(refused_, t) = true;
+        qr_.remove(set.size() - 1);
         break;
       }
       first = false;
       if (z.minCoeff() > 0.0) {
-        x(set) = z;
-        std::fill(refused.begin(), refused.end(), false);
+        x_(set) = z;
+        std::fill(refused_.begin(), refused_.end(), false);
         break;
       }
-      // Move from x towards z as far as every impulse stays non-negative; drop those at zero.
-      double alpha = 1.0;
-      Index blocking = -1;
-      for (std::size_t k = 0; k < set.size(); ++k) {
-        const Index j = set[k];
-        const double zj = z(static_cast<Index>(k));
-        if (zj <= 0.0) {
-          const double step = x(j) > 0.0 ? x(j) / (x(j) - zj) : 0.0;  // no 0/0
-          if (blocking < 0 || step < alpha) {
-            alpha = step;
-            blocking = j;
-          }
-        }
-      }
-      for (std::size_t k = 0; k < set.size(); ++k) {
-        const Index j = set[k];
-        x(j) += alpha * (z(static_cast<Index>(k)) - x(j));
-      }
-      for (auto k = static_cast<Index>(set.size()); k-- > 0;) {
-        const Index j = set[static_cast<std::size_t>(k)];
-        if (j == blocking || x(j) <= 0.0) {
-          x(j) = 0.0;
-          at(passive, j) = false;
-          qr.remove(static_cast<std::size_t>(k));
-          ++result.pivots;
-        }
+      move_towards(z);
+    }
+  }
+
+  // The result: the impulses of the final set, from its factorisation (a step cut short by the
+  // pivot limit leaves x between two sets: then they are settled from the equations instead).
+  [[nodiscard]] Pivoted finish(bool solved) {
+    result_.solved = solved;
+    result_.support = qr_.columns();
+    std::sort(result_.support.begin(), result_.support.end());
+    result_.z = x_;
+    if (result_.solved && !qr_.columns().empty()) {
+      result_.z.setZero();
+      result_.z(qr_.columns()) = qr_.solve();
+      result_.settled = true;
+    } else {
+      result_.settled = result_.solved;
+    }
+    return result_;
+  }
+
+ private:
+  static std::vector<bool>::reference at(std::vector<bool>& flags, Index j) {
+    return flags[static_cast<std::size_t>(j)];
+  }
+
+  // Removes from P every contact whose least-squares impulse in z (P's order) is not positive.
+  void drop_not_positive(const VectorXd& z) {
+    for (auto k = static_cast<Index>(z.size()); k-- > 0;) {
+      if (!(z(k) > 0.0)) {
+        const Index j = qr_.columns()[static_cast<std::size_t>(k)];
+        at(passive_, j) = false;
+        x_(j) = 0.0;
+        qr_.remove(static_cast<std::size_t>(k));
+        ++result_.pivots;
       }
     }
   }
-  // The impulses of the final set, from its factorisation (a step cut short by the pivot limit
-  // leaves x between two sets: then they are settled from the equations instead).
-  result.support = qr.columns();
-  std::sort(result.support.begin(), result.support.end());
-  result.z = x;
-  if (result.solved && !qr.columns().empty()) {
-    result.z.setZero();
-    result.z(qr.columns()) = qr.solve();
-    result.settled = true;
-  } else {
-    result.settled = result.solved;
+
+  // Moves from x towards z (P's least squares) as far as every impulse stays non-negative, and
+  // drops those at zero from P.
+  void move_towards(const VectorXd& z) {
+    const std::vector<Index>& set = qr_.columns();
+    double alpha = 1.0;
+    Index blocking = -1;
+    for (std::size_t k = 0; k < set.size(); ++k) {
+      const Index j = set[k];
+      const double zj = z(static_cast<Index>(k));
+      if (zj <= 0.0) {
+        const double step = x_(j) > 0.0 ? x_(j) / (x_(j) - zj) : 0.0;  // no 0/0
+        if (blocking < 0 || step < alpha) {
+          alpha = step;
+          blocking = j;
+        }
+      }
+    }
+    for (std::size_t k = 0; k < set.size(); ++k) {
+      const Index j = set[k];
+      x_(j) += alpha * (z(static_cast<Index>(k)) - x_(j));
+    }
+    for (auto k = static_cast<Index>(set.size()); k-- > 0;) {
+      const Index j = set[static_cast<std::size_t>(k)];
+      if (j == blocking || x_(j) <= 0.0) {
+        x_(j) = 0.0;
+        at(passive_, j) = false;
+        qr_.remove(static_cast<std::size_t>(k));
+        ++result_.pivots;
+      }
+    }
   }
-  return result;
+
+  detail::UpdatedQR qr_;
+  VectorXd x_;
+  std::vector<bool> passive_;
+  std::vector<bool> refused_;
+  int max_pivots_;
+  Pivoted result_;
+};
+
+Pivoted lawson_hanson(const MatrixXd& G, const VectorXd& g, const MatrixXd& A, const VectorXd& B,
+                      double tolerance, double rank_tolerance, int max_pivots,
+                      const VectorXd& start) {
+  const Index n = G.cols();
+  if (G.rows() == 0) {
+    Pivoted result;
+    result.z = VectorXd::Zero(n);
+    result.solved = true;  // nothing can move: no impulse does anything, and none is wanted
+    return result;
+  }
+  ActiveSet active(G, g, rank_tolerance, max_pivots);
+  if (start.size() == n) {
+    active.start_from(start);
+  }
+  const MatrixXd A_abs = A.cwiseAbs();
+  const VectorXd B_abs = B.cwiseAbs();
+  while (active.may_pivot()) {
+    const Index t = active.entering(G, g, A_abs, B_abs, tolerance);
+    if (t < 0) {
+      return active.finish(true);
+    }
+    active.bring_in(t);
+  }
+  return active.finish(false);
 }
 
 // The active-set method on the factor G, g of the system A, B (A = G^T G, B = G^T g), started

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Beyond the paper (issue 17): contacts with Coulomb friction and any of the three restitution
-// laws, resolved by the exact single-contact rule (friction::collide) inside the pipeline.
+// Beyond the paper: contacts with Coulomb friction and any of the three restitution laws,
+// resolved by the exact single-contact rule (friction::collide) inside the pipeline.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -26,18 +26,6 @@ bool is_static(const multipoint::Body& body) {
   return std::holds_alternative<multipoint::StaticBody>(body);
 }
 
-std::string law_name(friction::RestitutionLaw law) {
-  switch (law) {
-    case friction::RestitutionLaw::newton:
-      return "Newton's restitution";
-    case friction::RestitutionLaw::poisson:
-      return "Poisson's restitution";
-    case friction::RestitutionLaw::energetic:
-      return "the energetic restitution law";
-  }
-  return "?";
-}
-
 // "slip until Fdt = 0.2, stick until 0.925; compression ended at Fdt = 0.3625"
 std::string phases_text(const friction::ContactImpulse& p) {
   if (p.status == friction::ContactStatus::not_approaching) {
@@ -55,54 +43,6 @@ std::string phases_text(const friction::ContactImpulse& p) {
 
 }  // namespace
 
-bool has_contact_law(const Options& options) {
-  return options.restitution != friction::RestitutionLaw::newton ||
-         std::any_of(options.friction.begin(), options.friction.end(),
-                     [](double mu) { return mu > 0.0; });
-}
-
-std::string unsupported(Method method, const multipoint::Configuration& configuration,
-                        const Options& options) {
-  const std::size_t n = configuration.contacts().size();
-  if (!has_contact_law(options) || n <= 1 || method == Method::serial) {
-    return {};
-  }
-  if (method == Method::complementarity &&
-      options.restitution == friction::RestitutionLaw::newton) {
-    if (static_cast<Eigen::Index>(n) <= friction_pivoting_limit) {
-      return {};
-    }
-    return "the method \"complementarity\" with friction pivots on 4 unknowns per contact, at "
-           "most " +
-           std::to_string(friction_pivoting_limit) + " contacts, got " + std::to_string(n) +
-           "; the serial method (solver.method \"serial\", or --method serial) resolves each "
-           "collision by the exact single-contact rule";
-  }
-  std::string what;
-  for (std::size_t v = 0; v < options.friction.size(); ++v) {
-    if (options.friction[v] > 0.0) {
-      what = "friction (contacts[" + std::to_string(v) + "] has " +
-             number_text(options.friction[v]) + ")";
-      break;
-    }
-  }
-  if (options.restitution != friction::RestitutionLaw::newton) {
-    what.append(what.empty() ? "" : " and ").append(law_name(options.restitution));
-  }
-  std::string text = "the method \"" + std::string(name_of(method)) + "\" cannot resolve " +
-                     std::to_string(configuration.contacts().size()) + " contacts with " + what +
-                     ": ";
-  text.append(method == Method::simultaneous
-                  ? "the paper's simultaneous system has no friction and only Newton's law"
-                  : "the complementarity method applies Newton's law only (it solves all "
-                    "contacts at once, with no end of compression, which " +
-                        law_name(options.restitution) + " needs)");
-  text.append(
-      "; the serial method (solver.method \"serial\", or --method serial) resolves each "
-      "collision by the exact single-contact rule");
-  return text;
-}
-
 friction::ContactLaw detail::contact_law(const multipoint::Configuration& configuration,
                                          const Options& options, std::size_t v) {
   const multipoint::Contact& c = configuration.contacts()[v];
@@ -119,7 +59,7 @@ std::string detail::energy_gained_warning(friction::RestitutionLaw law) {
   if (law == friction::RestitutionLaw::newton) {
     return "energy gained: Newton's restitution with friction; see the docs page on friction";
   }
-  return "energy gained: " + law_name(law) +
+  return "energy gained: " + std::string(row_of(law).words) +
          " with friction (a case beyond the single-contact results); see the docs page on "
          "friction";
 }
@@ -150,7 +90,7 @@ std::string detail::law_words(const multipoint::Configuration& configuration,
   } else {
     mu = "friction per contact";
   }
-  return mu + ", " + law_name(options.restitution);
+  return mu + ", " + std::string(row_of(options.restitution).words);
 }
 
 Outcome exact_single(Method method, const multipoint::Configuration& configuration,
@@ -197,7 +137,7 @@ Outcome exact_single(Method method, const multipoint::Configuration& configurati
     ends.push_back(phase.end);
     regimes.append(regimes.empty() ? "" : ", ").append(friction::to_string(phase.regime));
   }
-  o.diagnostics = {{"restitution", std::string(friction::to_string(law.restitution))},
+  o.diagnostics = {{"restitution", std::string(name_of(law.restitution))},
                    {"friction", law.friction},
                    {"elasticity", law.elasticity.value()},
                    {"phases", regimes},

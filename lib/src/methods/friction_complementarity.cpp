@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Beyond the paper (issue 17): Coulomb friction at many contacts as one complementarity problem.
+// Beyond the paper: Coulomb friction at many contacts as one complementarity problem.
 #include "impulse/methods/friction_complementarity.hpp"
 
 #include <algorithm>
@@ -126,29 +126,23 @@ double friction_residual(const FrictionSystem& system, const VectorXd& normal,
 
 namespace {
 
-// solve_friction(), its pivoting on modes started from the normal impulses `start` (those
-// without friction; empty: the contacts that approach).
-FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool least_norm,
-                            const VectorXd& start) {
-  require_friction_system(system);
-  require_friction_tolerance(tolerance);
+// The linear complementarity problem of the friction system: z = (P_n, λ+, λ-, β), w = M z + q
+// (see the header).
+struct FrictionLcp {
+  MatrixXd M;
+  VectorXd q;
+};
+
+FrictionLcp friction_lcp(const FrictionSystem& system) {
   const Index n = system.B.size();
-  FrictionSolution s;
-  s.normal = VectorXd::Zero(n);
-  s.tangential = VectorXd::Zero(n);
-  s.u_after = system.u0;
-  if (n == 0) {
-    s.least_norm = true;
-    return s;
-  }
   const MatrixXd& W = system.W;
   const auto nn = W.topLeftCorner(n, n);
   const auto nt = W.topRightCorner(n, n);
   const auto tn = W.bottomLeftCorner(n, n);
   const auto tt = W.bottomRightCorner(n, n);
   const MatrixXd E = MatrixXd::Identity(n, n);
-  // z = (P_n, λ+, λ-, β), w = M z + q (see the header).
-  MatrixXd M = MatrixXd::Zero(4 * n, 4 * n);
+  FrictionLcp lcp{MatrixXd::Zero(4 * n, 4 * n), VectorXd::Zero(4 * n)};
+  MatrixXd& M = lcp.M;
   M.block(0, 0, n, n) = nn;
   M.block(0, n, n, n) = nt;
   M.block(0, 2 * n, n, n) = -nt;
@@ -163,88 +157,81 @@ FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool
   M.block(3 * n, 0, n, n) = system.friction.asDiagonal();
   M.block(3 * n, n, n, n) = -E;
   M.block(3 * n, 2 * n, n, n) = -E;
-  VectorXd q = VectorXd::Zero(4 * n);
-  q.segment(0, n) = -system.B;
-  q.segment(n, n) = system.u0.tail(n);
-  q.segment(2 * n, n) = -system.u0.tail(n);
+  lcp.q.segment(0, n) = -system.B;
+  lcp.q.segment(n, n) = system.u0.tail(n);
+  lcp.q.segment(2 * n, n) = -system.u0.tail(n);
+  return lcp;
+}
 
-  // Lemke's method in floating point can end on a ray where exact arithmetic would not (none
-  // exists when W's null space holds no pushes within the friction cones, see the header): the
-  // problem's degenerate rows (q = 0 in the bound rows, equal tangential columns of contacts on
-  // one flat floor) send the rounded tableau down another path. The contacts are then taken in
-  // other orders (reversed, rotated: up to 8 orders), which changes the path and not the
-  // problem, and then with a looser tie tolerance.
-  // Each attempt's impulses are then settled as the frictionless method settles its own: the
-  // unknowns that carry a value keep their equations w_i = 0, solved again from M (least norm),
-  // more accurately than the tableau's updates leave them; the closer answer is kept.
-  const auto impulses_of = [&](const VectorXd& z, VectorXd& normal, VectorXd& tangential) {
-    normal = z.head(n).cwiseMax(0.0);
-    tangential = z.segment(n, n) - z.segment(2 * n, n);
-    double scale = 0.0;
-    const double residual = friction_residual(system, normal, tangential, scale);
-    return std::pair{residual, scale};
-  };
-  bool found = false;
-  bool non_finite = false;
-  if (least_norm && all_finite_in(W) && all_finite_in(system.u0) && all_finite_in(system.B)) {
-    // First the pivoting on the contacts' modes, started from the normal impulses without
-    // friction; Lemke's method only if it does not end at a solution. Stacks of 100 to 200
-    // contacts take 20 to 50 steps; a problem that takes more (a pyramid's dependent contacts
-    // make it cycle) goes to Lemke's method after at most 20 + N/2 of them.
-    const detail::ModePivoting modes =
-        detail::pivot_modes(system, start, tolerance, static_cast<int>(20 + n / 2));
-    if (modes.solved) {
-      found = true;
-      s.algorithm = FrictionAlgorithm::modes;
-      s.pivots = modes.pivots;
-      s.normal = modes.normal.cwiseMax(0.0);
-      s.tangential = modes.tangential;
-      s.residual = friction_residual(system, s.normal, s.tangential, s.scale);
+// The contacts' order of Lemke attempt @p attempt of 2 * orders, as the unknowns of the
+// permuted problem: unknown i of it is unknown unknowns(i) of the problem. Even attempts rotate
+// the contacts, odd ones reverse the rotated order.
+Eigen::VectorXi permuted_unknowns(Index n, Index attempt, Index orders) {
+  Eigen::VectorXi order(n);
+  for (Index v = 0; v < n; ++v) {
+    const Index rotated = (v + (attempt % orders) / 2) % n;
+    order(v) = static_cast<int>((attempt % orders) % 2 == 1 ? n - 1 - rotated : rotated);
+  }
+  Eigen::VectorXi unknowns(4 * n);
+  for (Index b = 0; b < 4; ++b) {
+    unknowns.segment(b * n, n) = order.array() + static_cast<int>(b * n);
+  }
+  return unknowns;
+}
+
+// A solution z of the problem settled as the frictionless method settles its own: the unknowns
+// that carry a value keep their equations w_i = 0, solved again from M (least norm).
+VectorXd settled_solution(const FrictionLcp& lcp, const VectorXd& z) {
+  std::vector<Index> on;
+  for (Index i = 0; i < z.size(); ++i) {
+    if (z(i) > 0.0) {
+      on.push_back(i);
     }
   }
+  VectorXd settled = VectorXd::Zero(z.size());
+  if (!on.empty()) {
+    const MatrixXd block = lcp.M(on, on);
+    const VectorXd rhs = -lcp.q(on);
+    settled(on) = impulse::detail::least_norm(block, rhs, 0.0).cwiseMax(0.0);
+  }
+  return settled;
+}
+
+// Lemke's method in floating point can end on a ray where exact arithmetic would not (none
+// exists when W's null space holds no pushes within the friction cones, see the header): the
+// problem's degenerate rows (q = 0 in the bound rows, equal tangential columns of contacts on
+// one flat floor) send the rounded tableau down another path. The contacts are then taken in
+// other orders (reversed, rotated: up to 8 orders), which changes the path and not the
+// problem, and then with a looser tie tolerance.
+// Each attempt's impulses are then settled (settled_solution); the closer answer is kept in @p s
+// (@p found: whether @p s holds one already, and after, whether it holds one). Returns whether
+// an attempt met numbers that are not finite.
+bool lemke_attempts(const FrictionSystem& system, double tolerance, FrictionSolution& s,
+                    bool& found) {
+  const Index n = system.B.size();
+  const FrictionLcp lcp = friction_lcp(system);
   const Index orders = std::min<Index>(2 * n, 8);
   for (Index attempt = 0; attempt < 2 * orders && !(found && s.residual <= tolerance * s.scale);
        ++attempt) {
     // First every order with lemke()'s tie tolerance, then every order with a looser one, which
     // recognises more rounded ties as the degenerate pivots they are.
     const double tie = attempt < orders ? 1e-11 : 1e-9;
-    Eigen::VectorXi order(n);
-    for (Index v = 0; v < n; ++v) {
-      const Index rotated = (v + (attempt % orders) / 2) % n;
-      order(v) = static_cast<int>((attempt % orders) % 2 == 1 ? n - 1 - rotated : rotated);
-    }
-    Eigen::VectorXi unknowns(4 * n);
-    for (Index b = 0; b < 4; ++b) {
-      unknowns.segment(b * n, n) = order.array() + static_cast<int>(b * n);
-    }
-    // Unknown i of the permuted problem is unknown unknowns(i) of the problem.
-    const LemkeLcp tried = lemke_lcp(M(unknowns, unknowns), q(unknowns), tie);
+    const Eigen::VectorXi unknowns = permuted_unknowns(n, attempt, orders);
+    const LemkeLcp tried = lemke_lcp(lcp.M(unknowns, unknowns), lcp.q(unknowns), tie);
     s.pivots += tried.pivots;
     if (tried.end == LemkeEnd::non_finite) {
-      non_finite = true;
-      break;
+      return true;
     }
     if (tried.end != LemkeEnd::solution) {
       continue;
     }
     VectorXd z = VectorXd::Zero(4 * n);
     z(unknowns) = tried.z;
-    std::vector<Index> on;
-    for (Index i = 0; i < 4 * n; ++i) {
-      if (z(i) > 0.0) {
-        on.push_back(i);
-      }
-    }
-    VectorXd settled = VectorXd::Zero(4 * n);
-    if (!on.empty()) {
-      const MatrixXd block = M(on, on);
-      const VectorXd rhs = -q(on);
-      settled(on) = impulse::detail::least_norm(block, rhs, 0.0).cwiseMax(0.0);
-    }
-    for (const VectorXd& candidate : {z, settled}) {
-      VectorXd normal;
-      VectorXd tangential;
-      const auto [residual, scale] = impulses_of(candidate, normal, tangential);
+    for (const VectorXd& candidate : {z, settled_solution(lcp, z)}) {
+      const VectorXd normal = candidate.head(n).cwiseMax(0.0);
+      const VectorXd tangential = candidate.segment(n, n) - candidate.segment(2 * n, n);
+      double scale = 0.0;
+      const double residual = friction_residual(system, normal, tangential, scale);
       if (all_finite_in(candidate) && (!found || residual < s.residual)) {
         found = true;
         s.normal = normal;
@@ -254,26 +241,18 @@ FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool
       }
     }
   }
-  if (non_finite) {
-    s.status = LcpStatus::non_finite;
-    s.normal.setConstant(std::numeric_limits<double>::quiet_NaN());
-    s.tangential = s.normal;
-    s.u_after.setConstant(std::numeric_limits<double>::quiet_NaN());
-    s.residual = std::numeric_limits<double>::quiet_NaN();
-    s.scale = s.residual;
-    return s;
-  }
-  if (!found) {
-    // Every order ended on a ray (or, not expected, at the pivot limit): no impulses; the caller
-    // says so.
-    s.status = LcpStatus::infeasible;
-    s.residual = friction_residual(system, s.normal, s.tangential, s.scale);
-    return s;
-  }
+  return false;
+}
 
-  // The least-norm tangential impulses that change nothing: P_t* = P_t - its part in the null
-  // space of the tangential columns (of G when the system carries its factor: W_tt = G_t^T G_t,
-  // so G_t x = 0 exactly when W_t x = 0). Kept if the conditions still hold.
+// The impulses found, finished: the least-norm tangential impulses that change nothing, kept if
+// the conditions still hold (with @p least_norm), Coulomb's bound clipped, the velocities after
+// and the status.
+void finish_solution(const FrictionSystem& system, double tolerance, bool least_norm,
+                     FrictionSolution& s) {
+  const Index n = system.B.size();
+  const auto tt = system.W.bottomRightCorner(n, n);
+  // P_t* = P_t - its part in the null space of the tangential columns (of G when the system
+  // carries its factor: W_tt = G_t^T G_t, so G_t x = 0 exactly when W_t x = 0).
   constexpr double threshold = 1e-10;
   const VectorXd least =
       system.G.size() != 0
@@ -296,8 +275,61 @@ FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool
   s.residual = friction_residual(system, s.normal, s.tangential, s.scale);
   VectorXd P(2 * n);
   P << s.normal, s.tangential;
-  s.u_after = system.u0 + W * P;
+  s.u_after = system.u0 + system.W * P;
   s.status = s.residual <= tolerance * s.scale ? LcpStatus::solved : LcpStatus::inaccurate;
+}
+
+// solve_friction(), its pivoting on modes started from the normal impulses `start` (those
+// without friction; empty: the contacts that approach), then Lemke's method if that does not
+// end at a solution.
+FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool least_norm,
+                            const VectorXd& start) {
+  require_friction_system(system);
+  require_friction_tolerance(tolerance);
+  const Index n = system.B.size();
+  FrictionSolution s;
+  s.normal = VectorXd::Zero(n);
+  s.tangential = VectorXd::Zero(n);
+  s.u_after = system.u0;
+  if (n == 0) {
+    s.least_norm = true;
+    return s;
+  }
+  bool found = false;
+  if (least_norm && all_finite_in(system.W) && all_finite_in(system.u0) &&
+      all_finite_in(system.B)) {
+    // First the pivoting on the contacts' modes, started from the normal impulses without
+    // friction; Lemke's method only if it does not end at a solution. Stacks of 100 to 200
+    // contacts take 20 to 50 steps; a problem that takes more (a pyramid's dependent contacts
+    // make it cycle) goes to Lemke's method after at most 20 + N/2 of them.
+    const detail::ModePivoting modes =
+        detail::pivot_modes(system, start, tolerance, static_cast<int>(20 + n / 2));
+    if (modes.solved) {
+      found = true;
+      s.algorithm = FrictionAlgorithm::modes;
+      s.pivots = modes.pivots;
+      s.normal = modes.normal.cwiseMax(0.0);
+      s.tangential = modes.tangential;
+      s.residual = friction_residual(system, s.normal, s.tangential, s.scale);
+    }
+  }
+  if (lemke_attempts(system, tolerance, s, found)) {
+    s.status = LcpStatus::non_finite;
+    s.normal.setConstant(std::numeric_limits<double>::quiet_NaN());
+    s.tangential = s.normal;
+    s.u_after.setConstant(std::numeric_limits<double>::quiet_NaN());
+    s.residual = std::numeric_limits<double>::quiet_NaN();
+    s.scale = s.residual;
+    return s;
+  }
+  if (!found) {
+    // Every order ended on a ray (or, not expected, at the pivot limit): no impulses; the caller
+    // says so.
+    s.status = LcpStatus::infeasible;
+    s.residual = friction_residual(system, s.normal, s.tangential, s.scale);
+    return s;
+  }
+  finish_solution(system, tolerance, least_norm, s);
   return s;
 }
 
@@ -410,7 +442,7 @@ Outcome complementarity_friction(const multipoint::Configuration& configuration,
       {"complementarity_residual", s.residual},
       {"converged", s.status == LcpStatus::solved},
       {"least_norm", s.least_norm},
-      {"restitution", std::string(friction::to_string(options.restitution))},
+      {"restitution", std::string(name_of(options.restitution))},
       {"friction", mu},
       {"slip_after", std::vector<double>(s.u_after.data() + n, s.u_after.data() + 2 * n)}};
   return o;

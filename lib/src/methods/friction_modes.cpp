@@ -204,6 +204,111 @@ Friction friction_for(double slip, double mu, double tie) {
 // stacks of 50 to 100 boxes 8 takes a third fewer steps).
 constexpr int stall_limit = 8;
 
+// The start: the contacts that push without friction (`start`; empty: those that approach)
+// push, each group sliding against its slip after (or sticking where it does not slip).
+Modes starting_modes(const FrictionSystem& s, const SparseMatrix& W, const SparseMatrix& W_abs,
+                     const VectorXd& start, double tolerance) {
+  const Index n = s.B.size();
+  Modes modes{std::vector<bool>(static_cast<std::size_t>(n), false),
+              std::vector<Friction>(static_cast<std::size_t>(n), Friction::sticking)};
+  VectorXd P = VectorXd::Zero(2 * n);
+  if (start.size() == n) {
+    P.head(n) = start.cwiseMax(0.0);
+  }
+  const VectorXd u = s.u0 + W * P;
+  const double tie = tolerance * (W_abs * P.cwiseAbs() + s.u0.cwiseAbs()).maxCoeff();
+  for (Index v = 0; v < n; ++v) {
+    modes.pushing[static_cast<std::size_t>(v)] = start.size() == n ? start(v) > 0.0 : s.B(v) > 0.0;
+    modes.friction[static_cast<std::size_t>(v)] = friction_for(u(n + v), s.friction(v), tie);
+  }
+  return modes;
+}
+
+// A violated condition, in velocities (impulses times their W diagonal), with the change that
+// meets it: (contact, pushes) for a normal one, (group, friction) for friction.
+struct Change {
+  double violation;
+  Index at;
+  bool normal;
+  bool pushes;
+  Friction friction;
+};
+
+// The impulses of one step of the pivoting, and what follows from them.
+struct Step {
+  const VectorXd& normal;
+  const VectorXd& tangential;
+  VectorXd u;                      // the velocities after
+  double tie;                      // what counts as zero
+  std::vector<bool> group_pushes;  // whether a contact of the group (by its first) pushes
+};
+
+// The conditions that the step's impulses violate, each with its change.
+std::vector<Change> violations(const FrictionSystem& s, const std::vector<Index>& group,
+                               const Modes& modes, const Step& step) {
+  const Index n = s.B.size();
+  // Each group's friction and bound.
+  VectorXd total = VectorXd::Zero(n);
+  VectorXd bound = VectorXd::Zero(n);
+  for (Index v = 0; v < n; ++v) {
+    if (modes.pushing[static_cast<std::size_t>(v)]) {
+      const Index g = group[static_cast<std::size_t>(v)];
+      total(g) += step.tangential(v);
+      bound(g) += s.friction(v) * step.normal(v);
+    }
+  }
+  std::vector<Change> changes;
+  const VectorXd& u = step.u;
+  const double tie = step.tie;
+  for (Index v = 0; v < n; ++v) {
+    const double Wnn = s.W(v, v) > 0.0 ? s.W(v, v) : 1.0;
+    if (!modes.pushing[static_cast<std::size_t>(v)]) {
+      const double wn = u(v) - s.u0(v) - s.B(v);
+      if (wn < -tie) {
+        changes.push_back({-wn, v, true, true, Friction::sticking});
+      }
+    } else if (Wnn * step.normal(v) < -tie) {
+      changes.push_back({-Wnn * step.normal(v), v, true, false, Friction::sticking});
+    }
+    if (group[static_cast<std::size_t>(v)] != v ||
+        !step.group_pushes[static_cast<std::size_t>(v)] || !(s.friction(v) > 0.0)) {
+      continue;
+    }
+    const double Wtt = s.W(n + v, n + v) > 0.0 ? s.W(n + v, n + v) : Wnn;
+    const Friction f = modes.friction[static_cast<std::size_t>(v)];
+    if (f == Friction::sticking) {
+      const double excess = Wtt * (std::abs(total(v)) - bound(v));
+      if (excess > tie) {
+        changes.push_back(
+            {excess, v, false, true, total(v) > 0.0 ? Friction::backwards : Friction::forwards});
+      }
+    } else if (sign_of(f) * u(n + v) > tie) {
+      // Slides against its own friction: it sticks.
+      changes.push_back({sign_of(f) * u(n + v), v, false, true, Friction::sticking});
+    }
+  }
+  return changes;
+}
+
+// The modes changed as @p changes say.
+void change_modes(const FrictionSystem& s, const std::vector<Index>& group,
+                  const std::vector<Change>& changes, const Step& step, Modes& modes) {
+  const Index n = s.B.size();
+  for (const Change& c : changes) {
+    if (c.normal) {
+      modes.pushing[static_cast<std::size_t>(c.at)] = c.pushes;
+      const Index g = group[static_cast<std::size_t>(c.at)];
+      if (c.pushes && !step.group_pushes[static_cast<std::size_t>(g)]) {
+        // The first contact of its group to push: friction against the slip after.
+        modes.friction[static_cast<std::size_t>(g)] =
+            friction_for(step.u(n + g), s.friction(g), step.tie);
+      }
+    } else {
+      modes.friction[static_cast<std::size_t>(c.at)] = c.friction;
+    }
+  }
+}
+
 }  // namespace
 
 ModePivoting pivot_modes(const FrictionSystem& s, const VectorXd& start, double tolerance,
@@ -214,23 +319,7 @@ ModePivoting pivot_modes(const FrictionSystem& s, const VectorXd& start, double 
   SparseMatrix W = s.W.sparseView();
   W.makeCompressed();
   const SparseMatrix W_abs = W.cwiseAbs();
-  Modes modes{std::vector<bool>(static_cast<std::size_t>(n), false),
-              std::vector<Friction>(static_cast<std::size_t>(n), Friction::sticking)};
-  // The start: the contacts that push without friction push, each group sliding against its slip
-  // after (or sticking where it does not slip).
-  {
-    VectorXd P = VectorXd::Zero(2 * n);
-    if (start.size() == n) {
-      P.head(n) = start.cwiseMax(0.0);
-    }
-    const VectorXd u = s.u0 + W * P;
-    const double tie = tolerance * (W_abs * P.cwiseAbs() + s.u0.cwiseAbs()).maxCoeff();
-    for (Index v = 0; v < n; ++v) {
-      modes.pushing[static_cast<std::size_t>(v)] =
-          start.size() == n ? start(v) > 0.0 : s.B(v) > 0.0;
-      modes.friction[static_cast<std::size_t>(v)] = friction_for(u(n + v), s.friction(v), tie);
-    }
-  }
+  Modes modes = starting_modes(s, W, W_abs, start, tolerance);
   std::set<Modes> seen;
   int stalled = 0;
   std::size_t fewest = std::numeric_limits<std::size_t>::max();
@@ -245,63 +334,17 @@ ModePivoting pivot_modes(const FrictionSystem& s, const VectorXd& start, double 
     }
     VectorXd P(2 * n);
     P << normal, tangential;
-    const VectorXd u = s.u0 + W * P;
+    Step now{normal, tangential, s.u0 + W * P, 0.0,
+             std::vector<bool>(static_cast<std::size_t>(n), false)};
     const double scale =
         std::max((W_abs * P.cwiseAbs() + s.u0.cwiseAbs()).maxCoeff(), s.B.cwiseAbs().maxCoeff());
-    const double tie = tolerance * scale;
-    // Each group's friction and bound.
-    VectorXd total = VectorXd::Zero(n);
-    VectorXd bound = VectorXd::Zero(n);
+    now.tie = tolerance * scale;
     for (Index v = 0; v < n; ++v) {
       if (modes.pushing[static_cast<std::size_t>(v)]) {
-        const Index g = group[static_cast<std::size_t>(v)];
-        total(g) += tangential(v);
-        bound(g) += s.friction(v) * normal(v);
+        now.group_pushes[static_cast<std::size_t>(group[static_cast<std::size_t>(v)])] = true;
       }
     }
-    // The violated conditions, in velocities (impulses times their W diagonal), each with the
-    // change that meets it: (contact, pushes) for a normal one, (group, friction) for friction.
-    struct Change {
-      double violation;
-      Index at;
-      bool normal;
-      bool pushes;
-      Friction friction;
-    };
-    std::vector<Change> changes;
-    std::vector<bool> group_pushes(static_cast<std::size_t>(n), false);
-    for (Index v = 0; v < n; ++v) {
-      if (modes.pushing[static_cast<std::size_t>(v)]) {
-        group_pushes[static_cast<std::size_t>(group[static_cast<std::size_t>(v)])] = true;
-      }
-    }
-    for (Index v = 0; v < n; ++v) {
-      const double Wnn = s.W(v, v) > 0.0 ? s.W(v, v) : 1.0;
-      if (!modes.pushing[static_cast<std::size_t>(v)]) {
-        const double wn = u(v) - s.u0(v) - s.B(v);
-        if (wn < -tie) {
-          changes.push_back({-wn, v, true, true, Friction::sticking});
-        }
-      } else if (Wnn * normal(v) < -tie) {
-        changes.push_back({-Wnn * normal(v), v, true, false, Friction::sticking});
-      }
-      if (group[static_cast<std::size_t>(v)] != v || !group_pushes[static_cast<std::size_t>(v)] ||
-          !(s.friction(v) > 0.0)) {
-        continue;
-      }
-      const double Wtt = s.W(n + v, n + v) > 0.0 ? s.W(n + v, n + v) : Wnn;
-      const Friction f = modes.friction[static_cast<std::size_t>(v)];
-      if (f == Friction::sticking) {
-        const double excess = Wtt * (std::abs(total(v)) - bound(v));
-        if (excess > tie) {
-          changes.push_back(
-              {excess, v, false, true, total(v) > 0.0 ? Friction::backwards : Friction::forwards});
-        }
-      } else if (sign_of(f) * u(n + v) > tie) {
-        // Slides against its own friction: it sticks.
-        changes.push_back({sign_of(f) * u(n + v), v, false, true, Friction::sticking});
-      }
-    }
+    std::vector<Change> changes = violations(s, group, modes, now);
     if (changes.empty()) {
       double residual_scale = 0.0;
       const double residual = friction_residual(s, normal, tangential, residual_scale);
@@ -324,18 +367,7 @@ ModePivoting pivot_modes(const FrictionSystem& s, const VectorXd& start, double 
           changes.begin(), changes.end(),
           [](const Change& a, const Change& b) { return a.violation < b.violation; })};
     }
-    for (const Change& c : changes) {
-      if (c.normal) {
-        modes.pushing[static_cast<std::size_t>(c.at)] = c.pushes;
-        const Index g = group[static_cast<std::size_t>(c.at)];
-        if (c.pushes && !group_pushes[static_cast<std::size_t>(g)]) {
-          // The first contact of its group to push: friction against the slip after.
-          modes.friction[static_cast<std::size_t>(g)] = friction_for(u(n + g), s.friction(g), tie);
-        }
-      } else {
-        modes.friction[static_cast<std::size_t>(c.at)] = c.friction;
-      }
-    }
+    change_modes(s, group, changes, now, modes);
     result.pivots += static_cast<int>(changes.size());
     ++result.steps;
   }

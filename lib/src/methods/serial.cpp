@@ -349,7 +349,7 @@ Outcome serial_exact(const multipoint::Configuration& configuration, const Paper
     details.push_back(std::move(line));
   }
   o.details = std::move(details);
-  o.diagnostics.push_back({"restitution", std::string(friction::to_string(options.restitution))});
+  o.diagnostics.push_back({"restitution", std::string(name_of(options.restitution))});
   o.diagnostics.push_back({"friction", options.friction});
   if (most_gained > 0.0) {
     o.warnings.push_back(detail::energy_gained_warning(options.restitution));

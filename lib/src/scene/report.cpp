@@ -78,6 +78,67 @@ bool any_rigid(const Result& r) {
                      [](const BodyReport& b) { return b.kind == BodyKind::rigid; });
 }
 
+// The system A·Fdt = B: its rank, residual and diagnostics, then A (up to 10 contacts), the
+// method's impulses and B.
+std::string system_text(const Result& r, double impulses_scale, bool colour) {
+  const methods::Outcome& o = r.outcome;
+  std::string out;
+  const Solution& s = r.system;
+  const auto n = static_cast<std::size_t>(s.B.size());
+  out.append(heading("System A·Fdt = B", colour));
+  out.append("  ").append(counted(n, "equation", "equations"));
+  out.append(", rank ").append(std::to_string(s.rank));
+  out.append(", residual |A·Fdt - B| = ").append(number_text(o.residual)).append("\n");
+  out.append("  ").append(s.dependent ? "dependent (many solutions; the policy picks one)"
+                                      : "independent (one solution)");
+  out.append(", ").append(s.consistent ? "consistent" : "inconsistent");
+  out.append(", policy ").append(name_of(s.options.dependent));
+  out.append(", condition estimate ").append(number_text(s.condition_estimate)).append("\n");
+  if (!s.dropped.empty()) {
+    out.append("  equations dropped:");
+    for (const auto v : s.dropped) {
+      out.append(" ").append(std::to_string(v));
+    }
+    out.append("\n");
+  }
+  const bool has_A = s.A.size() > 0 && static_cast<std::size_t>(s.A.rows()) == n;
+  if (!has_A) {
+    out.append("  A was not formed by the solver; B and Fdt:\n");
+  } else if (n > 10) {
+    out.append("  A is ").append(std::to_string(n)).append(" x ").append(std::to_string(n));
+    out.append(": too large to show here (--format json has it); B and Fdt:\n");
+  }
+  std::vector<std::string> header;
+  std::vector<bool> left;
+  if (has_A && n <= 10) {
+    for (std::size_t c = 0; c < n; ++c) {
+      header.push_back(c == 0 ? "A" : "");
+      left.push_back(false);
+    }
+    header.emplace_back("|");
+    left.push_back(true);
+  }
+  header.insert(header.end(), {"Fdt", "|", "B"});
+  left.insert(left.end(), {false, true, false});
+  TextTable system(header, left);
+  const double A_scale = has_A ? s.A.cwiseAbs().maxCoeff() : 0.0;
+  const double B_scale = n > 0 ? s.B.cwiseAbs().maxCoeff() : 0.0;
+  for (std::size_t row = 0; row < n; ++row) {
+    const auto i = static_cast<Eigen::Index>(row);
+    std::vector<std::string> cells;
+    if (has_A && n <= 10) {
+      for (std::size_t c = 0; c < n; ++c) {
+        cells.push_back(chopped(s.A(i, static_cast<Eigen::Index>(c)), A_scale));
+      }
+      cells.emplace_back("|");
+    }
+    cells.insert(cells.end(), {chopped(o.Fdt(i), impulses_scale), "|", chopped(s.B(i), B_scale)});
+    system.add(cells);
+  }
+  out.append(system.render());
+  return out;
+}
+
 }  // namespace
 
 std::string text_report(const Result& r, std::string_view source, bool colour) {
@@ -86,7 +147,7 @@ std::string text_report(const Result& r, std::string_view source, bool colour) {
   std::string out = scene_line(r, source, colour);
   out.append("\n");
   out.append("Method: ").append(name_of(r.method)).append(" (");
-  out.append(methods::text_of(r.method).description).append(")\n");
+  out.append(row_of(r.method).description).append(")\n");
   for (const std::string& line : o.details) {
     out.append("  ").append(line).append("\n");
   }
@@ -182,60 +243,7 @@ std::string text_report(const Result& r, std::string_view source, bool colour) {
   }
   out.append(contacts.render());
 
-  const Solution& s = r.system;
-  const auto n = static_cast<std::size_t>(s.B.size());
-  out.append(heading("System A·Fdt = B", colour));
-  out.append("  ").append(counted(n, "equation", "equations"));
-  out.append(", rank ").append(std::to_string(s.rank));
-  out.append(", residual |A·Fdt - B| = ").append(number_text(o.residual)).append("\n");
-  out.append("  ").append(s.dependent ? "dependent (many solutions; the policy picks one)"
-                                      : "independent (one solution)");
-  out.append(", ").append(s.consistent ? "consistent" : "inconsistent");
-  out.append(", policy ").append(name_of(s.options.dependent));
-  out.append(", condition estimate ").append(number_text(s.condition_estimate)).append("\n");
-  if (!s.dropped.empty()) {
-    out.append("  equations dropped:");
-    for (const auto v : s.dropped) {
-      out.append(" ").append(std::to_string(v));
-    }
-    out.append("\n");
-  }
-  const bool has_A = s.A.size() > 0 && static_cast<std::size_t>(s.A.rows()) == n;
-  if (!has_A) {
-    out.append("  A was not formed by the solver; B and Fdt:\n");
-  } else if (n > 10) {
-    out.append("  A is ").append(std::to_string(n)).append(" x ").append(std::to_string(n));
-    out.append(": too large to show here (--format json has it); B and Fdt:\n");
-  }
-  std::vector<std::string> header;
-  std::vector<bool> left;
-  if (has_A && n <= 10) {
-    for (std::size_t c = 0; c < n; ++c) {
-      header.push_back(c == 0 ? "A" : "");
-      left.push_back(false);
-    }
-    header.emplace_back("|");
-    left.push_back(true);
-  }
-  header.insert(header.end(), {"Fdt", "|", "B"});
-  left.insert(left.end(), {false, true, false});
-  TextTable system(header, left);
-  const double A_scale = has_A ? s.A.cwiseAbs().maxCoeff() : 0.0;
-  const double B_scale = n > 0 ? s.B.cwiseAbs().maxCoeff() : 0.0;
-  for (std::size_t row = 0; row < n; ++row) {
-    const auto i = static_cast<Eigen::Index>(row);
-    std::vector<std::string> cells;
-    if (has_A && n <= 10) {
-      for (std::size_t c = 0; c < n; ++c) {
-        cells.push_back(chopped(s.A(i, static_cast<Eigen::Index>(c)), A_scale));
-      }
-      cells.emplace_back("|");
-    }
-    cells.insert(cells.end(), {chopped(o.Fdt(i), impulses_scale), "|", chopped(s.B(i), B_scale)});
-    system.add(cells);
-  }
-  out.append(system.render());
-  return out;
+  return out.append(system_text(r, impulses_scale, colour));
 }
 
 namespace {
@@ -258,10 +266,162 @@ const methods::ContactColumn* column_of(const Result& r, std::string_view key) {
   return nullptr;
 }
 
+// Results in columns, one per result after the first result's own: "-" in every cell of a
+// result that did not finish, and scales over the results that did.
+struct Columns {
+  std::span<const Result> results;
+  const std::vector<std::string>& names;
+  bool colour;
+
+  [[nodiscard]] std::string cell(const Result& r, const std::string& text) const {
+    return r.outcome.finished ? text : std::string("-");
+  }
+  template <typename Get>
+  [[nodiscard]] double scale_of(Get get) const {
+    double scale = 0.0;
+    for (const Result& r : results) {
+      if (r.outcome.finished) {
+        scale = std::max(scale, get(r));
+      }
+    }
+    return scale;
+  }
+  [[nodiscard]] std::vector<std::string> header(std::vector<std::string> first_columns) const {
+    first_columns.insert(first_columns.end(), names.begin(), names.end());
+    return first_columns;
+  }
+};
+
+// The impulses, and with friction the tangential impulses and how each contact ended.
+std::string impulses_side_by_side(const Columns& c) {
+  const Result& first = c.results.front();
+  std::string out;
+  out.append(heading("Impulses Fdt (negative: the contact pulls)", c.colour));
+  const double impulses_scale = c.scale_of(impulse_scale);
+  TextTable impulses(c.header({"contact", "bumper", "wedge"}), {false, true, true});
+  for (std::size_t v = 0; v < first.impulses.size(); ++v) {
+    std::vector<std::string> row{std::to_string(v), first.impulses[v].bumper,
+                                 first.impulses[v].wedge};
+    for (const Result& r : c.results) {
+      row.push_back(c.cell(r, chopped(r.impulses[v].magnitude, impulses_scale)));
+    }
+    impulses.add(std::move(row));
+  }
+  out.append(impulses.render());
+  // With friction: the tangential impulses, and how each contact ended.
+  if (std::any_of(c.results.begin(), c.results.end(),
+                  [](const Result& r) { return column_of(r, "tangential") != nullptr; })) {
+    out.append(
+        heading("Tangential impulses (on the bumper, along [-normal_y, normal_x]) and how "
+                "each contact ended",
+                c.colour));
+    TextTable tangential(c.header({"contact"}), {false});
+    for (std::size_t v = 0; v < first.impulses.size(); ++v) {
+      std::vector<std::string> row{std::to_string(v)};
+      for (const Result& r : c.results) {
+        const methods::ContactColumn* t = column_of(r, "tangential");
+        const methods::ContactColumn* slip = column_of(r, "slip");
+        row.push_back(c.cell(r, t == nullptr ? std::string("0")
+                                             : column_cell(*t, v) + " (" +
+                                                   (slip ? column_cell(*slip, v) : "") + ")"));
+      }
+      tangential.add(std::move(row));
+    }
+    out.append(tangential.render());
+  }
+
+  return out;
+}
+
+// The velocities, spins and approach speeds after.
+std::string motion_side_by_side(const Columns& c) {
+  const Result& first = c.results.front();
+  const int d = first.dimension;
+  std::string out;
+  out.append(heading("Velocities after", c.colour));
+  const double velocities_scale = c.scale_of(velocity_scale);
+  TextTable velocities(c.header({"body", "before"}), {true});
+  for (std::size_t k = 0; k < first.bodies.size(); ++k) {
+    std::vector<std::string> row{first.bodies[k].name,
+                                 vector_text(first.bodies[k].before.velocity, d, velocities_scale)};
+    for (const Result& r : c.results) {
+      row.push_back(c.cell(r, vector_text(r.bodies[k].after.velocity, d, velocities_scale)));
+    }
+    velocities.add(std::move(row));
+  }
+  out.append(velocities.render());
+  if (any_rigid(first)) {
+    out.append(heading("Angular velocities after (rigid bodies)", c.colour));
+    const double spins_scale = c.scale_of(spin_scale);
+    TextTable spins(c.header({"body", "before"}), {true});
+    for (std::size_t k = 0; k < first.bodies.size(); ++k) {
+      if (first.bodies[k].kind != BodyKind::rigid) {
+        continue;
+      }
+      std::vector<std::string> row{first.bodies[k].name,
+                                   chopped(first.bodies[k].before.angular_velocity, spins_scale)};
+      for (const Result& r : c.results) {
+        row.push_back(c.cell(r, chopped(r.bodies[k].after.angular_velocity, spins_scale)));
+      }
+      spins.add(std::move(row));
+    }
+    out.append(spins.render());
+  }
+
+  out.append(heading("Approach speeds after (> 0: the contact still closes)", c.colour));
+  const double approaches_scale = c.scale_of(approach_scale);
+  TextTable approaches(c.header({"contact", "before"}), {});
+  for (std::size_t v = 0; v < first.contacts.size(); ++v) {
+    std::vector<std::string> row{std::to_string(v),
+                                 chopped(first.contacts[v].approach_before, approaches_scale)};
+    for (const Result& r : c.results) {
+      row.push_back(c.cell(r, chopped(r.contacts[v].approach_after, approaches_scale)));
+    }
+    approaches.add(std::move(row));
+  }
+  out.append(approaches.render());
+
+  return out;
+}
+
+// Energy and momentum, and how each result got there.
+std::string totals_side_by_side(const Columns& c, std::string_view how_title) {
+  const Result& first = c.results.front();
+  const int d = first.dimension;
+  std::string out;
+  out.append(heading("Totals (momentum leaves out static bodies)", c.colour));
+  const double energy_scale =
+      c.scale_of([](const Result& r) { return std::max(r.energy_before, r.energy_after); });
+  const double momentum_scale = c.scale_of(momentum_total_scale);
+  TextTable totals(c.header({"", "before"}), {true});
+  std::vector<std::string> energy{"kinetic energy", chopped(first.energy_before, energy_scale)};
+  std::vector<std::string> change{"energy change", ""};
+  std::vector<std::string> momentum{"momentum",
+                                    vector_text(first.momentum_before, d, momentum_scale)};
+  for (const Result& r : c.results) {
+    energy.push_back(c.cell(r, chopped(r.energy_after, energy_scale)));
+    change.push_back(c.cell(r, chopped(r.energy_change, energy_scale)));
+    momentum.push_back(c.cell(r, vector_text(r.momentum_after, d, momentum_scale)));
+  }
+  totals.add(std::move(energy));
+  totals.add(std::move(change));
+  totals.add(std::move(momentum));
+  out.append(totals.render());
+
+  out.append(heading(how_title, c.colour));
+  TextTable how({}, {true, true});
+  for (std::size_t k = 0; k < c.results.size(); ++k) {
+    const Result& r = c.results[k];
+    how.add({c.names[k] + ":",
+             r.outcome.finished ? r.outcome.summary : "did not finish (see the message below)"});
+  }
+  out.append(how.render());
+  return out;
+}
+
 std::string compared_text(std::span<const Result> results, std::string_view source, bool colour,
                           const Compared& compared) {
   const Result& first = results.front();
-  const int d = first.dimension;
   std::string out = scene_line(first, source, colour);
   out.append("; ").append(results.size() == 3 ? "three" : std::to_string(results.size()));
   out.append(" ").append(compared.what).append(" side by side\n");
@@ -272,166 +432,35 @@ std::string compared_text(std::span<const Result> results, std::string_view sour
   for (const std::string& note : first.notes) {
     out.append("Note: ").append(note).append("\n");
   }
-
-  const std::vector<std::string>& names = compared.names;
-  // A method that did not finish shows "-" in every cell.
-  const auto cell = [](const Result& r, const std::string& text) {
-    return r.outcome.finished ? text : std::string("-");
-  };
-  const auto scale_of = [&](auto get) {
-    double scale = 0.0;
-    for (const Result& r : results) {
-      if (r.outcome.finished) {
-        scale = std::max(scale, get(r));
-      }
-    }
-    return scale;
-  };
-  const auto header = [&](std::vector<std::string> first_columns) {
-    first_columns.insert(first_columns.end(), names.begin(), names.end());
-    return first_columns;
-  };
-
-  out.append(heading("Impulses Fdt (negative: the contact pulls)", colour));
-  const double impulses_scale = scale_of(impulse_scale);
-  TextTable impulses(header({"contact", "bumper", "wedge"}), {false, true, true});
-  for (std::size_t v = 0; v < first.impulses.size(); ++v) {
-    std::vector<std::string> row{std::to_string(v), first.impulses[v].bumper,
-                                 first.impulses[v].wedge};
-    for (const Result& r : results) {
-      row.push_back(cell(r, chopped(r.impulses[v].magnitude, impulses_scale)));
-    }
-    impulses.add(std::move(row));
-  }
-  out.append(impulses.render());
-  // With friction: the tangential impulses, and how each contact ended.
-  if (std::any_of(results.begin(), results.end(),
-                  [](const Result& r) { return column_of(r, "tangential") != nullptr; })) {
-    out.append(
-        heading("Tangential impulses (on the bumper, along [-normal_y, normal_x]) and how "
-                "each contact ended",
-                colour));
-    TextTable tangential(header({"contact"}), {false});
-    for (std::size_t v = 0; v < first.impulses.size(); ++v) {
-      std::vector<std::string> row{std::to_string(v)};
-      for (const Result& r : results) {
-        const methods::ContactColumn* t = column_of(r, "tangential");
-        const methods::ContactColumn* slip = column_of(r, "slip");
-        row.push_back(cell(r, t == nullptr ? std::string("0")
-                                           : column_cell(*t, v) + " (" +
-                                                 (slip ? column_cell(*slip, v) : "") + ")"));
-      }
-      tangential.add(std::move(row));
-    }
-    out.append(tangential.render());
-  }
-
-  out.append(heading("Velocities after", colour));
-  const double velocities_scale = scale_of(velocity_scale);
-  TextTable velocities(header({"body", "before"}), {true});
-  for (std::size_t k = 0; k < first.bodies.size(); ++k) {
-    std::vector<std::string> row{first.bodies[k].name,
-                                 vector_text(first.bodies[k].before.velocity, d, velocities_scale)};
-    for (const Result& r : results) {
-      row.push_back(cell(r, vector_text(r.bodies[k].after.velocity, d, velocities_scale)));
-    }
-    velocities.add(std::move(row));
-  }
-  out.append(velocities.render());
-  if (any_rigid(first)) {
-    out.append(heading("Angular velocities after (rigid bodies)", colour));
-    const double spins_scale = scale_of(spin_scale);
-    TextTable spins(header({"body", "before"}), {true});
-    for (std::size_t k = 0; k < first.bodies.size(); ++k) {
-      if (first.bodies[k].kind != BodyKind::rigid) {
-        continue;
-      }
-      std::vector<std::string> row{first.bodies[k].name,
-                                   chopped(first.bodies[k].before.angular_velocity, spins_scale)};
-      for (const Result& r : results) {
-        row.push_back(cell(r, chopped(r.bodies[k].after.angular_velocity, spins_scale)));
-      }
-      spins.add(std::move(row));
-    }
-    out.append(spins.render());
-  }
-
-  out.append(heading("Approach speeds after (> 0: the contact still closes)", colour));
-  const double approaches_scale = scale_of(approach_scale);
-  TextTable approaches(header({"contact", "before"}), {});
-  for (std::size_t v = 0; v < first.contacts.size(); ++v) {
-    std::vector<std::string> row{std::to_string(v),
-                                 chopped(first.contacts[v].approach_before, approaches_scale)};
-    for (const Result& r : results) {
-      row.push_back(cell(r, chopped(r.contacts[v].approach_after, approaches_scale)));
-    }
-    approaches.add(std::move(row));
-  }
-  out.append(approaches.render());
-
-  out.append(heading("Totals (momentum leaves out static bodies)", colour));
-  const double energy_scale =
-      scale_of([](const Result& r) { return std::max(r.energy_before, r.energy_after); });
-  const double momentum_scale = scale_of(momentum_total_scale);
-  TextTable totals(header({"", "before"}), {true});
-  std::vector<std::string> energy{"kinetic energy", chopped(first.energy_before, energy_scale)};
-  std::vector<std::string> change{"energy change", ""};
-  std::vector<std::string> momentum{"momentum",
-                                    vector_text(first.momentum_before, d, momentum_scale)};
-  for (const Result& r : results) {
-    energy.push_back(cell(r, chopped(r.energy_after, energy_scale)));
-    change.push_back(cell(r, chopped(r.energy_change, energy_scale)));
-    momentum.push_back(cell(r, vector_text(r.momentum_after, d, momentum_scale)));
-  }
-  totals.add(std::move(energy));
-  totals.add(std::move(change));
-  totals.add(std::move(momentum));
-  out.append(totals.render());
-
-  out.append(heading(compared.how, colour));
-  TextTable how({}, {true, true});
-  for (std::size_t k = 0; k < results.size(); ++k) {
-    const Result& r = results[k];
-    how.add({names[k] + ":",
-             r.outcome.finished ? r.outcome.summary : "did not finish (see the message below)"});
-  }
-  out.append(how.render());
-  return out;
+  const Columns columns{results, compared.names, colour};
+  return out.append(impulses_side_by_side(columns))
+      .append(motion_side_by_side(columns))
+      .append(totals_side_by_side(columns, compared.how));
 }
 
 }  // namespace
 
-std::string comparison_text(std::span<const Result> results, std::string_view source, bool colour) {
+std::string text(const Run& run, std::string_view source, bool colour) {
+  const std::span<const Result> results = run.results;
   Compared compared{"methods", {}, {}};
-  for (const Result& r : results) {
-    compared.names.emplace_back(name_of(r.method));
-    compared.legend.push_back(methods::text_of(r.method).brief);
+  switch (run.request.compare) {
+    case Request::Compare::nothing:
+      return results.front().outcome.finished ? text_report(results.front(), source, colour) : "";
+    case Request::Compare::methods:
+      for (const Result& r : results) {
+        compared.names.emplace_back(name_of(r.method));
+        compared.legend.push_back(row_of(r.method).brief);
+      }
+      break;
+    case Request::Compare::laws:
+      compared = {"restitution laws", {}, {}, "How each law got there"};
+      for (const auto& law : EnumNames<friction::RestitutionLaw>::table) {
+        compared.names.emplace_back(law.name);
+        compared.legend.push_back(law.definition);
+      }
+      break;
   }
   return compared_text(results, source, colour, compared);
-}
-
-std::string_view law_legend(friction::RestitutionLaw law) {
-  switch (law) {
-    case friction::RestitutionLaw::newton:
-      return "Newton's (the paper's): approach speed after = -(elasticity - 1) x before";
-    case friction::RestitutionLaw::poisson:
-      return "Poisson's: restitution impulse = (elasticity - 1) x compression impulse";
-    case friction::RestitutionLaw::energetic:
-      return "energetic (Stronge's): restitution work = (elasticity - 1)^2 x |compression work|";
-  }
-  return "?";
-}
-
-std::string laws_comparison_text(std::span<const Result> results,
-                                 std::span<const friction::RestitutionLaw> laws,
-                                 std::string_view source, bool colour) {
-  Compared compared{"restitution laws", {}, {}, "How each law got there"};
-  for (const friction::RestitutionLaw law : laws) {
-    compared.names.emplace_back(friction::to_string(law));
-    compared.legend.push_back(law_legend(law));
-  }
-  std::string out = compared_text(results, source, colour, compared);
-  return out;
 }
 
 std::vector<std::string> impulse_warnings(const Result& result, std::string_view prefix) {
@@ -528,17 +557,6 @@ std::string unfinished_message(const Result& result, std::string_view source) {
     return "";
   }
   return std::string(source).append(": ").append(result.outcome.unfinished);
-}
-
-std::string overflow_message(const Result& result, std::string_view source, bool name_method) {
-  std::string message(source);
-  message.append(": the numbers overflow");
-  if (name_method) {
-    message.append(" (method ").append(name_of(result.method)).append(")");
-  }
-  return message.append(
-      ": A·Fdt = B or the state after the collision is not finite (masses, inertias, velocities "
-      "or elasticities too extreme for double precision)");
 }
 
 }  // namespace impulse::scene

@@ -19,29 +19,10 @@ namespace {
 
 using Eigen::Vector2d;
 
-// "bodies[2]", "contacts[0].normal": the places of the scene format, as messages name them.
-std::string at(std::string_view array, std::size_t index) {
-  std::string place(array);
-  place.append("[").append(std::to_string(index)).append("]");
-  return place;
-}
-
-std::string member(std::string_view place, std::string_view key) {
-  std::string path(place);
-  path.append(".").append(key);
-  return path;
-}
-
 [[noreturn]] void refuse(const std::string& path, std::string_view message) {
   std::string text(path);
   text.append(": ").append(message);
   throw InvalidInput(text);
-}
-
-std::string in_quotes(std::string_view name) {
-  std::string text("\"");
-  text.append(name).append("\"");
-  return text;
 }
 
 // A vector as the scene file writes it: a plain number in 1D, [x, y] in 2D.
@@ -99,7 +80,7 @@ void require_friction(const std::string& path, double value) {
 
 // The motion as given, and the other one of the pair (m v or p / m), must both be doubles.
 void require_motion(const std::string& place, const Body& body, int dimension) {
-  const std::string path = member(place, key_of(body.linear_given, false));
+  const std::string path = member_place(place, key_of(body.linear_given, false));
   require_finite_vector(path, body.linear, dimension);
   // Computed to find out whether it overflows: exceptions held (see HeldFloatingPointExceptions).
   const bool other_finite = [&] {
@@ -117,7 +98,7 @@ void require_motion(const std::string& place, const Body& body, int dimension) {
   if (body.kind != BodyKind::rigid) {
     return;
   }
-  const std::string angular_path = member(place, key_of(body.angular_given, true));
+  const std::string angular_path = member_place(place, key_of(body.angular_given, true));
   if (!std::isfinite(body.angular)) {
     refuse(angular_path, "must be finite, got " + format_number(body.angular));
   }
@@ -134,22 +115,23 @@ void require_motion(const std::string& place, const Body& body, int dimension) {
 
 void validate_body(const Scene& scene, std::size_t i) {
   const Body& body = scene.bodies[i];
-  const std::string place = at("bodies", i);
+  const std::string place = element_place("bodies", i);
   if (body.kind == BodyKind::static_body) {
     return;  // immovable: nothing else of it is used
   }
   if (body.kind == BodyKind::rigid && scene.dimension != 2) {
-    refuse(member(place, "kind"), "a rigid body needs dimension 2, this scene has dimension " +
-                                      std::to_string(scene.dimension));
+    refuse(member_place(place, "kind"),
+           "a rigid body needs dimension 2, this scene has dimension " +
+               std::to_string(scene.dimension));
   }
-  require_positive_inverse(member(place, "mass"), body.mass);
+  require_positive_inverse(member_place(place, "mass"), body.mass);
   if (body.kind == BodyKind::rigid) {
-    require_positive_inverse(member(place, "inertia"), body.inertia);
-    require_finite_vector(member(place, "position"), body.position, scene.dimension);
+    require_positive_inverse(member_place(place, "inertia"), body.inertia);
+    require_finite_vector(member_place(place, "position"), body.position, scene.dimension);
   }
   require_motion(place, body, scene.dimension);
   if (body.elasticity) {
-    require_elasticity(member(place, "elasticity"), *body.elasticity);
+    require_elasticity(member_place(place, "elasticity"), *body.elasticity);
   } else if (!scene.elasticity) {
     refuse(place,
            "needs an elasticity: give it \"elasticity\" or give the scene a default "
@@ -159,11 +141,12 @@ void validate_body(const Scene& scene, std::size_t i) {
 
 void validate_contact(const Scene& scene, std::size_t v) {
   const Contact& c = scene.contacts[v];
-  const std::string place = at("contacts", v);
+  const std::string place = element_place("contacts", v);
   for (const auto& [role, index] : {std::pair{"bumper", c.bumper}, std::pair{"wedge", c.wedge}}) {
     if (index >= scene.bodies.size()) {
-      refuse(member(place, role), "must name one of the " + std::to_string(scene.bodies.size()) +
-                                      " bodies, got index " + std::to_string(index));
+      refuse(member_place(place, role), "must name one of the " +
+                                            std::to_string(scene.bodies.size()) +
+                                            " bodies, got index " + std::to_string(index));
     }
   }
   const Body& bumper = scene.bodies[c.bumper];
@@ -178,22 +161,24 @@ void validate_contact(const Scene& scene, std::size_t v) {
   }
   if (scene.dimension == 1) {
     if (!(c.normal.y() == 0.0 && std::isfinite(c.normal.x()) && c.normal.x() != 0.0)) {
-      refuse(member(place, "normal"),
+      refuse(member_place(place, "normal"),
              "must be a non-zero number (+1 or -1: its sign is the direction), got " +
                  show(c.normal, 1));
     }
   } else {
     const bool zero = c.normal.x() == 0.0 && c.normal.y() == 0.0;
     if (!all_finite_in(c.normal) || zero) {
-      refuse(member(place, "normal"), "must be a finite non-zero vector, got " + show(c.normal, 2));
+      refuse(member_place(place, "normal"),
+             "must be a finite non-zero vector, got " + show(c.normal, 2));
     }
   }
   if (c.friction) {
-    require_friction(member(place, "friction"), *c.friction);
+    require_friction(member_place(place, "friction"), *c.friction);
   }
   if (c.point) {
     if (!all_finite_in(*c.point)) {
-      refuse(member(place, "point"), "must be finite, got " + show(*c.point, scene.dimension));
+      refuse(member_place(place, "point"),
+             "must be finite, got " + show(*c.point, scene.dimension));
     }
   } else {
     for (const Body* body : {&bumper, &wedge}) {
@@ -207,7 +192,7 @@ void validate_contact(const Scene& scene, std::size_t v) {
 
 // Where a body's elasticity comes from: its own key, else the scene's default.
 std::string elasticity_place(const Scene& scene, std::size_t body) {
-  return scene.bodies[body].elasticity ? member(at("bodies", body), "elasticity")
+  return scene.bodies[body].elasticity ? member_place(element_place("bodies", body), "elasticity")
                                        : std::string("elasticity");
 }
 
@@ -227,10 +212,11 @@ void validate_contact_law(const Scene& scene, std::size_t v) {
   };
   const std::string why = "with friction or solver.restitution other than \"newton\"";
   if (movable.size() == 2 && elasticity_of(movable[0]) != elasticity_of(movable[1])) {
-    refuse(at("contacts", v), "its bodies collide at different elasticities (" +
-                                  format_number(elasticity_of(movable[0])) + " and " +
-                                  format_number(elasticity_of(movable[1])) + "), but " + why +
-                                  " a contact takes one elasticity: give both bodies the same");
+    refuse(element_place("contacts", v),
+           "its bodies collide at different elasticities (" +
+               format_number(elasticity_of(movable[0])) + " and " +
+               format_number(elasticity_of(movable[1])) + "), but " + why +
+               " a contact takes one elasticity: give both bodies the same");
   }
   const double e = elasticity_of(movable.front());
   if (e < 1.0) {
@@ -243,6 +229,24 @@ void validate_contact_law(const Scene& scene, std::size_t v) {
            "must be at most 2 with solver.restitution \"energetic\" (it gives back a fraction "
            "of the energy stored in compression), got " +
                format_number(e));
+  }
+}
+
+// Coulomb's coefficient at each contact: its own `friction`, else the scene's, else 0.
+std::vector<double> frictions(const Scene& scene) {
+  std::vector<double> mu;
+  for (const Contact& c : scene.contacts) {
+    mu.push_back(c.friction.value_or(scene.friction.value_or(0.0)));
+  }
+  return mu;
+}
+
+// With a contact law beyond the paper's, each contact's elasticity as the exact rule takes it.
+void validate_contact_laws(const Scene& scene) {
+  if (methods::has_contact_law(frictions(scene), scene.restitution)) {
+    for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
+      validate_contact_law(scene, v);
+    }
   }
 }
 
@@ -278,11 +282,7 @@ void validate_scene(const Scene& scene) {
   for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
     validate_contact(scene, v);
   }
-  if (has_contact_law(scene)) {
-    for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
-      validate_contact_law(scene, v);
-    }
-  }
+  validate_contact_laws(scene);
   try {
     require_dense_fits(static_cast<Eigen::Index>(scene.contacts.size()), scene.solver);
   } catch (const InvalidInput& e) {
@@ -344,7 +344,7 @@ std::vector<multipoint::Contact> contacts_of(const Scene& scene, std::vector<std
       // (The text is appended piece by piece: GCC 12 warns falsely, -Wrestrict, on
       // "[" + std::string&& once this function is inlined into a unity build; GCC bug 105329.)
       const Vector2d& used = n.vector();
-      std::string note = member(at("contacts", v), "normal");
+      std::string note = member_place(element_place("contacts", v), "normal");
       note += ' ';
       note += show(c.normal, scene.dimension);
       note += " is not of unit length (length ";
@@ -465,14 +465,14 @@ Result report(const World& world, const Solution& paper, methods::Outcome outcom
 void validate_names(std::span<const Body> bodies) {
   std::unordered_map<std::string_view, std::size_t> names;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const std::string place = member(at("bodies", i), "name");
+    const std::string place = member_place(element_place("bodies", i), "name");
     if (bodies[i].name.empty()) {
       refuse(place, "must not be empty");
     }
     const auto [seen, fresh] = names.emplace(bodies[i].name, i);
     if (!fresh) {
-      refuse(place,
-             in_quotes(bodies[i].name) + " is already the name of " + at("bodies", seen->second));
+      refuse(place, in_quotes(bodies[i].name) + " is already the name of " +
+                        element_place("bodies", seen->second));
     }
   }
 }
@@ -508,10 +508,9 @@ methods::Options World::options() const {
   options.complementarity = scene_.complementarity;
   options.serial = scene_.serial;
   options.contact_name = [this](Eigen::Index v) { return contact_name(v); };
-  if (has_contact_law(scene_)) {  // else the paper's frictionless contacts, as always
-    for (std::size_t v = 0; v < scene_.contacts.size(); ++v) {
-      options.friction.push_back(friction_at(scene_, v));
-    }
+  std::vector<double> mu = frictions(scene_);
+  if (methods::has_contact_law(mu, scene_.restitution)) {  // else the paper's contacts
+    options.friction = std::move(mu);
     options.restitution = scene_.restitution;
   }
   return options;
@@ -519,12 +518,12 @@ methods::Options World::options() const {
 
 World World::with_elasticity(double value) const {
   require_elasticity("elasticity", value);
-  Scene scene = scene::with_elasticity(scene_, value);
-  if (has_contact_law(scene)) {
-    for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
-      validate_contact_law(scene, v);
-    }
+  Scene scene = scene_;
+  scene.elasticity = value;
+  for (Body& body : scene.bodies) {
+    body.elasticity.reset();
   }
+  validate_contact_laws(scene);
   multipoint::Configuration configuration(
       multipoint::Configuration::Trusted{},
       {configuration_.bodies().begin(), configuration_.bodies().end()}, elasticities_of(scene),
@@ -532,45 +531,16 @@ World World::with_elasticity(double value) const {
   return {std::move(scene), notes_, std::move(configuration)};
 }
 
-void validate(const Scene& scene) {
-  validate_scene(scene);
-}
-
-double friction_at(const Scene& scene, std::size_t v) {
-  return scene.contacts[v].friction.value_or(scene.friction.value_or(0.0));
-}
-
-bool has_contact_law(const Scene& scene) {
-  if (scene.restitution != friction::RestitutionLaw::newton) {
-    return true;
-  }
-  for (std::size_t v = 0; v < scene.contacts.size(); ++v) {
-    if (friction_at(scene, v) > 0.0) {
-      return true;
-    }
-  }
-  return false;
-}
-
-Scene with_elasticity(Scene scene, double value) {
-  scene.elasticity = value;
-  for (Body& body : scene.bodies) {
-    body.elasticity.reset();
-  }
-  return scene;
-}
-
 std::vector<Result> resolve(const World& world, std::span<const methods::Method> methods) {
   // The paper's system, assembled and solved once for every method.
   const methods::Paper paper = methods::paper(world.configuration(), world.scene().solver);
-  const methods::Options options = world.options();
   for (const methods::Method method : methods) {
     // Refused before any method runs (friction with several contacts, say).
-    if (const std::string why = methods::unsupported(method, world.configuration(), options);
-        !why.empty()) {
+    if (const std::string why = unsupported(world, method); !why.empty()) {
       refuse("contacts", why);
     }
   }
+  const methods::Options options = world.options();
   std::vector<Result> results;
   for (const methods::Method method : methods) {
     methods::Outcome outcome;
@@ -597,8 +567,8 @@ Result solve(const Scene& scene) {
   return resolve(World(scene));
 }
 
-bool finished(const Result& result) {
-  return result.outcome.finished;
+std::string unsupported(const World& world, methods::Method method) {
+  return row_of(method).unsupported(world.configuration(), world.options());
 }
 
 }  // namespace impulse::scene

@@ -22,7 +22,9 @@ struct Named {
 
 /// @brief The table of an enum's names, specialised next to the enum:
 /// `template <> struct EnumNames<DependentPolicy> { static constexpr std::array<Named<…>, 2>
-/// table{{…}}; };`. Names are unique; the order is the one messages list them in.
+/// table{{…}}; };`. Names are unique; the order is the one messages list them in. A row may be
+/// any struct with the members `value` and `name`: an enum whose values have more to say (a
+/// method's words, a restitution law's) keeps it in the same row.
 /// @tparam Enum the enum
 template <typename Enum>
 struct EnumNames;
@@ -33,7 +35,7 @@ struct EnumNames;
 /// @return its name, or "?" for a value the table does not list
 template <typename Enum>
 [[nodiscard]] constexpr std::string_view name_of(Enum value) {
-  for (const Named<Enum>& entry : EnumNames<Enum>::table) {
+  for (const auto& entry : EnumNames<Enum>::table) {
     if (entry.value == value) {
       return entry.name;
     }
@@ -47,7 +49,7 @@ template <typename Enum>
 /// @return the value, or nothing for a name the table does not list
 template <typename Enum>
 [[nodiscard]] constexpr std::optional<Enum> value_named(std::string_view name) {
-  for (const Named<Enum>& entry : EnumNames<Enum>::table) {
+  for (const auto& entry : EnumNames<Enum>::table) {
     if (entry.name == name) {
       return entry.value;
     }
@@ -61,10 +63,24 @@ template <typename Enum>
 template <typename Enum>
 [[nodiscard]] std::string quoted_names() {
   std::string text;
-  for (const Named<Enum>& entry : EnumNames<Enum>::table) {
+  for (const auto& entry : EnumNames<Enum>::table) {
     text.append(text.empty() ? "\"" : ", \"").append(entry.name).append("\"");
   }
   return text;
+}
+
+/// @brief The row of @p value in its enum's table, with whatever else the row holds.
+/// @tparam Enum an enum with an EnumNames table
+/// @param value a value the table lists
+/// @return its row (the first row for a value the table does not list)
+template <typename Enum>
+[[nodiscard]] constexpr const auto& row_of(Enum value) {
+  for (const auto& entry : EnumNames<Enum>::table) {
+    if (entry.value == value) {
+      return entry;
+    }
+  }
+  return EnumNames<Enum>::table.front();
 }
 
 }  // namespace impulse

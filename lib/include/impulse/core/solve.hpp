@@ -155,7 +155,6 @@ struct Solution {
   double condition_estimate = 1.0;
   std::vector<Eigen::Index> dropped;  ///< equations ignored under InconsistentPolicy::drop_equation
   SolverOptions options;              ///< the policies and tolerances used
-  // Added for the sparse method (issue 7), after the fields above so that their order stays.
   SolveMethod method = SolveMethod::dense;  ///< the method used: dense or sparse
   Eigen::SparseMatrix<double> sparse_A;     ///< the system solved (sparse method; else 0×0)
   bool rank_estimated = false;  ///< true when rank and condition_estimate are sparse estimates

@@ -49,6 +49,24 @@ inline constexpr double rounding_noise = 1e-12;
 /// @return the text
 [[nodiscard]] std::string counted(std::size_t count, std::string_view one, std::string_view many);
 
+/// @brief A place of a scene file as messages name it: @p key in the object at @p path,
+/// "bodies[1].mass" (just @p key at the top level, where @p path is empty).
+/// @param path the object's place
+/// @param key the member
+/// @return the place
+[[nodiscard]] std::string member_place(std::string_view path, std::string_view key);
+
+/// @brief The element @p index of the array at @p path: "bodies[1]".
+/// @param path the array's place
+/// @param index the element
+/// @return the place
+[[nodiscard]] std::string element_place(std::string_view path, std::size_t index);
+
+/// @brief Text in double quotes, for a message: "a" for a.
+/// @param text the text
+/// @return it, quoted
+[[nodiscard]] std::string in_quotes(std::string_view text);
+
 /// @brief The number of characters of UTF-8 text (its bytes that are not continuation bytes):
 /// "b–c" is 3 characters, 5 bytes.
 /// @param text UTF-8 text

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "impulse/core/elasticity.hpp"
+#include "impulse/core/names.hpp"
 
 /// @brief Beyond the paper: Coulomb friction at a contact and three laws of restitution.
 ///
@@ -54,15 +55,33 @@ enum class RestitutionLaw {
   energetic,
 };
 
-/// @brief The scene format's name of a law ("newton", "poisson", "energetic").
-/// @param law the law
-/// @return its name
-[[nodiscard]] std::string_view to_string(RestitutionLaw law);
+/// @brief A restitution law's row of its table: the scene format's name, and its words.
+struct LawWords {
+  RestitutionLaw value;         ///< the law
+  std::string_view name;        ///< `solver.restitution`: "newton", "poisson", "energetic"
+  std::string_view words;       ///< in a sentence: "Poisson's restitution"
+  std::string_view definition;  ///< in the legend of `--compare restitution`
+};
 
-/// @brief The law of that name, as the scene format spells it (`solver.restitution`).
-/// @param name "newton", "poisson" or "energetic"
-/// @return the law, or nothing for any other name
-[[nodiscard]] std::optional<RestitutionLaw> restitution_law_named(std::string_view name);
+}  // namespace impulse::friction
+
+namespace impulse {
+/// @brief The restitution laws, in the order `--compare restitution` shows them.
+template <>
+struct EnumNames<friction::RestitutionLaw> {
+  /// one row per law
+  static constexpr std::array<friction::LawWords, 3> table{{
+      {friction::RestitutionLaw::newton, "newton", "Newton's restitution",
+       "Newton's (the paper's): approach speed after = -(elasticity - 1) x before"},
+      {friction::RestitutionLaw::poisson, "poisson", "Poisson's restitution",
+       "Poisson's: restitution impulse = (elasticity - 1) x compression impulse"},
+      {friction::RestitutionLaw::energetic, "energetic", "the energetic restitution law",
+       "energetic (Stronge's): restitution work = (elasticity - 1)^2 x |compression work|"},
+  }};
+};
+}  // namespace impulse
+
+namespace impulse::friction {
 
 /// @brief A friction regime of the contact: one phase of the collision, or how it ended.
 enum class Slip {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 /// @file
-/// @brief Beyond the paper (issue 17): many contacts with Coulomb friction at once, as one linear
+/// @brief Beyond the paper: many contacts with Coulomb friction at once, as one linear
 /// complementarity problem solved by Lemke's method, with Newton's restitution as the paper's
 /// elasticity.
 ///

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "impulse/scene/run.hpp"
 #include "impulse/scene/scene.hpp"
 
 namespace impulse::scene {
@@ -29,32 +30,17 @@ namespace impulse::scene {
 /// @return the report, ending with a newline
 [[nodiscard]] std::string text_report(const Result& result, std::string_view source, bool colour);
 
-/// @brief Several methods' results for one scene side by side (`solve --compare`): impulses,
-/// velocities (and spins) after, approach speeds after, energy and momentum, and each method's
-/// summary, one column per method ("-" for a method that did not finish).
-/// @param results the results, one per method, of one world (scene::resolve with methods)
+/// @brief What `impulselab solve` writes for a run, as text: text_report() of its one result
+/// (nothing when its method did not finish), or the results side by side (`--compare`: one
+/// column per method, `--compare restitution`: one per law, with the tangential impulses and how
+/// each contact ended) in the tables of text_report() — impulses, velocities (and spins) after,
+/// approach speeds after, energy and momentum, and each one's summary ("-" for one that did not
+/// finish).
+/// @param run a scene resolved (scene::run)
 /// @param source how to name the scene
 /// @param colour whether headings may use ANSI bold
-/// @return the report, ending with a newline
-[[nodiscard]] std::string comparison_text(std::span<const Result> results, std::string_view source,
-                                          bool colour);
-
-/// @brief The words of each restitution law in the legend of `--compare restitution`.
-/// @param law the law
-/// @return one line, its definition
-[[nodiscard]] std::string_view law_legend(friction::RestitutionLaw law);
-
-/// @brief The three restitution laws' results for one scene side by side (`solve --compare
-/// restitution`): the tables of comparison_text(), one column per law, with the tangential
-/// impulses and how each contact ended.
-/// @param results the results, one per law, of the same scene but for `solver.restitution`
-/// @param laws the law of each result
-/// @param source how to name the scene
-/// @param colour whether headings may use ANSI bold
-/// @return the report, ending with a newline
-[[nodiscard]] std::string laws_comparison_text(std::span<const Result> results,
-                                               std::span<const friction::RestitutionLaw> laws,
-                                               std::string_view source, bool colour);
+/// @return the report, ending with a newline; empty when the one method did not finish
+[[nodiscard]] std::string text(const Run& run, std::string_view source, bool colour);
 
 /// @brief The warnings about the impulses, one sentence each: every negative impulse
 /// ("contact 1 (b–c): negative impulse -0.666667 (the contact pulls)"; an impulse within
@@ -94,14 +80,5 @@ namespace impulse::scene {
 /// @param source how to name the scene
 /// @return the message
 [[nodiscard]] std::string unfinished_message(const Result& result, std::string_view source);
-
-/// @brief The refusal of a result whose numbers are beyond doubles (status non_finite):
-/// `"scene.json: the numbers overflow: …"`, with the method's name when @p name_method.
-/// @param result the result
-/// @param source how to name the scene
-/// @param name_method whether to name the method (several are shown)
-/// @return the message, for InvalidInput
-[[nodiscard]] std::string overflow_message(const Result& result, std::string_view source,
-                                           bool name_method);
 
 }  // namespace impulse::scene

@@ -92,8 +92,8 @@ struct Contact {
   /// impulse::UnitNormal::from_degrees() of it.
   Eigen::Vector2d normal = Eigen::Vector2d::UnitX();
   std::optional<Eigen::Vector2d> point;  ///< world position; needed when a body is rigid
-  /// Beyond the paper (issue 17): Coulomb's coefficient μ at this contact (finite, ≥ 0); without
-  /// it, the scene's `friction`, else 0.
+  /// Beyond the paper: Coulomb's coefficient μ at this contact (finite, ≥ 0); without it, the
+  /// scene's `friction`, else 0.
   std::optional<double> friction = std::nullopt;
 };
 
@@ -104,7 +104,6 @@ struct Scene {
   std::vector<Body> bodies;          ///< at least one
   std::vector<Contact> contacts;     ///< at least one
   SolverOptions solver;              ///< the policies for dependent and inconsistent systems
-  // Added for the other methods (issue 9), after the fields above so that their order stays.
   /// How the impulses are found (the scene format's `solver.method`); the paper's
   /// simultaneous system by default.
   methods::Method method = methods::Method::simultaneous;
@@ -114,27 +113,13 @@ struct Scene {
   /// Method complementarity: the algorithm and its tolerance. Its `dependent` policy is ignored:
   /// the scene's `solver.dependent` applies.
   methods::ComplementarityOptions complementarity;
-  // Added for friction (issue 17), after the fields above so that their order stays.
-  /// Coulomb's coefficient μ of every contact without its own (the format's top-level
-  /// `friction`, finite, ≥ 0); without it, 0.
+  /// Beyond the paper: Coulomb's coefficient μ of every contact without its own (the format's
+  /// top-level `friction`, finite, ≥ 0); without it, 0.
   std::optional<double> friction = std::nullopt;
   /// How the elasticity is applied once the bodies stop approaching (`solver.restitution`):
   /// Newton's (the paper's) by default, Poisson's or the energetic law.
   friction::RestitutionLaw restitution = friction::RestitutionLaw::newton;
 };
-
-/// @brief Coulomb's coefficient at contact @p v: its own `friction`, else the scene's, else 0.
-/// @param scene the scene
-/// @param v a contact of the scene
-/// @return μ
-[[nodiscard]] double friction_at(const Scene& scene, std::size_t v);
-
-/// @brief Whether the scene goes beyond the paper: some contact has friction (μ > 0) or the
-/// restitution law is not Newton's. Only then do the methods take the exact single-contact rule
-/// (friction::resolve_contact); otherwise every result is the paper's, unchanged.
-/// @param scene the scene
-/// @return whether a contact law beyond the paper's applies
-[[nodiscard]] bool has_contact_law(const Scene& scene);
 
 /// @brief A scene checked once: every rule of the scene format, then its bodies and contacts as
 /// the lower layers take them (a multipoint::Configuration that nothing checks again).
@@ -148,9 +133,9 @@ struct Scene {
 /// without a point, a bound on serial collisions outside 0 (the default) to
 /// methods::most_collisions, and more contacts than impulse::dense_limit with policies that only
 /// the dense method serves. With friction or a restitution law other than Newton's
-/// (has_contact_law()): a friction that is negative or not finite, and, at each contact, bodies
-/// that collide at different elasticities, an elasticity below 1, or above 2 for the energetic
-/// law (the exact rule takes one elasticity per contact, from compression on).
+/// (methods::has_contact_law()): a friction that is negative or not finite, and, at each contact,
+/// bodies that collide at different elasticities, an elasticity below 1, or above 2 for the
+/// energetic law (the exact rule takes one elasticity per contact, from compression on).
 class World {
  public:
   /// @brief Checks @p scene and keeps it with its model.
@@ -175,8 +160,9 @@ class World {
   /// while it lives).
   /// @return the options
   [[nodiscard]] methods::Options options() const;
-  /// @brief The same world with every body colliding at elasticity @p value (the bodies' own
-  /// elasticities dropped, as `sweep` does); only the elasticity is checked.
+  /// @brief The same world with every body colliding at elasticity @p value: the scene's
+  /// default becomes @p value and the bodies' own elasticities are dropped (as `sweep` does);
+  /// only the elasticity is checked.
   /// @param value the elasticity (InvalidInput "elasticity: must be finite and at least 0, …")
   /// @return the changed world
   [[nodiscard]] World with_elasticity(double value) const;
@@ -193,17 +179,6 @@ class World {
 /// `bodies[1].name: "a" is already the name of bodies[0]`.
 /// @param bodies the scene's bodies
 void validate_names(std::span<const Body> bodies);
-
-/// @brief Checks a scene (constructs its World): InvalidInput as World does.
-/// @param scene the scene
-void validate(const Scene& scene);
-
-/// @brief The scene with every body colliding at elasticity @p value: the default becomes
-/// @p value and the bodies' own elasticities are dropped (what `sweep` does).
-/// @param scene the scene
-/// @param value the elasticity (checked when the scene is)
-/// @return the changed copy
-[[nodiscard]] Scene with_elasticity(Scene scene, double value);
 
 /// @brief A body's motion at one instant.
 struct Motion {
@@ -262,7 +237,6 @@ struct Result {
   /// estimate, and the paper's own impulses and residual (whatever the method).
   Solution system;
   methods::Method method = methods::Method::simultaneous;  ///< the method that found the impulses
-  // Added for issue 16, after the fields above so that their order stays.
   /// The method's answer: its impulses (outcome.Fdt), the bodies after as it produced them, the
   /// residual @f$ \|A\,F\,dt - B\| @f$ of its impulses, whether it finished, and its words.
   methods::Outcome outcome;
@@ -282,22 +256,24 @@ struct Result {
 [[nodiscard]] Result resolve(const World& world);
 
 /// @brief Several methods on one world, the system assembled and solved once for all of them
-/// (what `solve --compare` shows).
+/// (what `solve --compare` shows). A method that cannot take the scene's contact law
+/// (unsupported()) is refused before any method runs: InvalidInput `"contacts: the method …"`.
 /// @param world the checked scene
 /// @param methods the methods, in the order of the results
 /// @return one report per method
 [[nodiscard]] std::vector<Result> resolve(const World& world,
                                           std::span<const methods::Method> methods);
 
+/// @brief Why @p method cannot resolve the world with its contact law (friction at several
+/// contacts, say), or "" when it can: the method's row of the table of methods answers.
+/// @param world the checked scene
+/// @param method the method
+/// @return a sentence, or empty
+[[nodiscard]] std::string unsupported(const World& world, methods::Method method);
+
 /// @brief Checks and resolves: resolve(World(scene)).
 /// @param scene the scene (InvalidInput as World)
 /// @return the report
 [[nodiscard]] Result solve(const Scene& scene);
-
-/// @brief Whether the method finished: false when serial collisions stopped at their bound or
-/// a complementarity problem has no solution (which no valid scene gives).
-/// @param result a resolved scene
-/// @return result.outcome.finished
-[[nodiscard]] bool finished(const Result& result);
 
 }  // namespace impulse::scene

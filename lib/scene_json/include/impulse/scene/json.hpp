@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 /// @file
-/// @brief Scene files and JSON reports (target ImpulseLab::scene, which adds nlohmann-json).
+/// @brief The scene file format (target ImpulseLab::scene, which adds nlohmann-json): a scene's
+/// text in, checked (parse_world); a resolved scene's report out (to_json, report_json). Its
+/// syntax, types and places only: the rules of a scene, how it is resolved and what is warned
+/// about are the library's (scene/scene.hpp, scene/run.hpp).
 ///
 /// Not part of the installed package: the library proper stays Eigen-only.
 #pragma once
@@ -13,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "impulse/methods/methods.hpp"
+#include "impulse/scene/run.hpp"
 #include "impulse/scene/scene.hpp"
 
 namespace impulse::scene {
@@ -69,27 +72,6 @@ struct ReadLimits {
 [[nodiscard]] Scene parse_scene(std::string_view text, std::string_view source,
                                 const ReadLimits& limits = {});
 
-/// @brief The whole contents of a file; InvalidInput (`"<path>: cannot read: <reason>"`) when it
-/// cannot be read, or (`"<path>: holds more than … bytes …"`) when it is larger than
-/// @p max_bytes, which is found without reading more than @p max_bytes + 1 bytes.
-/// @param path the file
-/// @param max_bytes the largest file accepted
-/// @return its bytes
-[[nodiscard]] std::string read_file(const std::string& path,
-                                    std::size_t max_bytes = ReadLimits{}.max_bytes);
-
-/// @brief parse_scene on a file's contents, the message naming @p path.
-/// @param path the scene file
-/// @param limits how much the file may hold (see ReadLimits)
-/// @return the scene, valid
-[[nodiscard]] Scene load_scene(const std::string& path, const ReadLimits& limits = {});
-
-/// @brief parse_world on a file's contents, the message naming @p path.
-/// @param path the scene file
-/// @param limits how much the file may hold (see ReadLimits)
-/// @return the checked scene
-[[nodiscard]] World load_world(const std::string& path, const ReadLimits& limits = {});
-
 /// @brief The message for text longer than @p max_bytes: `"<source>: holds more than …"`.
 /// @param source how the message names the file
 /// @param max_bytes the limit
@@ -125,105 +107,35 @@ struct ReadLimits {
 /// @return the text
 [[nodiscard]] std::string report_json(const Result& result);
 
-/// @brief Several methods' results for programs (`solve --compare --format json`): an object
-/// with one member per method, named as the scene format names it, each the method's full
-/// result (to_json(), with `method` added for the paper's too), or for a method that did not
-/// finish `{"method": NAME, "error": MESSAGE}`.
-/// @param results one per method (scene::resolve with methods)
+/// @brief What `impulselab solve --format json` writes for a run: report_json() of its one
+/// result (nothing when its method did not finish), or for a comparison an object with one
+/// member per result, named as the scene format names its method (`--compare`) or its law
+/// (`--compare restitution`), each to_json() with `"method"` (or `"restitution"`) added, or for
+/// one that did not finish `{"method": NAME, "error": MESSAGE}` (`"restitution"` for a law).
+/// @param run a scene resolved (scene::run)
 /// @param source how the messages name the scene
-/// @return the JSON document
-[[nodiscard]] nlohmann::ordered_json comparison_json(std::span<const Result> results,
-                                                     std::string_view source);
+/// @return the text, indented by 2, with a final newline; empty when the one method did not
+///         finish
+[[nodiscard]] std::string report_json(const Run& run, std::string_view source);
 
-/// @brief How `impulselab solve` writes its report.
-enum class Format {
-  text,  ///< for people (scene::text_report, scene::comparison_text)
-  json,  ///< for programs (report_json, comparison_json)
+/// @brief A scene file's text resolved, and what `impulselab solve --format json` prints for it.
+struct JsonRun {
+  Run run;             ///< the results, warnings and why a method did not finish
+  std::string report;  ///< report_json() of the run
 };
 
-/// @brief What `impulselab solve` prints for a scene: the report, why the method did not finish,
-/// and the warnings.
-struct SolveOutput {
-  /// The report exactly as `solve` writes it; empty when the method did not finish (with
-  /// `--compare`, the report of the methods that did is still there).
-  std::string report;
-  /// Why a method did not finish (`solve` then exits with status 1), naming the scene; empty
-  /// when it did.
-  std::string unfinished;
-  /// The warnings `solve` prints on standard error (without its "impulselab: warning: "): the
-  /// elasticities' (scene::elasticity_warnings), the impulses' (scene::impulse_warnings) and
-  /// the system's (scene::system_warnings).
-  std::vector<std::string> warnings;
-};
-
-/// @brief `impulselab solve` on a checked scene: scene::resolve() with @p method or the scene's
-/// own, then the report in @p format and the warnings. A scene whose numbers overflow a double
-/// throws InvalidInput (scene::overflow_message).
-/// @param world the checked scene
-/// @param source how messages name the scene ("scene.json", "<stdin>")
-/// @param method the method, instead of the scene's `solver.method`; nothing: the scene's
-/// @param format text or JSON
-/// @param colour whether the text report may use ANSI bold
-/// @return the report, or why the method did not finish, and the warnings
-[[nodiscard]] SolveOutput solve_output(const World& world, std::string_view source,
-                                       std::optional<methods::Method> method, Format format,
-                                       bool colour = false);
-
-/// @brief solve_output() on a scene already resolved (scene::resolve()): the same report,
-/// refusal and warnings, for a caller that also needs the Result itself (the interactive page
-/// draws the bodies' motion from it).
-/// @param result the resolved scene
-/// @param source how messages name the scene
-/// @param format text or JSON
-/// @param colour whether the text report may use ANSI bold
-/// @return the report, or why the method did not finish, and the warnings
-[[nodiscard]] SolveOutput solve_output(const Result& result, std::string_view source, Format format,
-                                       bool colour = false);
-
-/// @brief `impulselab solve --compare` on a checked scene: every method (methods::all_methods)
-/// on one assembled and solved system, side by side in @p format; the system's warnings once,
-/// then each method's impulse warnings with its name in front ("serial: …"); `unfinished` holds
-/// one line per method that did not finish (the others' report is still written). A method
-/// whose numbers overflow throws InvalidInput naming it. The elasticities' warnings come first,
-/// once.
-/// @param world the checked scene
-/// @param source how messages name the scene
-/// @param format text or JSON
-/// @param colour whether the text report may use ANSI bold
-/// @return the comparison, the unfinished methods and the warnings
-[[nodiscard]] SolveOutput compare_output(const World& world, std::string_view source, Format format,
-                                         bool colour = false);
-
-/// @brief `impulselab solve --compare restitution` on a checked scene: the scene resolved by its
-/// own method three times, once for each restitution law (friction::RestitutionLaw: Newton's,
-/// Poisson's, the energetic law), side by side in @p format (text: scene::laws_comparison_text;
-/// JSON: `{"newton": RESULT, "poisson": RESULT, "energetic": RESULT}`, each result to_json()
-/// with `"restitution"` added, or `{"restitution": NAME, "error": MESSAGE}` for one that did not
-/// finish); each law's impulse warnings with its name in front ("newton: energy gained: …").
-/// A law the scene cannot take (the energetic law above elasticity 2, several contacts with a
-/// method other than serial) throws InvalidInput naming the scene, the place and the law.
-/// The elasticities' warnings come first, once.
-/// @param world the checked scene
-/// @param source how messages name the scene
-/// @param format text or JSON
-/// @param colour whether the text report may use ANSI bold
-/// @return the comparison, the unfinished laws and the warnings
-[[nodiscard]] SolveOutput compare_laws_output(const World& world, std::string_view source,
-                                              Format format, bool colour = false);
-
-/// @brief The one entry point from a scene file's text to `solve --format json`'s output:
-/// parse_world() then solve_output() in JSON. `impulselab solve` goes the same way; so may a
-/// page that runs the library in a browser.
+/// @brief The one entry from a scene file's text to `solve --format json`'s output:
+/// parse_world(), scene::run(), report_json(). `impulselab solve` goes the same way; so does
+/// the page that runs the library in a browser.
 ///
 /// Bad input throws InvalidInput with exactly the message `solve` prints (and exits 2 with), a
 /// scene whose numbers overflow a double too.
 /// @param text the scene file's contents
 /// @param source how messages name the scene ("scene.json", "<stdin>")
-/// @param method the method, instead of the scene's `solver.method`; nothing: the scene's
+/// @param request what to resolve
 /// @param limits how much the text may hold
-/// @return the JSON report (empty if the method did not finish), why not, and the warnings
-[[nodiscard]] SolveOutput solve_to_json(std::string_view text, std::string_view source,
-                                        std::optional<methods::Method> method = std::nullopt,
-                                        const ReadLimits& limits = {});
+/// @return the run and its JSON report
+[[nodiscard]] JsonRun solve_to_json(std::string_view text, std::string_view source,
+                                    const Request& request = {}, const ReadLimits& limits = {});
 
 }  // namespace impulse::scene
