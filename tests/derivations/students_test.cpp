@@ -102,10 +102,22 @@ TEST_CASE("Students' corpus: 64 files, half of them with a slip", "[derivations]
 }
 
 TEST_CASE("Students' corpus: no random slip passes", "[derivations][students][slips]") {
-  const std::vector<Slip> slips = read_slips();
-  REQUIRE(slips.size() >= 1000);
+  const std::vector<Slip> all_slips = read_slips();
+  REQUIRE(all_slips.size() >= 1000);
+  // Every slip in an optimised build; every tenth in a Debug build (the asan preset), where the
+  // unoptimised checker under the sanitizers takes minutes for all of them and the sanitizers,
+  // not the count, are the point of the run (as tests/support/sampling.hpp does for properties).
+#ifdef NDEBUG
+  constexpr std::size_t every = 1;
+#else
+  constexpr std::size_t every = 10;
+#endif
+  std::vector<Slip> slips;
+  for (std::size_t k = 0; k < all_slips.size(); k += every) {
+    slips.push_back(all_slips[k]);
+  }
   // A slip may be reported undecided (never as following), but rarely: at most 1 % of them.
-  const std::size_t max_undecided = 10;
+  const std::size_t max_undecided = 10 / every;  // 10 of the 1,130, under 1 %
   std::size_t undecided = 0;
   std::size_t passed = 0;
   std::size_t refused = 0;
