@@ -9,47 +9,9 @@
 (function (collide) {
   const {$, isObject} = collide;
 
-  // ---------------------------------------------------------------------------------------------
-  // The address: bytes in and out of the fragment.
-
-  const unreserved = /[A-Za-z0-9\-_.!~*'()]/;
-
-  // The scene's bytes as the fragment holds them: what encodeURIComponent writes for UTF-8 text,
-  // and %XX for every other byte.
-  function encodeBytes(bytes) {
-    let text = '';
-    for (const byte of bytes) {
-      const c = String.fromCharCode(byte);
-      text += byte < 0x80 && unreserved.test(c) ? c : '%' + byte.toString(16).toUpperCase().padStart(2, '0');
-    }
-    return text;
-  }
-
-  // The bytes a fragment stands for: %XX is a byte, any other character its UTF-8 bytes.
-  function decodeFragment(fragment) {
-    const bytes = [];
-    const encoder = new TextEncoder();
-    for (let i = 0; i < fragment.length; ++i) {
-      const hex = fragment.slice(i + 1, i + 3);
-      if (fragment[i] === '%' && /^[0-9A-Fa-f]{2}$/.test(hex)) {
-        bytes.push(parseInt(hex, 16));
-        i += 2;
-      } else {
-        const c = String.fromCodePoint(fragment.codePointAt(i));
-        bytes.push(...encoder.encode(c));
-        i += c.length - 1;
-      }
-    }
-    return new Uint8Array(bytes);
-  }
-
-  collide.utf8Text = (bytes) => {
-    try {
-      return new TextDecoder('utf-8', {fatal: true}).decode(bytes);
-    } catch (e) {
-      return null;
-    }
-  };
+  // The address: bytes in and out of the fragment, a file opened and one downloaded, as every
+  // interactive page does them (web/common/files.js).
+  const {encodeBytes, decodeFragment, utf8Text, download, opened} = window.impulselabFiles;
 
   const fragmentKey = '#scene=';
   const presets = window.impulselabPresets || [];
@@ -313,7 +275,7 @@
     const hash = location.hash;
     if (hash.startsWith(fragmentKey)) {
       const bytes = decodeFragment(hash.slice(fragmentKey.length));
-      const text = collide.utf8Text(bytes);
+      const text = utf8Text(bytes);
       state.lastHash = hash;
       collide.load(text !== null ? text : bytes);
     } else {
@@ -380,27 +342,18 @@
   $('scene-text-box').addEventListener('toggle', collide.fillSceneText);
 
   $('open-file').addEventListener('change', async (event) => {
-    const file = event.target.files[0];
-    if (!file) {
+    const content = await opened(event);
+    if (content === null) {
       return;
     }
-    const bytes = new Uint8Array(await file.arrayBuffer());
-    const text = collide.utf8Text(bytes);
     collide.pause();
-    collide.load(text !== null ? text : bytes);
+    collide.load(content);
     collide.setTime(0);
-    event.target.value = '';
   });
 
   $('download').addEventListener('click', () => {
-    const blob = new Blob([state.bytes !== null ? state.bytes : collide.sceneFileText()], {type: 'application/json'});
-    const link = document.createElement('a');
-    link.href = URL.createObjectURL(blob);
-    link.download = (collide.matchingPreset() || 'scene') + '.json';
-    document.body.appendChild(link);
-    link.click();
-    link.remove();
-    setTimeout(() => URL.revokeObjectURL(link.href), 1000);
+    download(state.bytes !== null ? state.bytes : collide.sceneFileText(),
+             (collide.matchingPreset() || 'scene') + '.json', 'application/json');
   });
 
   $('apply-text').addEventListener('click', () => {

@@ -8,7 +8,7 @@ import {spawnSync} from 'node:child_process';
 import {existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import {join, resolve} from 'node:path';
-import {Browser} from './chromium.mjs';
+import {check, checkClean, runGroup} from './harness.mjs';
 
 const args = process.argv.slice(2);
 export const group = args[0];
@@ -212,21 +212,8 @@ export function sceneOfHash(hash) {
 
 // --- Checks ----------------------------------------------------------------------------------
 
-let failures = 0;
-let checks = 0;
-export function check(condition, what, detail = '') {
-  checks += 1;
-  if (!condition) {
-    failures += 1;
-    console.log(`FAIL ${what}${detail ? `\n     ${String(detail).split('\n').join('\n     ')}` : ''}`);
-  }
-}
-
-export function checkClean(p, where) {
-  check(p.problems().length === 0, `${where}: no console error, no exception`, p.problems().join('\n'));
-  const outside = p.requests.filter((u) => !/^(file|data|blob):/.test(u));
-  check(outside.length === 0, `${where}: no request outside the site`, outside.join('\n'));
-}
+// Counted checks and the page's cleanliness: harness.mjs's, shared with the derivation page's tests.
+export {check, checkClean};
 
 // The page shows what the command line gives for the same scene.
 export function checkAgainstCommandLine(state, line, where) {
@@ -283,24 +270,11 @@ export function presetsOfSite() {
 // Runs the group named on the command line, one of @p groups (name: async (browser) => {}), and
 // exits with 0 when every check passed.
 export async function run(groups, program) {
-  if (!groups[group]) {
-    console.log(`usage: node ${program} (${Object.keys(groups).join('|')}) --site DIR --cli PROGRAM --source DIR --screenshots DIR`);
-    process.exit(2);
-  }
-  if (!existsSync(page)) {
+  if (groups[group] && !existsSync(page)) {
     console.log(`${page} not found: the page is built with the docs (cmake --build --preset docs)`);
     process.exit(1);
   }
-  const browser = await Browser.launch();
-  try {
-    await groups[group](browser);
-  } catch (e) {
-    failures += 1;
-    console.log(`FAIL ${group}: ${e.stack}`);
-  } finally {
-    await browser.close();
-    rmSync(scratch, {recursive: true, force: true});
-  }
-  console.log(`${group}: ${checks} checks, ${failures} failed`);
-  process.exit(failures === 0 ? 0 : 1);
+  await runGroup(groups, group,
+                 `node ${program} GROUP --site DIR --cli PROGRAM --source DIR --screenshots DIR`,
+                 () => rmSync(scratch, {recursive: true, force: true}));
 }
