@@ -9,31 +9,15 @@
 #include <vector>
 
 #include "derivations/derivation.hpp"
+#include "notation_pairs.hpp"
 
 namespace d = impulse::derivations;
 
 namespace {
 
-std::vector<std::string> verdicts(const std::string& text) {
-  const d::DerivationReport report = d::check_derivation(text, "student.md");
-  std::vector<std::string> list;
-  for (const auto& e : report.equations) {
-    list.push_back(std::string(d::to_string(e.verdict)));
-  }
-  return list;
-}
-
-void same(const std::string& left, const std::string& right, const std::string& setup = "") {
-  INFO(left << "  vs  " << right);
-  CHECK(verdicts(setup + "\n$$" + left + " = c$$\n\n$$" + right + " = c$$\n") ==
-        std::vector<std::string>{"premise", "follows"});
-}
-
-void different(const std::string& left, const std::string& right, const std::string& setup = "") {
-  INFO(left << "  vs  " << right);
-  CHECK(verdicts(setup + "\n$$" + left + " = c$$\n\n$$" + right + " = c$$\n") ==
-        std::vector<std::string>{"premise", "does-not-follow"});
-}
+using impulse::test::different;
+using impulse::test::same;
+using impulse::test::verdicts;
 
 // The text is refused at (line, column) with a message holding `fragment`.
 void refused(const std::string& text, std::size_t line, std::size_t column,
