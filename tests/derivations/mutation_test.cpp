@@ -159,9 +159,21 @@ TEST_CASE("The mutation test: no changed equation or step of the paper's files i
   const auto& files = check::paper_files();
   std::size_t tried = 0, unreadable = 0, caught = 0;
   std::vector<std::string> missed;
+  // Every check in an optimised build; every fourth in a Debug build (the asan preset), where the
+  // engine is about twenty times slower and the sanitizers, not the count of changes, are the
+  // point.
+#ifdef NDEBUG
+  constexpr std::size_t every = 1;
+#else
+  constexpr std::size_t every = 4;
+#endif
+  std::size_t index = 0;
   for (const check::Check& c : check::all_checks()) {
     if (c.file.empty() || c.kind == check::Kind::claim) {
       continue;  // a claim is not a printed derivation; checks not yet in a file are C++
+    }
+    if (index++ % every != 0) {
+      continue;
     }
     std::size_t f = 0;
     while (files[f].name != c.file) {
@@ -205,6 +217,6 @@ TEST_CASE("The mutation test: no changed equation or step of the paper's files i
   for (const auto& m : missed) {
     std::cout << "  not caught: " << m << "\n";
   }
-  CHECK(tried > 40);
+  CHECK(tried > 40 / every);
   CHECK(missed.empty());
 }

@@ -19,13 +19,13 @@
 namespace impulse::test {
 
 /// How many random configurations each property is checked on.
-/// 1,000 in optimised builds (the figure); 200 in a Debug build (the asan preset),
+/// 1,000 in optimised builds (the figure); 100 in a Debug build (the asan preset),
 /// where unoptimised Eigen is about a hundred times slower and the sanitizers, not the count of
 /// samples, are the point of the run.
 #ifdef NDEBUG
 inline constexpr int configurations = 1000;
 #else
-inline constexpr int configurations = 200;
+inline constexpr int configurations = 100;
 #endif
 
 class Sampler {
