@@ -154,14 +154,15 @@ struct DerivationOptions {
 /// @brief The largest derivation file read (4 MiB): a longer one is refused with its place.
 inline constexpr std::size_t max_derivation_bytes = std::size_t{4} << 20;
 
-/// @brief A file that cannot be read: printed as `FILE:LINE:COLUMN: what was expected`.
-class DerivationError : public std::runtime_error {
+/// @brief A place in a file that cannot be read, and what was expected there (the base of
+/// DerivationError and TaskError, which say whose file it is).
+class FileError : public std::runtime_error {
  public:
   /// @brief An error at a place.
   /// @param line 1-based line
   /// @param column 1-based column (characters)
   /// @param message what was expected there
-  DerivationError(std::size_t line, std::size_t column, const std::string& message)
+  FileError(std::size_t line, std::size_t column, const std::string& message)
       : std::runtime_error(message), line_(line), column_(column) {}
   /// @brief The line of the error.
   /// @return 1-based
@@ -173,6 +174,13 @@ class DerivationError : public std::runtime_error {
  private:
   std::size_t line_;
   std::size_t column_;
+};
+
+/// @brief A derivation file that cannot be read: printed as `FILE:LINE:COLUMN: what was
+/// expected`.
+class DerivationError : public FileError {
+ public:
+  using FileError::FileError;
 };
 
 /// @brief Checks a derivation file: every display equation, in order.
@@ -205,24 +213,9 @@ struct Task {
                                                 const DerivationOptions& options = {});
 
 /// @brief A task file that cannot be read (or has no target): its place and what was expected.
-class TaskError : public std::runtime_error {
+class TaskError : public FileError {
  public:
-  /// @brief The task file's error.
-  /// @param line 1-based line of the task file
-  /// @param column 1-based column (characters)
-  /// @param message what was expected there
-  TaskError(std::size_t line, std::size_t column, const std::string& message)
-      : std::runtime_error(message), line_(line), column_(column) {}
-  /// @brief The line of the error in the task file.
-  /// @return 1-based
-  [[nodiscard]] std::size_t line() const { return line_; }
-  /// @brief The column of the error in the task file.
-  /// @return 1-based, in characters
-  [[nodiscard]] std::size_t column() const { return column_; }
-
- private:
-  std::size_t line_;
-  std::size_t column_;
+  using FileError::FileError;
 };
 
 /// @brief The exit status the contract gives a report: 1 when an equation does not follow, has
