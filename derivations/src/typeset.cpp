@@ -118,6 +118,77 @@ std::string latex_of_number(const std::string& number) {
   return mantissa == "1" ? power : mantissa + " \\times " + power;
 }
 
+// A symbol at plain[i] (a name of ASCII letters or one Greek letter, then accents, primes and a
+// subscript) in LaTeX; i moves past it.
+std::string read_symbol(std::string_view plain, std::size_t& i, const Special* special) {
+  std::string name;
+  if (special != nullptr) {
+    name = std::string(special->latex);
+    i += special->utf8.size();
+  } else {
+    std::string word;
+    while (i < plain.size() && ascii_letter(plain[i])) {
+      word += plain[i++];
+    }
+    name = latex_of_name(word);
+  }
+  while (const Special* accent = i < plain.size() ? special_at(plain, i) : nullptr) {
+    if (accent->role != Special::accent) {
+      break;
+    }
+    name = std::string(accent->latex) + "{" + name + "}";
+    i += accent->utf8.size();
+  }
+  std::string primes;
+  while (i < plain.size() && plain[i] == '\'') {
+    primes += '\'';
+    ++i;
+  }
+  if (i + 1 < plain.size() && plain[i] == '_' &&
+      (ascii_letter(plain[i + 1]) || ascii_digit(plain[i + 1]))) {
+    std::string sub;
+    ++i;
+    while (i < plain.size() && (ascii_letter(plain[i]) || ascii_digit(plain[i]))) {
+      sub += plain[i++];
+    }
+    // A parenthesised word right after belongs to the subscript: a_v1(elastic).
+    if (i < plain.size() && plain[i] == '(') {
+      const std::size_t close = plain.find(')', i);
+      if (close != std::string_view::npos &&
+          std::all_of(plain.begin() + static_cast<std::ptrdiff_t>(i) + 1,
+                      plain.begin() + static_cast<std::ptrdiff_t>(close), ascii_letter)) {
+        sub += std::string(plain.substr(i, close + 1 - i));
+        i = close + 1;
+      }
+    }
+    name += primes + "_{" + sub + "}";
+    primes.clear();
+  }
+  while (i < plain.size() && plain[i] == '\'') {
+    primes += '\'';
+    ++i;
+  }
+  return name + primes;
+}
+
+// A number at plain[i] ("0.5", "1.2e-17") in LaTeX; i moves past it.
+std::string read_number(std::string_view plain, std::size_t& i) {
+  std::string number;
+  while (i < plain.size() && (ascii_digit(plain[i]) || plain[i] == '.')) {
+    number += plain[i++];
+  }
+  if (i + 1 < plain.size() && (plain[i] == 'e' || plain[i] == 'E') &&
+      (ascii_digit(plain[i + 1]) || ((plain[i + 1] == '-' || plain[i + 1] == '+') &&
+                                     i + 2 < plain.size() && ascii_digit(plain[i + 2])))) {
+    number += plain[i++];
+    number += plain[i++];
+    while (i < plain.size() && ascii_digit(plain[i])) {
+      number += plain[i++];
+    }
+  }
+  return latex_of_number(number);
+}
+
 }  // namespace
 
 std::string latex_of_plain(std::string_view plain) {
@@ -151,54 +222,7 @@ std::string latex_of_plain(std::string_view plain) {
     const Special* special = special_at(plain, i);
     // A symbol: a name (ASCII letters, or one Greek letter), accents, primes, a subscript.
     if (ascii_letter(c) || (special != nullptr && special->role == Special::letter)) {
-      std::string name;
-      if (special != nullptr) {
-        name = std::string(special->latex);
-        i += special->utf8.size();
-      } else {
-        std::string word;
-        while (i < plain.size() && ascii_letter(plain[i])) {
-          word += plain[i++];
-        }
-        name = latex_of_name(word);
-      }
-      while (const Special* accent = i < plain.size() ? special_at(plain, i) : nullptr) {
-        if (accent->role != Special::accent) {
-          break;
-        }
-        name = std::string(accent->latex) + "{" + name + "}";
-        i += accent->utf8.size();
-      }
-      std::string primes;
-      while (i < plain.size() && plain[i] == '\'') {
-        primes += '\'';
-        ++i;
-      }
-      if (i + 1 < plain.size() && plain[i] == '_' &&
-          (ascii_letter(plain[i + 1]) || ascii_digit(plain[i + 1]))) {
-        std::string sub;
-        ++i;
-        while (i < plain.size() && (ascii_letter(plain[i]) || ascii_digit(plain[i]))) {
-          sub += plain[i++];
-        }
-        // A parenthesised word right after belongs to the subscript: a_v1(elastic).
-        if (i < plain.size() && plain[i] == '(') {
-          const std::size_t close = plain.find(')', i);
-          if (close != std::string_view::npos &&
-              std::all_of(plain.begin() + static_cast<std::ptrdiff_t>(i) + 1,
-                          plain.begin() + static_cast<std::ptrdiff_t>(close), ascii_letter)) {
-            sub += std::string(plain.substr(i, close + 1 - i));
-            i = close + 1;
-          }
-        }
-        name += primes + "_{" + sub + "}";
-        primes.clear();
-      }
-      while (i < plain.size() && plain[i] == '\'') {
-        primes += '\'';
-        ++i;
-      }
-      append(name + primes);
+      append(read_symbol(plain, i, special));
       continue;
     }
     if (special != nullptr) {
@@ -207,20 +231,7 @@ std::string latex_of_plain(std::string_view plain) {
       continue;
     }
     if (ascii_digit(c) || (c == '.' && i + 1 < plain.size() && ascii_digit(plain[i + 1]))) {
-      std::string number;
-      while (i < plain.size() && (ascii_digit(plain[i]) || plain[i] == '.')) {
-        number += plain[i++];
-      }
-      if (i + 1 < plain.size() && (plain[i] == 'e' || plain[i] == 'E') &&
-          (ascii_digit(plain[i + 1]) || ((plain[i + 1] == '-' || plain[i + 1] == '+') &&
-                                         i + 2 < plain.size() && ascii_digit(plain[i + 2])))) {
-        number += plain[i++];
-        number += plain[i++];
-        while (i < plain.size() && ascii_digit(plain[i])) {
-          number += plain[i++];
-        }
-      }
-      append(latex_of_number(number));
+      append(read_number(plain, i));
       continue;
     }
     if (c == '^') {

@@ -875,6 +875,80 @@ std::string required(const std::map<std::string, std::string>& o, const std::str
   return it->second;
 }
 
+// tutorials/**/README.md, the labs with their ways around.
+void write_tutorial_pages(Context& context, const std::vector<SectionPage>& sections,
+                          const fs::path& tutorials_out) {
+  const fs::path& source_dir = context.source_dir;
+  const std::vector<Lab>& labs = context.labs;
+  for (const auto& entry : fs::recursive_directory_iterator(source_dir / "tutorials")) {
+    if (entry.path().filename() != "README.md") {
+      continue;
+    }
+    const fs::path relative = fs::relative(entry.path(), source_dir / "tutorials");
+    if (relative.begin()->string() == "derivations" ||
+        entry.path().string().find("/solutions/") != std::string::npos) {
+      continue;
+    }
+    const std::string place = "tutorials/" + relative.string();
+    std::string text = fill(context, read(entry.path()), place);
+    const auto k = std::find_if(labs.begin(), labs.end(),
+                                [&](const Lab& lab) { return lab.readme == entry.path(); });
+    if (k != labs.end()) {
+      const auto index = static_cast<std::size_t>(k - labs.begin());
+      text =
+          framed(text, lab_nav(labs, index, sections, true), lab_nav(labs, index, sections, false));
+    } else if (relative == "README.md" || relative == "scenes/README.md") {
+      text =
+          framed(text,
+                 "<div class=\"breadcrumbs\">\\ref index \"ImpulseLab\" › " +
+                     std::string(relative == "README.md" ? "Labs"
+                                                         : "\\ref labs \"Labs\" › Example scenes") +
+                     "</div>\n",
+                 "");
+    }
+    write(tutorials_out / relative, text);
+  }
+}
+
+// A page per derivation file of the paper (and beyond it), its lines numbered; and the library's
+// sources that carry an equation's number and that Doxygen does not list.
+void write_listings(const Context& context, const fs::path& pages_out) {
+  const fs::path& source_dir = context.source_dir;
+  const Report& report = context.report;
+  for (const auto& [folder, prefix] : {std::pair{"paper", "paper_"}, {"beyond", "beyond_"}}) {
+    for (const auto& entry : fs::directory_iterator(source_dir / "derivations" / folder)) {
+      if (entry.path().extension() != ".md") {
+        continue;
+      }
+      const std::string stem = entry.path().stem().string();
+      const std::string shown = "derivations/" + std::string(folder) + "/" + stem + ".md";
+      const std::string page = prefix + stem;
+      const std::string& section_page = stem;  // section3; beyond, the page of its name (friction)
+      std::string intro = "<div class=\"breadcrumbs\">\\ref index \"ImpulseLab\" › \\ref " +
+                          section_page + " › " + shown +
+                          "</div>\n\nThe file the checker reads for this part (the format: \\ref "
+                          "derivations \"Check your own derivation\"). Each `check:` and `claim:` "
+                          "below links to its entry in the report; the section's page shows each "
+                          "statement with its verdict.";
+      write(pages_out / ("listing_" + page + ".md"),
+            listing_page(entry.path(), page, shown, intro, report));
+    }
+  }
+  std::set<std::string> listed;
+  for (const auto& [label, lines] : context.code) {
+    for (const CodeLine& l : lines) {
+      if (l.path.ends_with(".cpp") && listed.insert(l.path).second) {
+        const std::string intro =
+            "<div class=\"breadcrumbs\">\\ref index \"ImpulseLab\" › " + l.path +
+            "</div>\n\nA source of the library, line by line: a line that computes one of the "
+            "paper's equations says so in a comment with the equation's number, e.g. `// (5.3)`.";
+        write(pages_out / ("listing_" + code_listing_page(l.path) + ".md"),
+              listing_page(source_dir / l.path, code_listing_page(l.path), l.path, intro, report));
+      }
+    }
+  }
+}
+
 void pages(const std::map<std::string, std::string>& o) {
   const fs::path source_dir = required(o, "source");
   const fs::path docs_dir = required(o, "docs");
@@ -930,70 +1004,8 @@ void pages(const std::map<std::string, std::string>& o) {
     write(pages_out / name, text);
   }
 
-  // tutorials/**/README.md, the labs with their ways around.
-  for (const auto& entry : fs::recursive_directory_iterator(source_dir / "tutorials")) {
-    if (entry.path().filename() != "README.md") {
-      continue;
-    }
-    const fs::path relative = fs::relative(entry.path(), source_dir / "tutorials");
-    if (relative.begin()->string() == "derivations" ||
-        entry.path().string().find("/solutions/") != std::string::npos) {
-      continue;
-    }
-    const std::string place = "tutorials/" + relative.string();
-    std::string text = fill(context, read(entry.path()), place);
-    const auto k = std::find_if(labs.begin(), labs.end(),
-                                [&](const Lab& lab) { return lab.readme == entry.path(); });
-    if (k != labs.end()) {
-      const auto index = static_cast<std::size_t>(k - labs.begin());
-      text =
-          framed(text, lab_nav(labs, index, sections, true), lab_nav(labs, index, sections, false));
-    } else if (relative == "README.md" || relative == "scenes/README.md") {
-      text =
-          framed(text,
-                 "<div class=\"breadcrumbs\">\\ref index \"ImpulseLab\" › " +
-                     std::string(relative == "README.md" ? "Labs"
-                                                         : "\\ref labs \"Labs\" › Example scenes") +
-                     "</div>\n",
-                 "");
-    }
-    write(tutorials_out / relative, text);
-  }
-
-  // A page per derivation file of the paper (and beyond it), its lines numbered.
-  for (const auto& [folder, prefix] : {std::pair{"paper", "paper_"}, {"beyond", "beyond_"}}) {
-    for (const auto& entry : fs::directory_iterator(source_dir / "derivations" / folder)) {
-      if (entry.path().extension() != ".md") {
-        continue;
-      }
-      const std::string stem = entry.path().stem().string();
-      const std::string shown = "derivations/" + std::string(folder) + "/" + stem + ".md";
-      const std::string page = prefix + stem;
-      const std::string& section_page = stem;  // section3; beyond, the page of its name (friction)
-      std::string intro = "<div class=\"breadcrumbs\">\\ref index \"ImpulseLab\" › \\ref " +
-                          section_page + " › " + shown +
-                          "</div>\n\nThe file the checker reads for this part (the format: \\ref "
-                          "derivations \"Check your own derivation\"). Each `check:` and `claim:` "
-                          "below links to its entry in the report; the section's page shows each "
-                          "statement with its verdict.";
-      write(pages_out / ("listing_" + page + ".md"),
-            listing_page(entry.path(), page, shown, intro, report));
-    }
-  }
-  // The library's sources that carry an equation's number and that Doxygen does not list.
-  std::set<std::string> listed;
-  for (const auto& [label, lines] : context.code) {
-    for (const CodeLine& l : lines) {
-      if (l.path.ends_with(".cpp") && listed.insert(l.path).second) {
-        const std::string intro =
-            "<div class=\"breadcrumbs\">\\ref index \"ImpulseLab\" › " + l.path +
-            "</div>\n\nA source of the library, line by line: a line that computes one of the "
-            "paper's equations says so in a comment with the equation's number, e.g. `// (5.3)`.";
-        write(pages_out / ("listing_" + code_listing_page(l.path) + ".md"),
-              listing_page(source_dir / l.path, code_listing_page(l.path), l.path, intro, report));
-      }
-    }
-  }
+  write_tutorial_pages(context, sections, tutorials_out);
+  write_listings(context, pages_out);
 
   // Every check on some page, every page's id in the report.
   std::string missing;
