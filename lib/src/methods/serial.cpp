@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <queue>
 #include <string>
@@ -55,6 +56,14 @@ void require_options(const SerialOptions& options) {
                        format_number(options.approach_tolerance));
   }
 }
+
+}  // namespace
+
+// Not in an anonymous namespace: SerialCollisions::State holds one (and a unity build would
+// warn of a member whose type has internal linkage).
+namespace serial_detail {
+
+using Eigen::Index;
 
 // The approaching contacts by approach speed, fastest first, the lowest index among equal speeds:
 // a heap of (speed, contact) entries of the contacts faster than the threshold (no other can be
@@ -116,61 +125,61 @@ class Fastest {
   std::priority_queue<Entry> heap_;
 };
 
-}  // namespace
-
-namespace {
+}  // namespace serial_detail
 
 // The serial loop, once: the fastest-approaching contact collides (collide(v, state) changes the
 // state and returns the normal impulse, or nothing when a number overflowed), then the contacts
 // of its two bodies are measured again, until none approaches or the bound is reached.
-template <typename Collide>
-SerialResolution run_serial(const multipoint::Configuration& configuration,
-                            const SerialOptions& options, Collide&& collide) {
-  require_options(options);
-  const std::span<const Body> bodies = configuration.bodies();
-  const std::span<const Contact> contacts = configuration.contacts();
-  const auto n = static_cast<Index>(contacts.size());
-  SerialResolution r;
-  r.after.assign(bodies.begin(), bodies.end());
-  r.Fdt = Eigen::VectorXd::Zero(n);
-  SerialDiagnostics& d = r.diagnostics;
-  d.max_collisions = options.max_collisions > 0
-                         ? options.max_collisions
-                         : collisions_per_contact * std::max<std::int64_t>(1, n);
+struct SerialCollisions::State {
+  State(const multipoint::Configuration& c, const SerialOptions& options, Collide how)
+      : configuration(c), collide(std::move(how)) {
+    require_options(options);
+    const std::span<const Body> bodies = configuration.bodies();
+    const std::span<const Contact> contacts = configuration.contacts();
+    const auto n = static_cast<Index>(contacts.size());
+    r.after.assign(bodies.begin(), bodies.end());
+    r.Fdt = Eigen::VectorXd::Zero(n);
+    SerialDiagnostics& d = r.diagnostics;
+    d.max_collisions = options.max_collisions > 0
+                           ? options.max_collisions
+                           : collisions_per_contact * std::max<std::int64_t>(1, n);
+    double speed = 0.0;  // the largest speed of a body's point at a contact, before
+    for (const Contact& contact : contacts) {
+      speed = std::max(speed,
+                       multipoint::point_velocity(bodies[contact.bumper], contact.point).norm() +
+                           multipoint::point_velocity(bodies[contact.wedge], contact.point).norm());
+    }
+    d.approach_threshold = options.approach_tolerance * speed;
+    const Eigen::VectorXd u = configuration.approach(r.after);
+    if (!all_finite_in(u) || !std::isfinite(speed)) {
+      d.status = SerialStatus::non_finite;
+      ended = true;
+    } else if (n == 0) {
+      ended = true;
+    } else {
+      fastest.emplace(u, d.approach_threshold);
+    }
+  }
 
-  double speed = 0.0;  // the largest speed of a body's point at a contact, before
-  for (const Contact& c : contacts) {
-    speed = std::max(speed, multipoint::point_velocity(bodies[c.bumper], c.point).norm() +
-                                multipoint::point_velocity(bodies[c.wedge], c.point).norm());
-  }
-  d.approach_threshold = options.approach_tolerance * speed;
-  const Eigen::VectorXd u = configuration.approach(r.after);
-  if (!all_finite_in(u) || !std::isfinite(speed)) {
-    d.status = SerialStatus::non_finite;
-    return r;
-  }
-  if (n == 0) {
-    return r;
-  }
-
-  Fastest fastest(u, d.approach_threshold);
-  while (true) {
-    const std::optional<std::pair<Index, double>> next = fastest.top();
+  // One collision, or the end: returns whether the collisions have ended.
+  bool step() {
+    SerialDiagnostics& d = r.diagnostics;
+    const std::optional<std::pair<Index, double>> next = fastest->top();
     if (!next) {
-      break;  // no contact approaches
+      return true;  // no contact approaches
     }
     const auto [v, approach] = *next;
     if (static_cast<std::int64_t>(d.order.size()) >= d.max_collisions) {
       d.status = SerialStatus::collision_limit;
       d.still_approaching = v;
       d.approach_left = approach;
-      break;
+      return true;
     }
-    const Contact& c = contacts[static_cast<std::size_t>(v)];
+    const Contact& c = configuration.contacts()[static_cast<std::size_t>(v)];
     const std::optional<double> Fdt = collide(v, r.after);
     if (!Fdt) {
       d.status = SerialStatus::non_finite;
-      break;
+      return true;
     }
     r.Fdt(v) += *Fdt;
     d.order.push_back(v);
@@ -179,37 +188,106 @@ SerialResolution run_serial(const multipoint::Configuration& configuration,
       for (const Touch& t : configuration.touches(body)) {
         const double changed = configuration.approach(r.after, t.contact);
         finite = finite && std::isfinite(changed);
-        fastest.update(t.contact, changed);
+        fastest->update(t.contact, changed);
       }
     }
     if (!finite) {
       d.status = SerialStatus::non_finite;
-      break;
+      return true;
     }
+    return false;
   }
-  d.passes = count_passes(d.order);
-  return r;
+
+  const multipoint::Configuration& configuration;
+  Collide collide;
+  SerialResolution r;
+  std::optional<serial_detail::Fastest> fastest;
+  bool ended = false;
+};
+
+namespace {
+
+// The paper's single-contact formula at contact v: the 1×1 system of the two bodies' shares.
+SerialCollisions::Collide paper_collision(const multipoint::Configuration& configuration) {
+  return [&configuration](Index v, std::vector<Body>& state) -> std::optional<double> {
+    const Contact& c = configuration.contacts()[static_cast<std::size_t>(v)];
+    const std::span<const Elasticity> elasticities = configuration.elasticities();
+    const ScalarSolution one = solve(
+        multipoint::share(state[c.bumper], Touch{v, c.normal, c.point}, elasticities[c.bumper]) +
+        multipoint::share(state[c.wedge], Touch{v, -c.normal, c.point}, elasticities[c.wedge]));
+    if (one.status != SolveStatus::success || !std::isfinite(one.Fdt)) {
+      return std::nullopt;
+    }
+    configuration.apply(state, v, one.Fdt);  // -n Fdt on the bumper, +n Fdt on the wedge
+    return one.Fdt;
+  };
+}
+
+// Every collision at once.
+SerialResolution run_serial(const multipoint::Configuration& configuration,
+                            const SerialOptions& options, SerialCollisions::Collide collide) {
+  SerialCollisions collisions(configuration, options, std::move(collide));
+  collisions.advance(std::numeric_limits<std::int64_t>::max());
+  return collisions.resolution();
 }
 
 }  // namespace
 
+SerialCollisions::SerialCollisions(const multipoint::Configuration& configuration,
+                                   const SerialOptions& options)
+    : SerialCollisions(configuration, options, paper_collision(configuration)) {}
+
+SerialCollisions::SerialCollisions(const multipoint::Configuration& configuration,
+                                   const SerialOptions& options, Collide collide)
+    : state_(std::make_unique<State>(configuration, options, std::move(collide))) {
+  if (state_->ended) {
+    state_->r.diagnostics.passes = count_passes(state_->r.diagnostics.order);
+  }
+}
+
+SerialCollisions::~SerialCollisions() = default;
+SerialCollisions::SerialCollisions(SerialCollisions&&) noexcept = default;
+SerialCollisions& SerialCollisions::operator=(SerialCollisions&&) noexcept = default;
+
+bool SerialCollisions::advance(std::int64_t collisions) {
+  if (collisions < 1) {
+    throw InvalidInput("advance: collisions must be at least 1, got " + std::to_string(collisions));
+  }
+  State& s = *state_;
+  for (std::int64_t k = 0; k < collisions && !s.ended; ++k) {
+    s.ended = s.step();
+  }
+  if (!s.ended) {
+    // The bound is reached at the next call's first step; end now if nothing approaches any more
+    // or the bound is reached, so that a caller sees the end without another call.
+    const auto next = s.fastest->top();
+    s.ended = !next || static_cast<std::int64_t>(s.r.diagnostics.order.size()) >=
+                           s.r.diagnostics.max_collisions;
+    if (s.ended) {
+      s.step();  // records the bound's diagnostics, or finds nothing
+    }
+  }
+  if (s.ended) {
+    s.r.diagnostics.passes = count_passes(s.r.diagnostics.order);
+  }
+  return s.ended;
+}
+
+bool SerialCollisions::ended() const {
+  return state_->ended;
+}
+
+std::int64_t SerialCollisions::collisions() const {
+  return static_cast<std::int64_t>(state_->r.diagnostics.order.size());
+}
+
+const SerialResolution& SerialCollisions::resolution() const {
+  return state_->r;
+}
+
 SerialResolution resolve_serial(const multipoint::Configuration& configuration,
                                 const SerialOptions& options) {
-  const std::span<const Contact> contacts = configuration.contacts();
-  const std::span<const Elasticity> elasticities = configuration.elasticities();
-  return run_serial(
-      configuration, options, [&](Index v, std::vector<Body>& state) -> std::optional<double> {
-        const Contact& c = contacts[static_cast<std::size_t>(v)];
-        const ScalarSolution one = solve(
-            multipoint::share(state[c.bumper], Touch{v, c.normal, c.point},
-                              elasticities[c.bumper]) +
-            multipoint::share(state[c.wedge], Touch{v, -c.normal, c.point}, elasticities[c.wedge]));
-        if (one.status != SolveStatus::success || !std::isfinite(one.Fdt)) {
-          return std::nullopt;
-        }
-        configuration.apply(state, v, one.Fdt);  // -n Fdt on the bumper, +n Fdt on the wedge
-        return one.Fdt;
-      });
+  return run_serial(configuration, options, paper_collision(configuration));
 }
 
 SerialResolution resolve_serial(std::span<const Body> bodies,
@@ -289,72 +367,152 @@ Outcome serial_outcome(SerialResolution s, const Paper& paper, const Options& op
 
 }  // namespace
 
+// The serial method's collisions and what the exact rule's collisions leave besides the impulses.
+struct SerialMethod::State {
+  State(const multipoint::Configuration& c, const Paper& p, const Options& o, Kind k)
+      : configuration(c),
+        paper(p),
+        options(o),
+        kind(k),
+        tangential(Eigen::VectorXd::Zero(static_cast<Index>(c.contacts().size()))),
+        slip(c.contacts().size()) {
+    if (kind == Kind::paper) {
+      collisions.emplace(configuration, options.serial);
+    } else if (kind == Kind::exact) {
+      collisions.emplace(configuration, options.serial,
+                         [this](Index v, std::vector<Body>& state) { return collide(v, state); });
+    }
+  }
+
+  // One collision by the exact single-contact rule (friction::collide), its tangential impulse,
+  // how the contact ended and any energy it gained kept.
+  std::optional<double> collide(Index v, std::vector<Body>& state) {
+    const auto k = static_cast<std::size_t>(v);
+    const Contact& c = configuration.contacts()[k];
+    const double before =
+        multipoint::kinetic_energy(state[c.bumper]) + multipoint::kinetic_energy(state[c.wedge]);
+    const friction::ContactLaw law = detail::contact_law(configuration, options, k);
+    const friction::Collision one =
+        friction::collide(state[c.bumper], state[c.wedge], c.point, c.normal, law);
+    const friction::ContactImpulse& p = one.impulse;
+    if (p.status != friction::ContactStatus::resolved || !std::isfinite(p.normal) ||
+        !std::isfinite(p.tangential)) {
+      return std::nullopt;  // the fastest contact approaches: only overflow stops it here
+    }
+    state[c.bumper] = one.after.bumper;
+    state[c.wedge] = one.after.wedge;
+    const double after =
+        multipoint::kinetic_energy(state[c.bumper]) + multipoint::kinetic_energy(state[c.wedge]);
+    if (law.elasticity.value() <= 2.0 && detail::energy_gained(before, after)) {
+      most_gained = std::max(most_gained, after - before);
+    }
+    tangential(v) += p.tangential;
+    slip[k] = p.outcome;
+    return p.normal;
+  }
+
+  // The outcome of the exact rule's collisions: serial_outcome's, with friction's columns, the
+  // law in the details and the warning when a collision gained energy.
+  Outcome exact_outcome(SerialResolution s) const {
+    const std::span<const Contact> contacts = configuration.contacts();
+    const std::vector<std::optional<friction::Slip>>& ended = slip;
+    const std::vector<Body> after = s.after;
+    Outcome o = serial_outcome(std::move(s), paper, options);
+    if (!o.finite) {
+      return o;
+    }
+    std::vector<std::string> slips;
+    for (std::size_t v = 0; v < contacts.size(); ++v) {
+      const Contact& c = contacts[v];
+      // A contact that never collided ends as it is: sliding or not.
+      const friction::Slip how =
+          ended[v].value_or(detail::slip_of(after[c.bumper], after[c.wedge], c.point, c.normal));
+      slips.emplace_back(friction::to_string(how));
+      o.on_bumper.push_back(c.normal * -o.Fdt(static_cast<Index>(v)) +
+                            friction::tangent(c.normal) * tangential(static_cast<Index>(v)));
+    }
+    o.per_contact = detail::friction_columns(tangential, std::move(slips));
+    std::vector<std::string> details{"each collision by the exact single-contact rule: " +
+                                     detail::law_words(configuration, options)};
+    for (std::string& line : o.details) {
+      details.push_back(std::move(line));
+    }
+    o.details = std::move(details);
+    o.diagnostics.push_back({"restitution", std::string(name_of(options.restitution))});
+    o.diagnostics.push_back({"friction", options.friction});
+    if (most_gained > 0.0) {
+      o.warnings.push_back(detail::energy_gained_warning(options.restitution));
+    }
+    return o;
+  }
+
+  const multipoint::Configuration& configuration;
+  const Paper& paper;
+  const Options& options;
+  Kind kind;
+  Eigen::VectorXd tangential;
+  std::vector<std::optional<friction::Slip>> slip;
+  double most_gained = 0.0;  // the largest gain of kinetic energy by one collision
+  std::optional<SerialCollisions> collisions;  // none for one contact with a contact law
+};
+
+SerialMethod::SerialMethod(const multipoint::Configuration& configuration, const Paper& paper,
+                           const Options& options)
+    : SerialMethod(configuration, paper, options,
+                   !has_contact_law(options.friction, options.restitution) ? Kind::paper
+                   : configuration.contacts().size() == 1                  ? Kind::single
+                                                                           : Kind::exact) {}
+
+SerialMethod::SerialMethod(const multipoint::Configuration& configuration, const Paper& paper,
+                           const Options& options, Kind kind)
+    : state_(std::make_unique<State>(configuration, paper, options, kind)) {}
+
+SerialMethod::~SerialMethod() = default;
+SerialMethod::SerialMethod(SerialMethod&&) noexcept = default;
+SerialMethod& SerialMethod::operator=(SerialMethod&&) noexcept = default;
+
+bool SerialMethod::advance(std::int64_t collisions) {
+  return !state_->collisions || state_->collisions->advance(collisions);
+}
+
+std::int64_t SerialMethod::collisions() const {
+  return state_->collisions ? state_->collisions->collisions() : 0;
+}
+
+std::int64_t SerialMethod::bound() const {
+  return state_->collisions ? state_->collisions->resolution().diagnostics.max_collisions : 0;
+}
+
+Outcome SerialMethod::finish() {
+  State& s = *state_;
+  switch (s.kind) {
+    case Kind::single:
+      return exact_single(Method::serial, s.configuration, s.paper, s.options);
+    case Kind::paper:
+      return serial_outcome(s.collisions->resolution(), s.paper, s.options);
+    case Kind::exact:
+      break;
+  }
+  return s.exact_outcome(s.collisions->resolution());
+}
+
+namespace {
+
+Outcome all_at_once(SerialMethod method) {
+  method.advance(std::numeric_limits<std::int64_t>::max());
+  return method.finish();
+}
+
+}  // namespace
+
 Outcome serial(const multipoint::Configuration& configuration, const Paper& paper,
                const Options& options) {
-  return serial_outcome(resolve_serial(configuration, options.serial), paper, options);
+  return all_at_once(SerialMethod(configuration, paper, options, SerialMethod::Kind::paper));
 }
 
 Outcome serial_exact(const multipoint::Configuration& configuration, const Paper& paper,
                      const Options& options) {
-  const std::span<const Contact> contacts = configuration.contacts();
-  const auto n = static_cast<Index>(contacts.size());
-  Eigen::VectorXd tangential = Eigen::VectorXd::Zero(n);
-  std::vector<std::optional<friction::Slip>> ended(contacts.size());
-  double most_gained = 0.0;  // the largest gain of kinetic energy by one collision
-  SerialResolution s = run_serial(
-      configuration, options.serial,
-      [&](Index v, std::vector<Body>& state) -> std::optional<double> {
-        const auto k = static_cast<std::size_t>(v);
-        const Contact& c = contacts[k];
-        const double before = multipoint::kinetic_energy(state[c.bumper]) +
-                              multipoint::kinetic_energy(state[c.wedge]);
-        const friction::ContactLaw law = detail::contact_law(configuration, options, k);
-        const friction::Collision one =
-            friction::collide(state[c.bumper], state[c.wedge], c.point, c.normal, law);
-        const friction::ContactImpulse& p = one.impulse;
-        if (p.status != friction::ContactStatus::resolved || !std::isfinite(p.normal) ||
-            !std::isfinite(p.tangential)) {
-          return std::nullopt;  // the fastest contact approaches: only overflow stops it here
-        }
-        state[c.bumper] = one.after.bumper;
-        state[c.wedge] = one.after.wedge;
-        const double after = multipoint::kinetic_energy(state[c.bumper]) +
-                             multipoint::kinetic_energy(state[c.wedge]);
-        if (law.elasticity.value() <= 2.0 && detail::energy_gained(before, after)) {
-          most_gained = std::max(most_gained, after - before);
-        }
-        tangential(v) += p.tangential;
-        ended[k] = p.outcome;
-        return p.normal;
-      });
-  const std::vector<Body> after = s.after;
-  Outcome o = serial_outcome(std::move(s), paper, options);
-  if (!o.finite) {
-    return o;
-  }
-  std::vector<std::string> slip;
-  for (std::size_t v = 0; v < contacts.size(); ++v) {
-    const Contact& c = contacts[v];
-    // A contact that never collided ends as it is: sliding or not.
-    const friction::Slip how =
-        ended[v].value_or(detail::slip_of(after[c.bumper], after[c.wedge], c.point, c.normal));
-    slip.emplace_back(friction::to_string(how));
-    o.on_bumper.push_back(c.normal * -o.Fdt(static_cast<Index>(v)) +
-                          friction::tangent(c.normal) * tangential(static_cast<Index>(v)));
-  }
-  o.per_contact = detail::friction_columns(tangential, std::move(slip));
-  std::vector<std::string> details{"each collision by the exact single-contact rule: " +
-                                   detail::law_words(configuration, options)};
-  for (std::string& line : o.details) {
-    details.push_back(std::move(line));
-  }
-  o.details = std::move(details);
-  o.diagnostics.push_back({"restitution", std::string(name_of(options.restitution))});
-  o.diagnostics.push_back({"friction", options.friction});
-  if (most_gained > 0.0) {
-    o.warnings.push_back(detail::energy_gained_warning(options.restitution));
-  }
-  return o;
+  return all_at_once(SerialMethod(configuration, paper, options, SerialMethod::Kind::exact));
 }
 
 }  // namespace impulse::methods

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "impulse/scene/run.hpp"
 
+#include <limits>
+#include <optional>
 #include <utility>
 
 #include "impulse/core/error.hpp"
@@ -42,14 +44,13 @@ void refuse_overflow(const Result& result, std::string_view source, std::string_
   throw InvalidInput(message);
 }
 
-Run resolve_once(const World& world, std::string_view source, const Request& request) {
+// What a run of one method tells of its result: refused when its numbers overflow, why it did not
+// finish, and the warnings (a row of a sweep: the system's alone).
+Run told(Result result, std::string_view source, const Request& request) {
   Run out{request, {}, {}, {}};
+  out.results.push_back(std::move(result));
   const std::optional<double> e = request.elasticity;
   const std::string at = e ? " at elasticity " + format_number(*e) : "";
-  out.results.push_back(refusing(source, e ? " (" + at.substr(1) + ")" : "", [&] {
-    return e ? resolve(world.with_elasticity(*e), request.method.value_or(world.scene().method))
-             : resolve(world, request.method.value_or(world.scene().method));
-  }));
   const Result& r = out.results.front();
   refuse_overflow(r, source, at, !e);
   out.unfinished = unfinished_message(r, std::string(source) + at);
@@ -66,6 +67,11 @@ Run resolve_once(const World& world, std::string_view source, const Request& req
     out.warnings.push_back(std::move(warning));
   }
   return out;
+}
+
+// How a refusal of one method names what was asked: " (at elasticity E)" for a row of a sweep.
+std::string asked(const Request& request) {
+  return request.elasticity ? " (at elasticity " + format_number(*request.elasticity) + ")" : "";
 }
 
 // The warnings of results shown side by side: the elasticities' and the system's once (they and
@@ -146,16 +152,67 @@ Run compare_laws(const World& world, std::string_view source, const Request& req
 
 }  // namespace
 
-Run run(const World& world, std::string_view source, const Request& request) {
-  switch (request.compare) {
+struct RunInSlices::State {
+  State(const World& w, std::string_view s, const Request& r)
+      : world(refusing(s, asked(r),
+                       [&] {
+                         return r.elasticity && r.compare == Request::Compare::nothing
+                                    ? w.with_elasticity(*r.elasticity)
+                                    : w;
+                       })),
+        source(s),
+        request(r) {
+    if (request.compare == Request::Compare::nothing) {
+      resolving.emplace(refusing(source, asked(request), [&] {
+        return Resolving(world, request.method.value_or(world.scene().method));
+      }));
+    }
+  }
+  World world;  // a row of a sweep: every body at its elasticity
+  std::string source;
+  Request request;
+  std::optional<Resolving> resolving;  // one method; a comparison runs whole when finished
+};
+
+RunInSlices::RunInSlices(const World& world, std::string_view source, const Request& request)
+    : state_(std::make_unique<State>(world, source, request)) {}
+
+RunInSlices::~RunInSlices() = default;
+RunInSlices::RunInSlices(RunInSlices&&) noexcept = default;
+RunInSlices& RunInSlices::operator=(RunInSlices&&) noexcept = default;
+
+bool RunInSlices::advance(std::int64_t collisions) {
+  State& s = *state_;
+  return !s.resolving ||
+         refusing(s.source, asked(s.request), [&] { return s.resolving->advance(collisions); });
+}
+
+std::int64_t RunInSlices::collisions() const {
+  return state_->resolving ? state_->resolving->collisions() : 0;
+}
+
+std::int64_t RunInSlices::bound() const {
+  return state_->resolving ? state_->resolving->bound() : 0;
+}
+
+Run RunInSlices::finish() {
+  State& s = *state_;
+  switch (s.request.compare) {
     case Request::Compare::methods:
-      return compare_methods(world, source, request);
+      return compare_methods(s.world, s.source, s.request);
     case Request::Compare::laws:
-      return compare_laws(world, source, request);
+      return compare_laws(s.world, s.source, s.request);
     case Request::Compare::nothing:
       break;
   }
-  return resolve_once(world, source, request);
+  return told(refusing(s.source, asked(s.request), [&] { return s.resolving->finish(); }), s.source,
+              s.request);
+}
+
+Run run(const World& world, std::string_view source, const Request& request) {
+  RunInSlices slices(world, source, request);
+  slices.advance(std::numeric_limits<std::int64_t>::max());
+  return slices.finish();
 }
 
 }  // namespace impulse::scene

@@ -531,32 +531,92 @@ World World::with_elasticity(double value) const {
   return {std::move(scene), notes_, std::move(configuration)};
 }
 
-std::vector<Result> resolve(const World& world, std::span<const methods::Method> methods) {
-  // The paper's system, assembled and solved once for every method.
-  const methods::Paper paper = methods::paper(world.configuration(), world.scene().solver);
+namespace {
+
+// The paper's system, assembled and solved once for every method; a method that cannot take the
+// scene refused before any method runs (friction with several contacts, say).
+methods::Paper checked_paper(const World& world, std::span<const methods::Method> methods) {
+  methods::Paper paper = methods::paper(world.configuration(), world.scene().solver);
   for (const methods::Method method : methods) {
-    // Refused before any method runs (friction with several contacts, say).
     if (const std::string why = unsupported(world, method); !why.empty()) {
       refuse("contacts", why);
     }
   }
+  return paper;
+}
+
+// A method's outcome on the solved system; none can start from numbers beyond doubles.
+methods::Outcome outcome_of(const World& world, const methods::Paper& paper,
+                            const methods::Options& options, methods::Method method) {
+  methods::Outcome outcome;
+  outcome.method = method;
+  if (paper.solution.status == SolveStatus::success) {
+    outcome = methods::resolve(method, world.configuration(), paper, options);
+  } else {
+    outcome.finite = false;
+  }
+  return outcome;
+}
+
+}  // namespace
+
+std::vector<Result> resolve(const World& world, std::span<const methods::Method> methods) {
+  const methods::Paper paper = checked_paper(world, methods);
   const methods::Options options = world.options();
   std::vector<Result> results;
   for (const methods::Method method : methods) {
-    methods::Outcome outcome;
-    outcome.method = method;
-    if (paper.solution.status == SolveStatus::success) {
-      outcome = methods::resolve(method, world.configuration(), paper, options);
-    } else {
-      outcome.finite = false;  // numbers beyond doubles: no method can start
-    }
-    results.push_back(report(world, paper.solution, std::move(outcome)));
+    results.push_back(report(world, paper.solution, outcome_of(world, paper, options, method)));
   }
   return results;
 }
 
+struct Resolving::State {
+  State(const World& w, methods::Method m)
+      : world(w),
+        method(m),
+        paper(checked_paper(world, std::span<const methods::Method>(&method, 1))),
+        options(world.options()) {
+    if (method == methods::Method::serial && paper.solution.status == SolveStatus::success) {
+      serial.emplace(world.configuration(), paper, options);
+    }
+  }
+  const World& world;
+  methods::Method method;
+  methods::Paper paper;
+  methods::Options options;
+  std::optional<methods::SerialMethod> serial;  // the serial method's collisions, in slices
+};
+
+Resolving::Resolving(const World& world, methods::Method method)
+    : state_(std::make_unique<State>(world, method)) {}
+
+Resolving::~Resolving() = default;
+Resolving::Resolving(Resolving&&) noexcept = default;
+Resolving& Resolving::operator=(Resolving&&) noexcept = default;
+
+bool Resolving::advance(std::int64_t collisions) {
+  return !state_->serial || state_->serial->advance(collisions);
+}
+
+std::int64_t Resolving::collisions() const {
+  return state_->serial ? state_->serial->collisions() : 0;
+}
+
+std::int64_t Resolving::bound() const {
+  return state_->serial ? state_->serial->bound() : 0;
+}
+
+Result Resolving::finish() {
+  const State& s = *state_;
+  return report(s.world, s.paper.solution,
+                state_->serial ? state_->serial->finish()
+                               : outcome_of(s.world, s.paper, s.options, s.method));
+}
+
 Result resolve(const World& world, methods::Method method) {
-  return std::move(resolve(world, std::span<const methods::Method>(&method, 1)).front());
+  Resolving resolving(world, method);
+  resolving.advance(std::numeric_limits<std::int64_t>::max());
+  return resolving.finish();
 }
 
 Result resolve(const World& world) {

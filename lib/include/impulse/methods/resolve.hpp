@@ -6,7 +6,9 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -112,6 +114,57 @@ struct MethodRow {
 /// @return the outcome
 [[nodiscard]] Outcome serial(const multipoint::Configuration& configuration, const Paper& paper,
                              const Options& options);
+
+/// @brief The serial method in slices: its collisions (SerialCollisions) a bounded number at a
+/// time, then exactly the outcome that serial() or serial_exact() gives. The constructor picks
+/// as resolve() does for the serial method: the paper's formula at each collision on the paper's
+/// contacts, the exact rule with a contact law beyond them, and one contact with such a law by
+/// exact_single() (no collisions to run).
+///
+/// The configuration, the paper's system and the options must outlive this object.
+class SerialMethod {
+ public:
+  /// @brief Which rule the collisions follow.
+  enum class Kind {
+    paper,   ///< the paper's single-contact formula (serial())
+    exact,   ///< the exact rule with friction or another law (serial_exact())
+    single,  ///< one contact with a contact law: exact_single() when finished
+  };
+  /// @brief The serial method as resolve() picks it.
+  /// @param configuration the checked bodies and contacts
+  /// @param paper its system (for the residual of the summed impulses)
+  /// @param options μ, the law, the bound and the tolerance (checked: InvalidInput)
+  SerialMethod(const multipoint::Configuration& configuration, const Paper& paper,
+               const Options& options);
+  /// @brief The serial method by the rule @p kind.
+  /// @param configuration the checked bodies and contacts
+  /// @param paper its system
+  /// @param options μ, the law, the bound and the tolerance (checked: InvalidInput)
+  /// @param kind the rule
+  SerialMethod(const multipoint::Configuration& configuration, const Paper& paper,
+               const Options& options, Kind kind);
+  ~SerialMethod();
+  SerialMethod(SerialMethod&&) noexcept;
+  SerialMethod& operator=(SerialMethod&&) noexcept;
+
+  /// @brief Runs at most @p collisions more collisions.
+  /// @param collisions how many at most (at least 1)
+  /// @return whether the collisions have ended (then finish() gives the outcome)
+  bool advance(std::int64_t collisions);
+  /// @brief The collisions so far.
+  /// @return their number
+  [[nodiscard]] std::int64_t collisions() const;
+  /// @brief The bound on collisions that applies (0 for one contact with a contact law).
+  /// @return the bound
+  [[nodiscard]] std::int64_t bound() const;
+  /// @brief The outcome, once advance() has returned true.
+  /// @return serial()'s or serial_exact()'s outcome (exact_single()'s for one contact)
+  [[nodiscard]] Outcome finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 /// @brief One contact with friction and any restitution law, whatever the method: the exact
 /// single-contact rule (friction::collide), followed through the normal impulse, with its

@@ -6,6 +6,9 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -95,6 +98,56 @@ struct SerialResolution {
                                               Elasticity elasticity,
                                               std::span<const multipoint::Contact> contacts,
                                               const SerialOptions& options = {});
+
+/// @brief Serial collisions in slices: the collisions of resolve_serial(), a bounded number at a
+/// time, for a caller that must return within a frame (a page that redraws as a slider moves, an
+/// engine with a time budget per step). Advanced to their end in one slice or in many, they end
+/// in the same state, bit for bit: each collision depends only on the state the last one left.
+///
+/// The configuration must outlive this object.
+class SerialCollisions {
+ public:
+  /// @brief One collision at contact @p v: changes @p state (the bodies) and returns the normal
+  /// impulse, or nothing when a number overflowed.
+  using Collide =
+      std::function<std::optional<double>(Eigen::Index v, std::vector<multipoint::Body>& state)>;
+
+  /// @brief The configuration's serial collisions, each the paper's single-contact formula
+  /// (resolve_serial()'s).
+  /// @param configuration the bodies, elasticities and contacts
+  /// @param options the bound and the tolerance (checked: InvalidInput)
+  explicit SerialCollisions(const multipoint::Configuration& configuration,
+                            const SerialOptions& options = {});
+  /// @brief The configuration's serial collisions, each by @p collide (the exact rule with
+  /// friction, say).
+  /// @param configuration the bodies, elasticities and contacts
+  /// @param options the bound and the tolerance (checked: InvalidInput)
+  /// @param collide one collision
+  SerialCollisions(const multipoint::Configuration& configuration, const SerialOptions& options,
+                   Collide collide);
+  ~SerialCollisions();
+  SerialCollisions(SerialCollisions&&) noexcept;
+  SerialCollisions& operator=(SerialCollisions&&) noexcept;
+
+  /// @brief Runs at most @p collisions more collisions (fewer when they end first).
+  /// @param collisions how many at most (at least 1)
+  /// @return whether the collisions have ended (no contact approaches, the bound, an overflow)
+  bool advance(std::int64_t collisions);
+  /// @brief Whether the collisions have ended.
+  /// @return true once advance() has returned true
+  [[nodiscard]] bool ended() const;
+  /// @brief The collisions so far.
+  /// @return their number
+  [[nodiscard]] std::int64_t collisions() const;
+  /// @brief The impulses, the bodies and the diagnostics so far (the passes counted once the
+  /// collisions have ended).
+  /// @return the resolution
+  [[nodiscard]] const SerialResolution& resolution() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 /// @brief Serial collisions of a configuration checked when it was made.
 /// @param configuration the bodies, elasticities and contacts

@@ -7,6 +7,8 @@
 /// from what it returns.
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -60,5 +62,40 @@ struct Run {
 /// @param request what to resolve
 /// @return the results, the warnings and why a method did not finish
 [[nodiscard]] Run run(const World& world, std::string_view source, const Request& request = {});
+
+/// @brief run() in slices, for a page that must draw every frame: a request for one method
+/// runs its serial collisions a bounded number at a time (scene::Resolving); anything else
+/// (another method, a comparison) runs whole when finished. Advanced in one slice or in many,
+/// finish() gives exactly what run() gives, and the same refusals (InvalidInput, from the
+/// constructor, advance() or finish()).
+class RunInSlices {
+ public:
+  /// @brief Starts a run (the world is copied).
+  /// @param world the checked scene
+  /// @param source how the messages name the scene
+  /// @param request what to resolve
+  RunInSlices(const World& world, std::string_view source, const Request& request = {});
+  ~RunInSlices();
+  RunInSlices(RunInSlices&&) noexcept;
+  RunInSlices& operator=(RunInSlices&&) noexcept;
+
+  /// @brief Runs at most @p collisions more serial collisions.
+  /// @param collisions how many at most (at least 1)
+  /// @return whether the run has ended (then finish() gives it)
+  bool advance(std::int64_t collisions);
+  /// @brief The serial collisions so far (0 for anything else).
+  /// @return their number
+  [[nodiscard]] std::int64_t collisions() const;
+  /// @brief The bound on serial collisions (0 for anything else).
+  /// @return the bound
+  [[nodiscard]] std::int64_t bound() const;
+  /// @brief The run, once advance() has returned true.
+  /// @return run()'s answer
+  [[nodiscard]] Run finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace impulse::scene

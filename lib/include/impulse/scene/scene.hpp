@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -249,6 +251,41 @@ struct Result {
 /// @param method the method (the scene's own: resolve(const World&))
 /// @return the report
 [[nodiscard]] Result resolve(const World& world, methods::Method method);
+
+/// @brief resolve() in slices, for a caller that must return within a frame: the paper's system
+/// assembled and solved (and a method that cannot take the scene refused) at once, the serial
+/// method's collisions a bounded number at a time (methods::SerialMethod), any other method when
+/// finished. Advanced in one slice or in many, finish() gives exactly resolve()'s report.
+///
+/// The world must outlive this object.
+class Resolving {
+ public:
+  /// @brief Starts resolving @p world by @p method (InvalidInput as resolve()).
+  /// @param world the checked scene
+  /// @param method the method
+  Resolving(const World& world, methods::Method method);
+  ~Resolving();
+  Resolving(Resolving&&) noexcept;
+  Resolving& operator=(Resolving&&) noexcept;
+
+  /// @brief Runs at most @p collisions more serial collisions.
+  /// @param collisions how many at most (at least 1)
+  /// @return whether the method has ended (always, for a method other than serial)
+  bool advance(std::int64_t collisions);
+  /// @brief The serial collisions so far (0 for another method).
+  /// @return their number
+  [[nodiscard]] std::int64_t collisions() const;
+  /// @brief The bound on serial collisions (0 for another method).
+  /// @return the bound
+  [[nodiscard]] std::int64_t bound() const;
+  /// @brief The report, once advance() has returned true.
+  /// @return resolve()'s report
+  [[nodiscard]] Result finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 /// @brief resolve() with the scene's own method (its `solver.method`).
 /// @param world the checked scene
