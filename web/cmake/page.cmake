@@ -24,10 +24,11 @@ if(IMPULSELAB_BUILD_TESTS AND IMPULSELAB_BUILD_DOCS AND TARGET impulselab)
   find_program(IMPULSELAB_NODE node REQUIRED)
   # page_test.mjs: the page and its contract; bench_test.mjs: the page as a lab bench (the
   # motion, building on the canvas, side by side and the sweep, what readers found wrong; with
-  # screenshots of the editor, the comparison and the sweep).
+  # screenshots of the editor, the comparison and the sweep; serial collisions a slice per frame).
   foreach(test IN ITEMS page_test:presets page_test:scenes page_test:malformed page_test:interaction
                         page_test:links page_test:friction
-                        bench_test:motion bench_test:editor bench_test:compare bench_test:defects)
+                        bench_test:motion bench_test:editor bench_test:compare bench_test:defects
+                        bench_test:slices)
     string(REPLACE ":" ";" parts "${test}")
     list(GET parts 0 program)
     list(GET parts 1 group)

@@ -94,6 +94,13 @@
     // The refusal again over the canvas, in the same words, with the way to its field.
     const refusal = $('refusal-words');
     refusal.textContent = '';
+    if (out.pending) {
+      // Serial collisions run a slice per frame: how far they are, until the answer.
+      const {collisions, bound} = out.pending;
+      refusal.append(`Serial collisions: ${collide.countText(collisions)} so far, of at most ` +
+                     `${collide.countText(bound)}; the result follows when they end` +
+                     (state.valid ? ' (the last scene solved stays, dimmed).' : '.'));
+    }
     if (out.error) {
       const place = collide.placeOf(out.error);
       refusal.append(state.valid ? 'Refused (the last scene solved stays, dimmed): ' : 'Refused: ');

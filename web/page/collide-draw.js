@@ -135,8 +135,9 @@
       context.fillStyle = '#5a6372';
       context.font = `${15 * dpr}px system-ui, sans-serif`;
       context.textAlign = 'center';
-      context.fillText(state.out && state.out.error ? 'The scene was refused: see the message.' : 'No scene.',
-                       canvas.width / 2, canvas.height / 2);
+      const words = state.out && state.out.pending ? 'Serial collisions are running: see how far above.'
+                    : state.out && state.out.error ? 'The scene was refused: see the message.' : 'No scene.';
+      context.fillText(words, canvas.width / 2, canvas.height / 2);
       return;
     }
     const refused = !state.result;

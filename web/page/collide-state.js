@@ -50,10 +50,29 @@
   };
   collide.state = state;
 
-  function solve(input) {
-    const started = performance.now();
-    const out = state.module.solveScene(input);
-    collide.phases.library = performance.now() - started;
+  // Serial collisions run in slices (Module.solveBegin, solveAdvance), so that every frame is
+  // drawn: each slice runs as many collisions as the last ones ran in sliceMs, and the page
+  // shows how far they are until they end (then the answer is solveScene's, exactly).
+  const sliceMs = 8;
+  const slicing = {perMs: 2000, collisions: 0};
+
+  function sliceCollisions() {
+    return Math.max(100, Math.round(slicing.perMs * sliceMs));
+  }
+
+  // What the library answered, as the page keeps it; @p ms the time it took, @p before the
+  // collisions run before it (to learn how many run in a millisecond).
+  function answered(out, ms, before) {
+    if (out.pending) {
+      const ran = out.collisions - before;
+      if (ran > 0 && ms > 0.5) {
+        slicing.perMs = 0.5 * slicing.perMs + 0.5 * (ran / ms);
+      }
+      slicing.collisions = out.collisions;
+      return {pending: {collisions: out.collisions, bound: out.bound}, error: '', warnings: [],
+              resultText: '', result: null, details: null};
+    }
+    slicing.collisions = 0;
     return collide.timed('parse', () => ({
       error: out.error,
       warnings: out.warnings,
@@ -61,6 +80,13 @@
       result: out.result ? JSON.parse(out.result) : null,
       details: out.details ? JSON.parse(out.details) : null,
     }));
+  }
+
+  function solve(input) {
+    const started = performance.now();
+    const out = state.module.solveBegin(input, sliceCollisions());
+    collide.phases.library = performance.now() - started;
+    return answered(out, collide.phases.library, 0);
   }
 
   function sceneShaped(value) {
@@ -103,6 +129,16 @@
     const solveStart = performance.now();
     state.out = solve(state.bytes === null ? state.text : state.bytes);
     const solveEnd = performance.now();
+    present({options, started, since: options.event ? options.event.timeStamp : started,
+             solve: solveEnd - solveStart, longest: 0});
+  };
+
+  // Draws what the library answered (state.out): at once, or, while serial collisions run, how
+  // far they are, the next slice run just after this frame. @p update: the options of the change,
+  // when it began, the event's time, the library's time so far and the longest piece of work.
+  function present(update) {
+    const {options, started, since} = update;
+    const pieceStart = update.pieceStart === undefined ? since : update.pieceStart;
     state.result = state.out.result;
     state.details = state.out.details;
     const signature = signatureOf(state.scene);
@@ -134,7 +170,30 @@
     const later = collide.render({rebuild});
     collide.timed('address', () => writeFragment(Boolean(options.immediate)));
     const rendered = performance.now();
-    const since = options.event ? options.event.timeStamp : started;
+    update.longest = Math.max(update.longest, rendered - pieceStart);
+    if (update.first === undefined) {
+      update.first = rendered - since;  // the key to the first thing drawn: a result or how far
+    }
+    if (state.out.pending) {
+      // Not ready (the contract's data-ready) until the result or the refusal is shown.
+      document.body.dataset.ready = 'false';
+      const version = state.version;
+      requestAnimationFrame(() => setTimeout(() => {
+        if (version !== state.version) {
+          return;  // a newer scene replaced this one (and the library's slices of it)
+        }
+        const before = slicing.collisions;
+        const t0 = performance.now();
+        collide.phases = {...collide.phases};
+        const out = state.module.solveAdvance(sliceCollisions());
+        const ms = performance.now() - t0;
+        update.solve += ms;
+        collide.phases.library = (collide.phases.library || 0) + ms;
+        state.out = answered(out, ms, before);
+        present({...update, pieceStart: t0, options: {...options, relayout: false}});
+      }, 0));
+      return;
+    }
     collide.phases.event = started - since;  // from the key to this update's start
     const phases = collide.phases;
     // The update ends when the panels off the screen are drawn too: then the page says so
@@ -155,8 +214,10 @@
         const channel = new MessageChannel();
         channel.port1.onmessage = () => {
           window.impulselabTiming = {
-            solve_ms: solveEnd - solveStart,
+            solve_ms: update.solve,
             update_ms: rendered - since,
+            first_ms: update.first,       // to the first thing drawn (how far serial collisions are)
+            longest_ms: update.longest,   // the longest piece of work between (one frame's)
             all_ms: done - since,
             frame_ms: performance.now() - since,
             contacts: state.result ? state.result.contacts.length : 0,

@@ -60,6 +60,9 @@
     return sorted.length ? sorted[Math.floor(sorted.length / 2)] : 1;
   };
 
+  // A count as the page writes it: 12,345.
+  collide.countText = (n) => Number(n).toLocaleString('en-US');
+
   // Where the time of one update goes (web/test/measure.mjs prints it by part).
   collide.phases = {};
   collide.timed = (name, work) => {

@@ -22,9 +22,11 @@
   collide.render = ({rebuild}) => {
     const out = state.out;
     const refused = Boolean(out && out.error);
+    const pending = Boolean(out && out.pending);  // serial collisions still running
     $('scene-error').textContent = out ? out.error : '';
-    $('refusal').hidden = !refused;
-    document.body.classList.toggle('refused', refused && Boolean(state.valid));
+    $('refusal').hidden = !refused && !pending;
+    $('refusal').classList.toggle('pending', pending);
+    document.body.classList.toggle('refused', (refused || pending) && Boolean(state.valid));
     $('warnings').innerHTML = out ? out.warnings.map((w) => `<li>${escapeHtml(w)}</li>`).join('') : '';
     // The library's warning that the collision gained energy, again beside the energy bars.
     const gained = out ? out.warnings.filter((w) => w.startsWith('energy gained')) : [];
@@ -42,10 +44,12 @@
     collide.timed('messages', collide.showMessages);
     collide.syncSelection();
     collide.syncHistory();
-    const later = !refused || !state.valid ? collide.renderResults() : null;
+    const later = !(refused || pending) || !state.valid ? collide.renderResults() : null;
     collide.syncSerial();
     collide.timed('canvas', () => collide.setTime(state.t));
-    collide.refreshSideViews();
+    if (!pending) {
+      collide.refreshSideViews();  // once the serial collisions have ended
+    }
     return later;
   };
 

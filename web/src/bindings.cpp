@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <exception>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -75,38 +76,94 @@ val strings(const std::vector<std::string>& lines) {
   return array;
 }
 
-// Solves the scene whose text is @p text (a string or, for bytes that are not UTF-8, a
-// Uint8Array) and returns {result, details, warnings, error}: `result` the text that
+// The page's answer for a scene: {result, details, warnings, error}, `result` the text that
 // `impulselab solve --format json` prints, or "" when the command line would print nothing;
-// `error` the command line's message without "impulselab: error: <file>: ", or "".
-val solve_scene(const std::string& text) {
+// `error` the command line's message without "impulselab: error: <file>: ", or "". @p work
+// gives the command line's run and report, or nothing while serial collisions are still running
+// (then {pending: true, collisions, bound}).
+template <typename Work>
+val answer(Work&& work) {
   val out = val::object();
   std::string result_text;
   std::string details_text;
   std::vector<std::string> warnings;
   std::string error;
   try {
-    // `impulselab solve --format json`'s path: the world read and checked, resolved once, and the
-    // library's own report, refusals and warnings.
-    const scene::JsonRun solved = scene::solve_to_json(text, source);
-    if (!solved.run.unfinished.empty()) {
-      throw impulse::InvalidInput(solved.run.unfinished);  // the command line's exit 1
+    const std::optional<scene::JsonRun> solved = work();
+    if (!solved) {
+      return val::null();
     }
-    for (const std::string& line : solved.run.warnings) {
+    if (!solved->run.unfinished.empty()) {
+      throw impulse::InvalidInput(solved->run.unfinished);  // the command line's exit 1
+    }
+    for (const std::string& line : solved->run.warnings) {
       warnings.push_back(without_source(line));
     }
-    result_text = solved.report;
-    details_text = details_json(solved.run.results.front()).dump();
+    result_text = solved->report;
+    details_text = details_json(solved->run.results.front()).dump();
   } catch (const impulse::InvalidInput& e) {
     error = without_source(e.what());
   } catch (const std::exception& e) {
     error = std::string("internal error (please report it): ") + e.what();
   }
+  out.set("pending", false);
   out.set("result", result_text);
   out.set("details", details_text);
   out.set("warnings", strings(warnings));
   out.set("error", error);
   return out;
+}
+
+// Solves the scene whose text is @p text (a string or, for bytes that are not UTF-8, a
+// Uint8Array) the way `impulselab solve --format json` does (scene::solve_to_json: the world
+// read and checked, resolved once, the library's own report, refusals and warnings): answer().
+val solve_scene(const std::string& text) {
+  return answer([&] { return std::optional<scene::JsonRun>(scene::solve_to_json(text, source)); });
+}
+
+// The scene being solved in slices (one at a time: a new one replaces it).
+std::optional<scene::RunInSlices> in_progress;
+
+// Advances the scene in progress by at most @p collisions serial collisions: its answer when
+// they have ended (or it was refused), else {pending: true, collisions, bound}.
+val solve_advance(double collisions) {
+  if (!in_progress) {
+    val out = val::object();
+    out.set("pending", false);
+    out.set("error", std::string("internal error (please report it): no scene is being solved"));
+    return out;
+  }
+  val out = answer([&]() -> std::optional<scene::JsonRun> {
+    if (!in_progress->advance(static_cast<std::int64_t>(collisions))) {
+      return std::nullopt;
+    }
+    scene::Run run = in_progress->finish();
+    std::string report = scene::report_json(run, source);
+    return scene::JsonRun{std::move(run), std::move(report)};
+  });
+  if (out.isNull()) {
+    out = val::object();
+    out.set("pending", true);
+    out.set("collisions", static_cast<double>(in_progress->collisions()));
+    out.set("bound", static_cast<double>(in_progress->bound()));
+    return out;
+  }
+  in_progress.reset();
+  return out;
+}
+
+// solveScene in slices, for a page that must draw every frame: the scene read and checked, and
+// at most @p collisions of its serial collisions run (any other method runs whole); then
+// solveAdvance until the answer is not pending. Ended, the answer is exactly solveScene's.
+val solve_begin(const std::string& text, double collisions) {
+  in_progress.reset();
+  bool started = false;
+  val refused = answer([&]() -> std::optional<scene::JsonRun> {
+    in_progress.emplace(scene::parse_world(text, source), source);
+    started = true;
+    return std::nullopt;
+  });
+  return started ? solve_advance(collisions) : refused;
 }
 
 // `impulselab solve --compare --format json` (@p what "methods", or "") or `--compare
@@ -222,6 +279,8 @@ val serial_step(const std::string& text, int k) {
 
 EMSCRIPTEN_BINDINGS(impulselab) {
   emscripten::function("solveScene", &solve_scene);
+  emscripten::function("solveBegin", &solve_begin);
+  emscripten::function("solveAdvance", &solve_advance);
   emscripten::function("compareScene", &compare_scene);
   emscripten::function("sweepScene", &sweep_scene);
   emscripten::function("serialStep", &serial_step);

@@ -21,6 +21,10 @@
 //             not cover each other at 390 px; handles taken 20 px away; a rod kept a rod when its
 //             mass changes; the canvas and the summary in view while a field is edited on a
 //             phone; the hint on rough contacts and the equations' list as they should read
+//   slices    serial collisions too many for one frame (Galperin's billiard, 314,159 of them) run
+//             a slice per frame: the page says how far they are while they run, then shows the
+//             command line's answer; two keys in a row end with the last scene's answer; beyond
+//             their bound, the command line's refusal
 //
 // usage: node bench_test.mjs GROUP --site DIR --cli PROGRAM --source DIR --screenshots DIR
 import {mkdirSync, readFileSync} from 'node:fs';
@@ -436,6 +440,60 @@ const groups = {
       await p.screenshot(join(screenshots, `sweep-${suffix}.png`), writeFile);
     }
     checkClean(p, 'compare');
+  },
+
+  async slices(browser) {
+    // A light ball between a wall and a heavy one closing on it: serial collisions go back and
+    // forth, π's first digits of them (Galperin): 314,159 for a mass ratio of 10^10, which the
+    // page cannot run in one frame; a bound of 400,000 lets them end.
+    const billiard = (ratio, bound) => ({
+      dimension: 1, elasticity: 2,
+      bodies: [{name: 'wall', kind: 'static'}, {name: 'light', kind: 'material', mass: 1, velocity: 0},
+               {name: 'heavy', kind: 'material', mass: ratio, velocity: -1}],
+      contacts: [{bumper: 'wall', wedge: 'light', normal: 1}, {bumper: 'light', wedge: 'heavy', normal: 1}],
+      solver: {method: 'serial', ...(bound ? {max_collisions: bound} : {})},
+    });
+    const line = (state) => commandLineOnText(sceneOfHash(state.hash));
+    const p = await open(browser, hashOf(billiard(1e10, 400000)));
+    const opened = await pageState(p);
+    checkAgainstCommandLine(opened, line(opened), 'the billiard opened: the command line\'s answer');
+    check(JSON.parse(opened.result || '{}').impulses !== undefined, 'the billiard ends within its bound');
+
+    // What the page says while they run: every text of the refusal's place while it is pending.
+    await p.evaluate(`window.slicesSeen = [];
+      new MutationObserver(() => {
+        if (document.getElementById('refusal').classList.contains('pending')) {
+          window.slicesSeen.push(document.getElementById('refusal-words').textContent);
+        }
+      }).observe(document.getElementById('refusal-words'), {childList: true, subtree: true, characterData: true})`);
+    // The light ball's mass a step down (10^-0.01): a ratio a little above 10^10, as many collisions.
+    const after = await change(p, () => pressOn(p, 'body-1-mass-slider', 'ArrowLeft'));
+    const seen = await p.evaluate('window.slicesSeen');
+    const words = /^Serial collisions: [0-9,]+ so far, of at most 400,000; the result follows when they end \(the last scene solved stays, dimmed\)\.$/;
+    check(seen.length >= 1 && seen.every((text) => words.test(text)), 'while they run, the page says how far they are',
+          JSON.stringify(seen.slice(0, 3)));
+    const counts = seen.map((text) => Number(text.match(/[0-9,]+/)[0].replace(/,/g, '')));
+    check(counts.every((n, k) => k === 0 || n > counts[k - 1]), 'and how far grows from frame to frame', counts.join(', '));
+    checkAgainstCommandLine(after, line(after), 'after a key: the command line\'s answer for the new scene');
+    check(await p.evaluate('!document.getElementById("refusal").classList.contains("pending") && ' +
+                           '!document.body.classList.contains("refused")'), 'then nothing is dimmed');
+    const timing = await p.evaluate('window.impulselabTiming');
+    check(timing && timing.first_ms < timing.update_ms, 'the first frame drawn before the result', JSON.stringify(timing));
+
+    // Two keys before the first scene's collisions end: the answer is the second scene's.
+    await p.evaluate('document.getElementById("body-1-mass-slider").focus()');
+    await p.press('ArrowLeft');
+    await p.press('ArrowLeft');
+    await p.waitFor('!document.getElementById("refusal").classList.contains("pending")');
+    await new Promise((r) => setTimeout(r, 200));
+    const twice = await pageState(p);
+    checkAgainstCommandLine(twice, line(twice), 'two keys in a row: the answer for the scene the address holds');
+
+    // Beyond their bound (the default, 1,000 per contact): refused in the command line's words.
+    await navigate(p, hashOf(billiard(1e6)));
+    const bounded = await pageState(p);
+    checkAgainstCommandLine(bounded, line(bounded), 'beyond the bound: the command line\'s refusal');
+    checkClean(p, 'slices');
   },
 
   async defects(browser) {

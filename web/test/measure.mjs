@@ -6,7 +6,9 @@
 //   control     a key pressed on a mass slider to the result redrawn: from the key event to the
 //               result drawn on the screen (solve, canvas, summary, the panels in view), to
 //               everything drawn (the panels out of view too, just after) and to the frame that
-//               shows it painted (style, layout and paint done),
+//               shows it painted (style, layout and paint done); serial collisions that run over
+//               several frames (a slice each): also the key to the first frame drawn and the
+//               longest piece of work between the key and the result,
 //               for scenes of 1 to 100 contacts and each method
 //   animation   the 5-ball cradle playing: frames per second and the cost of drawing one frame
 //
@@ -134,6 +136,8 @@ try {
     const all = [];
     const frame = [];
     const solve = [];
+    const first = [];
+    const longest = [];
     const versusUpdate = [];
     const phases = new Map();
     for (let k = 0; k < repeat; ++k) {
@@ -142,6 +146,8 @@ try {
       all.push(t.all_ms === undefined ? t.update_ms : t.all_ms);
       frame.push(t.frame_ms);
       solve.push(t.solve_ms);
+      first.push(t.first_ms === undefined ? t.update_ms : t.first_ms);
+      longest.push(t.longest_ms === undefined ? t.update_ms : t.longest_ms);
       for (const [name, ms] of Object.entries(t.phases || {})) {
         phases.set(name, [...(phases.get(name) || []), ms]);
       }
@@ -153,6 +159,10 @@ try {
     show(`control: ${what}: key to everything drawn`, stats(all));
     show(`control: ${what}: key to the frame painted`, stats(frame));
     show(`control: ${what}: of which the library`, stats(solve));
+    // Serial collisions run a slice per frame: the first frame shows how far they are, and no
+    // piece of the page's work between the key and the result is longer than this.
+    show(`control: ${what}: key to the first frame drawn`, stats(first));
+    show(`control: ${what}: the longest piece of work (one frame's)`, stats(longest));
     console.log(`  medians by part (ms): ${[...phases].map(([name, v]) => `${name} ${stats(v).median.toFixed(1)}`).join(', ')}`);
     if (other) {
       show(`control: ${what}: key to result drawn, the other page`, stats(versusUpdate));

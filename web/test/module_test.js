@@ -126,6 +126,46 @@ check('serial collisions beyond their bound: the command line\'s message, no res
   assert.equal(out.result, '');
 });
 
+check('a scene solved in slices gives solveScene\'s answer, whatever the slice', (m) => {
+  // A light ball between a wall and a heavy one (10^6 times its mass) closing on it: serial
+  // collisions go back and forth (3141 of them: Galperin's billiard), so they stop at the bound of
+  // 2,000 (1,000 per contact), unfinished, as with a bound of 50. Each sliced run advances a slice at a time and ends with solveScene's answer.
+  const scene = (bound) => JSON.stringify({
+    dimension: 1, elasticity: 2,
+    bodies: [{name: 'wall', kind: 'static'}, {name: 'light', kind: 'material', mass: 1, velocity: 0},
+             {name: 'heavy', kind: 'material', mass: 1e6, velocity: -1}],
+    contacts: [{bumper: 'wall', wedge: 'light', normal: 1}, {bumper: 'light', wedge: 'heavy', normal: 1}],
+    solver: {method: 'serial', ...(bound ? {max_collisions: bound} : {})},
+  });
+  for (const text of [scene(0), scene(50), JSON.stringify(example)]) {
+    const whole = m.solveScene(text);
+    for (const slice of [1, 7, 5000]) {
+      let out = m.solveBegin(text, slice);
+      let slices = 1;
+      while (out.pending) {
+        assert.equal(out.collisions, slices * slice);  // a slice runs as many as it is given
+        assert.ok(out.collisions < out.bound);
+        out = m.solveAdvance(slice);
+        slices += 1;
+      }
+      assert.deepEqual([out.result, out.details, out.warnings, out.error],
+                       [whole.result, whole.details, whole.warnings, whole.error]);
+      if (slice === 1 && text === scene(50)) {
+        assert.equal(slices, 50);  // 50 collisions, the end seen with the last one
+      }
+    }
+  }
+  // A refusal comes at once, in solveScene's words; a new scene drops the one in progress.
+  const bad = structuredClone(example);
+  bad.bodies[0].mass = 0;
+  assert.equal(m.solveBegin(JSON.stringify(bad), 10).error, m.solveScene(JSON.stringify(bad)).error);
+  assert.equal(m.solveBegin(scene(0), 10).pending, true);
+  const answer = m.solveBegin(JSON.stringify(example), 10);
+  assert.equal(answer.pending, false);
+  assert.equal(answer.result, m.solveScene(JSON.stringify(example)).result);
+  assert.match(m.solveAdvance(10).error, /no scene is being solved/);
+});
+
 check('the three methods side by side: what solve --compare --format json prints', (m) => {
   // One contact: every method gives the example's Fdt = 1.5 (the paper's system has one row; a
   // single collision is that row; the impulse pushes, so complementarity keeps it).

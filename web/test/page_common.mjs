@@ -32,7 +32,8 @@ export const scratch = mkdtempSync(join(tmpdir(), 'impulselab-web-test-'));
 // What `impulselab solve FILE --format json` gives (or another verb with other options): its output, its message without
 // "impulselab: error: FILE: ", its warnings without "impulselab: warning: " and "FILE: ".
 export function commandLine(file, options = ['--format', 'json'], verb = 'solve') {
-  const run = spawnSync(cli, [verb, file, ...options], {encoding: 'utf8'});
+  // (A report may pass spawnSync's 1 MiB default: serial collisions list every one.)
+  const run = spawnSync(cli, [verb, file, ...options], {encoding: 'utf8', maxBuffer: 256 << 20});
   const lines = run.stderr.split('\n').filter((l) => l !== '');
   const strip = (line, prefix) => {
     let text = line.slice(prefix.length);
