@@ -143,9 +143,15 @@ class SerialMethod {
   /// @param kind the rule
   SerialMethod(const multipoint::Configuration& configuration, const Paper& paper,
                const Options& options, Kind kind);
+  /// @brief Frees its state.
   ~SerialMethod();
-  SerialMethod(SerialMethod&&) noexcept;
-  SerialMethod& operator=(SerialMethod&&) noexcept;
+  /// @brief Takes over another method in slices (which is left without state).
+  /// @param other the one taken over
+  SerialMethod(SerialMethod&& other) noexcept;
+  /// @brief Takes over another method in slices (which is left without state).
+  /// @param other the one taken over
+  /// @return this one
+  SerialMethod& operator=(SerialMethod&& other) noexcept;
 
   /// @brief Runs at most @p collisions more collisions.
   /// @param collisions how many at most (at least 1)

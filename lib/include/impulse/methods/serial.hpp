@@ -125,9 +125,15 @@ class SerialCollisions {
   /// @param collide one collision
   SerialCollisions(const multipoint::Configuration& configuration, const SerialOptions& options,
                    Collide collide);
+  /// @brief Frees its state.
   ~SerialCollisions();
-  SerialCollisions(SerialCollisions&&) noexcept;
-  SerialCollisions& operator=(SerialCollisions&&) noexcept;
+  /// @brief Takes over another collisions (which is left without state).
+  /// @param other the one taken over
+  SerialCollisions(SerialCollisions&& other) noexcept;
+  /// @brief Takes over another collisions (which is left without state).
+  /// @param other the one taken over
+  /// @return this one
+  SerialCollisions& operator=(SerialCollisions&& other) noexcept;
 
   /// @brief Runs at most @p collisions more collisions (fewer when they end first).
   /// @param collisions how many at most (at least 1)

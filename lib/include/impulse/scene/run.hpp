@@ -75,9 +75,15 @@ class RunInSlices {
   /// @param source how the messages name the scene
   /// @param request what to resolve
   RunInSlices(const World& world, std::string_view source, const Request& request = {});
+  /// @brief Frees its state.
   ~RunInSlices();
-  RunInSlices(RunInSlices&&) noexcept;
-  RunInSlices& operator=(RunInSlices&&) noexcept;
+  /// @brief Takes over another run in progress (which is left without state).
+  /// @param other the one taken over
+  RunInSlices(RunInSlices&& other) noexcept;
+  /// @brief Takes over another run in progress (which is left without state).
+  /// @param other the one taken over
+  /// @return this one
+  RunInSlices& operator=(RunInSlices&& other) noexcept;
 
   /// @brief Runs at most @p collisions more serial collisions.
   /// @param collisions how many at most (at least 1)

@@ -264,9 +264,15 @@ class Resolving {
   /// @param world the checked scene
   /// @param method the method
   Resolving(const World& world, methods::Method method);
+  /// @brief Frees its state.
   ~Resolving();
-  Resolving(Resolving&&) noexcept;
-  Resolving& operator=(Resolving&&) noexcept;
+  /// @brief Takes over another resolution in progress (which is left without state).
+  /// @param other the one taken over
+  Resolving(Resolving&& other) noexcept;
+  /// @brief Takes over another resolution in progress (which is left without state).
+  /// @param other the one taken over
+  /// @return this one
+  Resolving& operator=(Resolving&& other) noexcept;
 
   /// @brief Runs at most @p collisions more serial collisions.
   /// @param collisions how many at most (at least 1)
