@@ -95,11 +95,7 @@
     const refusal = $('refusal-words');
     refusal.textContent = '';
     if (out.pending) {
-      // Serial collisions run a slice per frame: how far they are, until the answer.
-      const {collisions, bound} = out.pending;
-      refusal.append(`Serial collisions: ${collide.countText(collisions)} so far, of at most ` +
-                     `${collide.countText(bound)}; the result follows when they end` +
-                     (state.valid ? ' (the last scene solved stays, dimmed).' : '.'));
+      refusal.append(progressWords(out.pending));
     }
     if (out.error) {
       const place = collide.placeOf(out.error);
@@ -116,6 +112,20 @@
       } else {
         refusal.append(place.words);
       }
+    }
+  };
+
+  // Serial collisions run a slice per frame: how far they are, until the answer.
+  function progressWords({collisions, bound}) {
+    return `Serial collisions: ${collide.countText(collisions)} so far, of at most ` +
+           `${collide.countText(bound)}; the result follows when they end` +
+           (state.valid ? ' (the last scene solved stays, dimmed).' : '.');
+  }
+
+  // Between the slices, only the words of how far change.
+  collide.showProgress = () => {
+    if (state.out && state.out.pending) {
+      $('refusal-words').textContent = progressWords(state.out.pending);
     }
   };
 

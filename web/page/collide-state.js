@@ -51,13 +51,15 @@
   collide.state = state;
 
   // Serial collisions run in slices (Module.solveBegin, solveAdvance), so that every frame is
-  // drawn: each slice runs as many collisions as the last ones ran in sliceMs, and the page
+  // drawn: each slice runs as many collisions as the last ones ran in sliceMs (the rest of a
+  // 60 Hz frame is the browser's), and the page
   // shows how far they are until they end (then the answer is solveScene's, exactly).
-  const sliceMs = 8;
+  const sliceMs = 12;
+  const firstSliceMs = 6;  // the first frame also redraws the page (about 5 ms at 100 contacts)
   const slicing = {perMs: 2000, collisions: 0};
 
-  function sliceCollisions() {
-    return Math.max(100, Math.round(slicing.perMs * sliceMs));
+  function sliceCollisions(ms = sliceMs) {
+    return Math.max(100, Math.round(slicing.perMs * ms));
   }
 
   // What the library answered, as the page keeps it; @p ms the time it took, @p before the
@@ -84,7 +86,7 @@
 
   function solve(input) {
     const started = performance.now();
-    const out = state.module.solveBegin(input, sliceCollisions());
+    const out = state.module.solveBegin(input, sliceCollisions(firstSliceMs));
     collide.phases.library = performance.now() - started;
     return answered(out, collide.phases.library, 0);
   }
@@ -177,21 +179,7 @@
     if (state.out.pending) {
       // Not ready (the contract's data-ready) until the result or the refusal is shown.
       document.body.dataset.ready = 'false';
-      const version = state.version;
-      requestAnimationFrame(() => setTimeout(() => {
-        if (version !== state.version) {
-          return;  // a newer scene replaced this one (and the library's slices of it)
-        }
-        const before = slicing.collisions;
-        const t0 = performance.now();
-        collide.phases = {...collide.phases};
-        const out = state.module.solveAdvance(sliceCollisions());
-        const ms = performance.now() - t0;
-        update.solve += ms;
-        collide.phases.library = (collide.phases.library || 0) + ms;
-        state.out = answered(out, ms, before);
-        present({...update, pieceStart: t0, options: {...options, relayout: false}});
-      }, 0));
+      continueSolving(update);
       return;
     }
     collide.phases.event = started - since;  // from the key to this update's start
@@ -236,6 +224,31 @@
       finish();
     }
   };
+
+  // The next slice of serial collisions, just after the frame that shows how far they are: while
+  // they run, only the words of how far change; their end is drawn in full (present).
+  function continueSolving(update) {
+    const version = state.version;
+    requestAnimationFrame(() => setTimeout(() => {
+      if (version !== state.version) {
+        return;  // a newer scene replaced this one (and the library's slices of it)
+      }
+      const before = slicing.collisions;
+      const t0 = performance.now();
+      const out = state.module.solveAdvance(sliceCollisions());
+      const ms = performance.now() - t0;
+      update.solve += ms;
+      collide.phases.library = (collide.phases.library || 0) + ms;
+      state.out = answered(out, ms, before);
+      if (state.out.pending) {
+        collide.showProgress();
+        update.longest = Math.max(update.longest, performance.now() - t0);
+        continueSolving(update);
+      } else {
+        present({...update, pieceStart: t0, options: {...update.options, relayout: false}});
+      }
+    }, 0));
+  }
 
   // The scene changed through a control: @p change edits the scene object. @p options.event: the
   // input event; @p options.keepView: the view stays where it is (a drag); @p options.stream: a
