@@ -161,28 +161,35 @@ struct SerialCollisions::State {
     }
   }
 
-  // One collision, or the end: returns whether the collisions have ended.
-  bool step() {
+  // Whether the collisions end before the next one: no contact approaches, or the bound is
+  // reached (what still approaches recorded). Otherwise the next contact is in `next`.
+  bool ends_here() {
     SerialDiagnostics& d = r.diagnostics;
-    const std::optional<std::pair<Index, double>> next = fastest->top();
+    next = fastest->top();
     if (!next) {
-      return true;  // no contact approaches
-    }
-    const auto [v, approach] = *next;
-    if (static_cast<std::int64_t>(d.order.size()) >= d.max_collisions) {
-      d.status = SerialStatus::collision_limit;
-      d.still_approaching = v;
-      d.approach_left = approach;
       return true;
     }
+    if (static_cast<std::int64_t>(d.order.size()) >= d.max_collisions) {
+      d.status = SerialStatus::collision_limit;
+      d.still_approaching = next->first;
+      d.approach_left = next->second;
+      return true;
+    }
+    return false;
+  }
+
+  // The next contact collides and its two bodies' contacts are measured again; false when a
+  // number overflowed (recorded).
+  bool collide_next() {
+    const Index v = next->first;
     const Contact& c = configuration.contacts()[static_cast<std::size_t>(v)];
     const std::optional<double> Fdt = collide(v, r.after);
     if (!Fdt) {
-      d.status = SerialStatus::non_finite;
-      return true;
+      r.diagnostics.status = SerialStatus::non_finite;
+      return false;
     }
     r.Fdt(v) += *Fdt;
-    d.order.push_back(v);
+    r.diagnostics.order.push_back(v);
     bool finite = true;
     for (const std::size_t body : {c.bumper, c.wedge}) {
       for (const Touch& t : configuration.touches(body)) {
@@ -192,16 +199,16 @@ struct SerialCollisions::State {
       }
     }
     if (!finite) {
-      d.status = SerialStatus::non_finite;
-      return true;
+      r.diagnostics.status = SerialStatus::non_finite;
     }
-    return false;
+    return finite;
   }
 
   const multipoint::Configuration& configuration;
   Collide collide;
   SerialResolution r;
   std::optional<serial_detail::Fastest> fastest;
+  std::optional<std::pair<Index, double>> next;  // the contact to collide next, its speed
   bool ended = false;
 };
 
@@ -228,7 +235,7 @@ SerialResolution run_serial(const multipoint::Configuration& configuration,
                             const SerialOptions& options, SerialCollisions::Collide collide) {
   SerialCollisions collisions(configuration, options, std::move(collide));
   collisions.advance(std::numeric_limits<std::int64_t>::max());
-  return collisions.resolution();
+  return std::move(collisions).take();
 }
 
 }  // namespace
@@ -239,11 +246,7 @@ SerialCollisions::SerialCollisions(const multipoint::Configuration& configuratio
 
 SerialCollisions::SerialCollisions(const multipoint::Configuration& configuration,
                                    const SerialOptions& options, Collide collide)
-    : state_(std::make_unique<State>(configuration, options, std::move(collide))) {
-  if (state_->ended) {
-    state_->r.diagnostics.passes = count_passes(state_->r.diagnostics.order);
-  }
-}
+    : state_(std::make_unique<State>(configuration, options, std::move(collide))) {}
 
 SerialCollisions::~SerialCollisions() = default;
 SerialCollisions::SerialCollisions(SerialCollisions&&) noexcept = default;
@@ -254,19 +257,15 @@ bool SerialCollisions::advance(std::int64_t collisions) {
     throw InvalidInput("advance: collisions must be at least 1, got " + std::to_string(collisions));
   }
   State& s = *state_;
+  if (s.ended) {
+    return true;
+  }
+  // Each collision only after asking whether they end here, and once more after the slice, so
+  // that a caller sees the end without another call.
   for (std::int64_t k = 0; k < collisions && !s.ended; ++k) {
-    s.ended = s.step();
+    s.ended = s.ends_here() || !s.collide_next();
   }
-  if (!s.ended) {
-    // The bound is reached at the next call's first step; end now if nothing approaches any more
-    // or the bound is reached, so that a caller sees the end without another call.
-    const auto next = s.fastest->top();
-    s.ended = !next || static_cast<std::int64_t>(s.r.diagnostics.order.size()) >=
-                           s.r.diagnostics.max_collisions;
-    if (s.ended) {
-      s.step();  // records the bound's diagnostics, or finds nothing
-    }
-  }
+  s.ended = s.ended || s.ends_here();
   if (s.ended) {
     s.r.diagnostics.passes = count_passes(s.r.diagnostics.order);
   }
@@ -283,6 +282,10 @@ std::int64_t SerialCollisions::collisions() const {
 
 const SerialResolution& SerialCollisions::resolution() const {
   return state_->r;
+}
+
+SerialResolution SerialCollisions::take() && {
+  return std::move(state_->r);
 }
 
 SerialResolution resolve_serial(const multipoint::Configuration& configuration,
@@ -489,11 +492,11 @@ Outcome SerialMethod::finish() {
     case Kind::single:
       return exact_single(Method::serial, s.configuration, s.paper, s.options);
     case Kind::paper:
-      return serial_outcome(s.collisions->resolution(), s.paper, s.options);
+      return serial_outcome(std::move(*s.collisions).take(), s.paper, s.options);
     case Kind::exact:
       break;
   }
-  return s.exact_outcome(s.collisions->resolution());
+  return s.exact_outcome(std::move(*s.collisions).take());
 }
 
 namespace {

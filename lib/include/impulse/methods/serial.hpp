@@ -149,6 +149,10 @@ class SerialCollisions {
   /// collisions have ended).
   /// @return the resolution
   [[nodiscard]] const SerialResolution& resolution() const;
+  /// @brief The resolution moved out, once the collisions have ended (this object is then
+  /// spent).
+  /// @return the impulses, the bodies after and the diagnostics
+  [[nodiscard]] SerialResolution take() &&;
 
  private:
   struct State;
