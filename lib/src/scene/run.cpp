@@ -153,29 +153,34 @@ Run compare_laws(const World& world, std::string_view source, const Request& req
 }  // namespace
 
 struct RunInSlices::State {
-  State(const World& w, std::string_view s, const Request& r)
-      : world(refusing(s, asked(r),
-                       [&] {
-                         return r.elasticity && r.compare == Request::Compare::nothing
-                                    ? w.with_elasticity(*r.elasticity)
-                                    : w;
-                       })),
-        source(s),
-        request(r) {
-    if (request.compare == Request::Compare::nothing) {
-      resolving.emplace(refusing(source, asked(request), [&] {
-        return Resolving(world, request.method.value_or(world.scene().method));
-      }));
+  // @p owned the world when the run owns it, else @p given (which outlives the run).
+  State(std::optional<World> owned, const World* given, std::string_view s, const Request& r)
+      : own(std::move(owned)), world(own ? &*own : given), source(s), request(r) {
+    if (request.compare != Request::Compare::nothing) {
+      return;  // a comparison runs whole when finished
     }
+    if (request.elasticity) {
+      // A row of a sweep: every body at its elasticity.
+      own = refusing(source, asked(request),
+                     [&] { return world->with_elasticity(*request.elasticity); });
+      world = &*own;
+    }
+    resolving.emplace(refusing(source, asked(request), [&] {
+      return Resolving(*world, request.method.value_or(world->scene().method));
+    }));
   }
-  World world;  // a row of a sweep: every body at its elasticity
+  std::optional<World> own;
+  const World* world;
   std::string source;
   Request request;
-  std::optional<Resolving> resolving;  // one method; a comparison runs whole when finished
+  std::optional<Resolving> resolving;  // one method's, on *world
 };
 
 RunInSlices::RunInSlices(const World& world, std::string_view source, const Request& request)
-    : state_(std::make_unique<State>(world, source, request)) {}
+    : state_(std::make_unique<State>(std::nullopt, &world, source, request)) {}
+
+RunInSlices::RunInSlices(World&& world, std::string_view source, const Request& request)
+    : state_(std::make_unique<State>(std::move(world), nullptr, source, request)) {}
 
 RunInSlices::~RunInSlices() = default;
 RunInSlices::RunInSlices(RunInSlices&&) noexcept = default;
@@ -199,9 +204,9 @@ Run RunInSlices::finish() {
   State& s = *state_;
   switch (s.request.compare) {
     case Request::Compare::methods:
-      return compare_methods(s.world, s.source, s.request);
+      return compare_methods(*s.world, s.source, s.request);
     case Request::Compare::laws:
-      return compare_laws(s.world, s.source, s.request);
+      return compare_laws(*s.world, s.source, s.request);
     case Request::Compare::nothing:
       break;
   }

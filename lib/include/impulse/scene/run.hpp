@@ -70,11 +70,16 @@ struct Run {
 /// constructor, advance() or finish()).
 class RunInSlices {
  public:
-  /// @brief Starts a run (the world is copied).
+  /// @brief Starts a run of a world that outlives it (scene::run's).
   /// @param world the checked scene
   /// @param source how the messages name the scene
   /// @param request what to resolve
   RunInSlices(const World& world, std::string_view source, const Request& request = {});
+  /// @brief Starts a run that keeps the world (a page's scene, read for it).
+  /// @param world the checked scene, moved in
+  /// @param source how the messages name the scene
+  /// @param request what to resolve
+  RunInSlices(World&& world, std::string_view source, const Request& request = {});
   /// @brief Frees its state.
   ~RunInSlices();
   /// @brief Takes over another run in progress (which is left without state).
