@@ -139,7 +139,7 @@ Range multiply(const Range& a, const Range& b) {
   return {down(r.low), up(r.high), r.low_open, false};
 }
 
-Range power(const Range& a, long k) {
+Range integer_power(const Range& a, long k) {
   if (k == 0) {
     return point(1);
   }
@@ -527,7 +527,7 @@ Sign Facts::of_range(const ex& e) const {
         return {};
       }
       const Range base = range(x.op(0));
-      return k >= 0 ? power(base, k) : inverse(power(base, -k));
+      return k >= 0 ? integer_power(base, k) : inverse(integer_power(base, -k));
     }
     if (function_named(x, "sin") || function_named(x, "cos")) {
       return {-1, 1, false, false};
