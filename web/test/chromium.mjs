@@ -26,6 +26,9 @@ export class Browser {
       '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
       '--disable-background-networking', '--disable-component-update', '--disable-sync',
       '--disable-default-apps', '--disable-extensions', '--mute-audio', '--hide-scrollbars',
+      // Every tab runs at full speed, not only the one in front (a test may open several at once).
+      '--disable-background-timer-throttling', '--disable-backgrounding-occluded-windows',
+      '--disable-renderer-backgrounding',
       `--host-resolver-rules=${options.hostResolverRules || 'MAP * ~NOTFOUND'}`,
       `--user-data-dir=${profile}`, '--remote-debugging-pipe', 'about:blank',
     ];
