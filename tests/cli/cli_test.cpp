@@ -16,6 +16,7 @@
 namespace t = impulselab::test;
 using Catch::Matchers::Contains;
 using nlohmann::json;
+using t::worked;
 
 namespace {
 
@@ -60,8 +61,6 @@ void require_matches(const json& got, const json& expected, const std::string& p
     REQUIRE(got == expected);
   }
 }
-
-const std::string worked = t::cli_tests_path("scenes/worked-example.json");
 
 }  // namespace
 

@@ -14,12 +14,12 @@
 #include "output.hpp"
 
 namespace t = impulselab::test;
+using t::worked;
 namespace fs = std::filesystem;
 using Catch::Matchers::Contains;
 
 namespace {
 
-const std::string worked = t::cli_tests_path("scenes/worked-example.json");
 const std::string precious = "precious contents\n";
 
 std::size_t entries(const fs::path& folder) {

@@ -74,6 +74,9 @@ inline std::string cli_tests_path(const std::string& name) {
   return std::string(IMPULSELAB_CLI_TESTS_DIR) + "/" + name;
 }
 
+/// The worked example of section 1 as a scene file (tests/cli/scenes/): what many tests solve.
+inline const std::string worked = cli_tests_path("scenes/worked-example.json");
+
 /// What a run of the program gave.
 struct Run {
   int status = -1;         ///< exit status (when it exited)

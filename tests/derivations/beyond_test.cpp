@@ -25,7 +25,7 @@ namespace {
 // The verdicts, worked out before the file was written (the rod's numbers by hand in the issue:
 // slip stops at P_n = 1/5 where 0.7 + (-1.5 - 0.8 * 2.5) P_n = 0; compression ends at 29/80 where
 // -0.26 + 1.6 (P_n - 0.2) = 0, 1.6 = det W / W_tt = (6.25 - 2.25) / 2.5).
-const std::map<std::string, Status>& expected() {
+const std::map<std::string, Status>& expected_beyond() {
   static const std::map<std::string, Status> table{
       // Newton-Euler for an impulse along any two directions; a body of point masses agrees.
       {"fr-contact-velocity", Status::verified},
@@ -85,16 +85,16 @@ const check::Result& result(const check::Report& report, const std::string& id) 
   throw std::logic_error("unreachable");
 }
 
-void require_pinned(const check::Report& report) {
+void require_pinned_beyond(const check::Report& report) {
   std::set<std::string> seen;
   for (const auto& r : report.results) {
     CAPTURE(r.check.id, r.outcome.note, r.outcome.explanation);
-    REQUIRE(expected().count(r.check.id) == 1);
-    CHECK(r.outcome.status == expected().at(r.check.id));
+    REQUIRE(expected_beyond().count(r.check.id) == 1);
+    CHECK(r.outcome.status == expected_beyond().at(r.check.id));
     CHECK(check::in_section(r.check.section, "friction"));
     seen.insert(r.check.id);
   }
-  REQUIRE(seen.size() == expected().size());
+  REQUIRE(seen.size() == expected_beyond().size());
 }
 
 // The numbers of a counterexample, by name: "m = 0.5, r = [1, 2], …".
@@ -117,12 +117,12 @@ double cross(const Vector2d& a, const Vector2d& b) {
 }  // namespace
 
 TEST_CASE("Friction beyond the paper: every check reaches its verdict", "[derivations][friction]") {
-  require_pinned(beyond(1));
+  require_pinned_beyond(beyond(1));
 }
 
 TEST_CASE("Friction beyond the paper: the verdicts do not depend on the seed",
           "[derivations][friction]") {
-  require_pinned(beyond(20261121));
+  require_pinned_beyond(beyond(20261121));
 }
 
 TEST_CASE("Friction beyond the paper: the searches count their cases", "[derivations][friction]") {
@@ -238,9 +238,9 @@ TEST_CASE("Friction beyond the paper: apart from the paper's checks in every for
   CHECK(report.summary.verified + report.summary.erratum + report.summary.refuted +
             report.summary.failed ==
         0);
-  REQUIRE(report.beyond.results.size() == expected().size());
+  REQUIRE(report.beyond.results.size() == expected_beyond().size());
   CHECK(check::run({"3.2", 50, 1}).beyond.results.empty());
-  CHECK(check::beyond_checks().size() == expected().size());
+  CHECK(check::beyond_checks().size() == expected_beyond().size());
   // Ids that the paper does not use.
   std::set<std::string> ids;
   for (const auto& c : check::all_checks()) {

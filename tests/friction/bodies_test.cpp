@@ -177,7 +177,6 @@ TEST_CASE("apply gives the bumper -n P_n + t P_t and the wedge the opposite", "[
 TEST_CASE("Bad bodies, points and normals are refused by name", "[friction]") {
   const impulse::material_2d::PointMass ball{1.0, {0, -1}};
   const impulse::material_2d::PointMass bad{-1.0, {0, -1}};
-  const Vector2d down(0, -1);
   const friction::ContactLaw law{0.5, Elasticity(2.0), friction::RestitutionLaw::newton};
   CHECK_THROWS_MATCHES(friction::collide(bad, StaticBody{}, Vector2d(0, 0), down, law),
                        InvalidInput,

@@ -10,6 +10,7 @@
 #include "impulse/friction/bodies.hpp"
 #include "impulse/friction/contact.hpp"
 #include "impulse/multipoint/multipoint.hpp"
+#include "physics.hpp"
 
 using Catch::Matchers::Contains;
 using Eigen::Matrix2d;
@@ -25,16 +26,11 @@ using impulse::friction::Slip;
 using impulse::material_2d::PointMass;
 using impulse::multipoint::StaticBody;
 using impulse::rigid_2d::RigidBody;
+using impulse::test::friction::all_laws;
+using impulse::test::friction::down;
 namespace friction = impulse::friction;
 
 namespace {
-
-constexpr RestitutionLaw all_laws[] = {RestitutionLaw::newton, RestitutionLaw::poisson,
-                                       RestitutionLaw::energetic};
-
-// The floor: the striking body is the bumper, its outward normal points down, n = (0, -1), so
-// the tangent is t = [-n_y, n_x] = (1, 0) and the impulse on the body is (P_t, P_n).
-const Vector2d down(0, -1);
 
 Matrix2d matrix(double nn, double nt, double tt) {
   Matrix2d W;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <variant>
 
+#include "impulse/friction/contact.hpp"
 #include "impulse/multipoint/multipoint.hpp"
 #include "support/random_bodies.hpp"
 #include "support/sampling.hpp"
@@ -15,6 +16,15 @@ namespace impulse::test::friction {
 
 using multipoint::Body;
 using Vector2d = Eigen::Vector2d;
+
+// The three laws of restitution, for the tests that hold each of them to a law of physics.
+inline constexpr impulse::friction::RestitutionLaw all_laws[] = {
+    impulse::friction::RestitutionLaw::newton, impulse::friction::RestitutionLaw::poisson,
+    impulse::friction::RestitutionLaw::energetic};
+
+// The floor: the striking body is the bumper, its outward normal points down, n = (0, -1), so
+// the tangent is t = [-n_y, n_x] = (1, 0) and the impulse on the body is (P_t, P_n).
+inline const Vector2d down(0, -1);
 
 inline double cross(const Vector2d& a, const Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();

@@ -28,9 +28,6 @@ namespace friction = impulse::friction;
 
 namespace {
 
-constexpr RestitutionLaw all_laws[] = {RestitutionLaw::newton, RestitutionLaw::poisson,
-                                       RestitutionLaw::energetic};
-
 bool is_static(const Body& body) {
   return std::holds_alternative<impulse::multipoint::StaticBody>(body);
 }

@@ -188,8 +188,6 @@ Slip stepped_outcome(const Stepped& s) {
   return s.slip_stop < 0.0 ? Slip::slip : Slip::reversed;
 }
 
-const Vector2d down(0, -1);
-
 // The rod of contact_test.cpp: m = 1, I = 1/12, at 45 degrees, centre (h, h) above the end at
 // the origin, moving at (0.7, -1).
 Hit rod_hit() {

@@ -11,6 +11,7 @@
 #include "impulse/methods/resolve.hpp"
 #include "impulse/methods/serial.hpp"
 #include "impulse/multipoint/multipoint.hpp"
+#include "support/vectors.hpp"
 
 using Eigen::MatrixXd;
 using Eigen::Vector2d;
@@ -21,19 +22,11 @@ using impulse::material_2d::PointMass;
 using impulse::multipoint::Body;
 using impulse::multipoint::Contact;
 using impulse::multipoint::StaticBody;
+using impulse::test::vec;
 namespace mp = impulse::multipoint;
 namespace me = impulse::methods;
 
 namespace {
-VectorXd vec(std::initializer_list<double> values) {
-  VectorXd v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index i = 0;
-  for (const double x : values) {
-    v(i++) = x;
-  }
-  return v;
-}
-
 Eigen::SparseMatrix<double> sparse(const MatrixXd& A) {
   return A.sparseView();
 }

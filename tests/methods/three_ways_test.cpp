@@ -9,6 +9,7 @@
 #include "impulse/methods/complementarity.hpp"
 #include "impulse/methods/serial.hpp"
 #include "impulse/multipoint/multipoint.hpp"
+#include "support/vectors.hpp"
 
 using Eigen::Vector2d;
 using Eigen::VectorXd;
@@ -18,6 +19,7 @@ using impulse::multipoint::Body;
 using impulse::multipoint::Contact;
 using impulse::multipoint::StaticBody;
 using impulse::rigid_2d::RigidBody;
+using impulse::test::vec;
 namespace mp = impulse::multipoint;
 namespace me = impulse::methods;
 
@@ -46,15 +48,6 @@ VectorXd x_velocities(const std::vector<Body>& bodies) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const auto& b = std::get<PointMass>(bodies[i]);
     v(static_cast<Eigen::Index>(i)) = b.p.x() / b.mass;
-  }
-  return v;
-}
-
-VectorXd vec(std::initializer_list<double> values) {
-  VectorXd v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index i = 0;
-  for (const double x : values) {
-    v(i++) = x;
   }
   return v;
 }

@@ -21,7 +21,7 @@ namespace sc = impulse::scene;
 
 namespace {
 
-const std::string worked_example = R"({
+const std::string worked_example_text = R"({
   "dimension": 2,
   "elasticity": 2,
   "bodies": [
@@ -45,7 +45,7 @@ std::vector<std::filesystem::path> example_scenes() {
 }  // namespace
 
 TEST_CASE("A scene file is read field by field", "[scene][json]") {
-  const sc::Scene s = sc::parse_scene(worked_example, "worked.json");
+  const sc::Scene s = sc::parse_scene(worked_example_text, "worked.json");
   CHECK(s.dimension == 2);
   CHECK(s.elasticity == 2.0);
   REQUIRE(s.bodies.size() == 2);
@@ -101,14 +101,14 @@ TEST_CASE("A normal may be given as an angle in degrees", "[scene][json]") {
 
 TEST_CASE("A normal not of unit length is made unit, and the JSON report notes it",
           "[scene][json]") {
-  std::string text = worked_example;
+  std::string text = worked_example_text;
   text.replace(text.find("[1, 0]}]"), 6, "[3, 0]");
   const auto json = sc::to_json(sc::solve(sc::parse_scene(text, "s.json")));
   REQUIRE(json.contains("notes"));
   CHECK(json["notes"][0] ==
         "contacts[0].normal [3, 0] is not of unit length (length 3): used as [1, 0]");
   // [3, 0] / 3 is [1, 0] exactly: the worked example's impulse to the last digit.
-  const auto plain = sc::to_json(sc::solve(sc::parse_scene(worked_example, "s.json")));
+  const auto plain = sc::to_json(sc::solve(sc::parse_scene(worked_example_text, "s.json")));
   CHECK(json["impulses"][0]["magnitude"] == plain["impulses"][0]["magnitude"]);
   // Without a change, no "notes": the scene format's report exactly.
   CHECK_FALSE(plain.contains("notes"));
@@ -167,7 +167,7 @@ TEST_CASE("Refusals of the reader name the file, the place and what was expected
           "[scene][json][errors]") {
   // One edit of the worked example each; the message fragment is what a student must see.
   const auto edited = [](const std::string& from, const std::string& to) {
-    std::string text = worked_example;
+    std::string text = worked_example_text;
     const auto at = text.find(from);
     REQUIRE(at != std::string::npos);
     return text.replace(at, from.size(), to);
@@ -202,7 +202,7 @@ TEST_CASE("Refusals of the reader name the file, the place and what was expected
       message(edited("\"kind\": \"material\", \"mass\": 1, \"velocity\": [0, 0]",
                      "\"kind\": \"plastic\", \"mass\": 1, \"velocity\": [0, 0]")),
       Contains("s.json: bodies[1].kind: expected one of \"material\", \"rigid\", \"static\""));
-  CHECK(message(worked_example) == "(accepted)");
+  CHECK(message(worked_example_text) == "(accepted)");
 }
 
 TEST_CASE("Whatever the bytes, a scene is read whole or refused", "[scene][json][property]") {
@@ -245,7 +245,7 @@ TEST_CASE("Whatever the bytes, a scene is read whole or refused", "[scene][json]
 }
 
 TEST_CASE("The JSON report has the scene format's keys and numbers", "[scene][json]") {
-  const auto r = sc::solve(sc::parse_scene(worked_example, "worked.json"));
+  const auto r = sc::solve(sc::parse_scene(worked_example_text, "worked.json"));
   const auto j = sc::to_json(r);
   std::vector<std::string> keys;
   for (const auto& [key, value] : j.items()) {
