@@ -383,7 +383,21 @@ ex safe_numerator(const ex& e, double terms) {
   if (expanded_terms(e) > terms) {
     return e;
   }
-  return GiNaC::normal(e).numer();
+  // Remembered: the exact method asks again for the numerators of the same premises at each
+  // step of a file and in each variant of a check, and normal() (a gcd at every fraction) is the
+  // costliest call it makes. normal() depends on its argument alone, so a remembered numerator is
+  // the one it would compute again. The table is bounded: emptied when full.
+  constexpr std::size_t remembered = 4096;
+  thread_local GiNaC::exmap numerators;
+  if (const auto found = numerators.find(e); found != numerators.end()) {
+    return found->second;
+  }
+  ex numerator = GiNaC::normal(e).numer();
+  if (numerators.size() >= remembered) {
+    numerators.clear();
+  }
+  numerators.emplace(e, numerator);
+  return numerator;
 }
 
 namespace {
