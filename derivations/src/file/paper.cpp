@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "derivations/derivation.hpp"
@@ -50,9 +52,8 @@ std::vector<ex> FileRun::symbols_of_name(std::string_view latex) {
   return names_[key] = v.vector ? std::vector<ex>{v.x, v.y} : std::vector<ex>{v.x};
 }
 
-std::function<double(std::span<const double>)> FileRun::function(
-    std::string_view symbol, const std::vector<std::string>& inputs) {
-  const auto nothing = [](std::span<const double>) { return std::nan(""); };
+std::optional<ex> FileRun::definition(std::string_view symbol,
+                                      const std::vector<std::string>& inputs) {
   try {
     std::vector<ex> slots;
     for (const std::string& input : inputs) {
@@ -62,10 +63,32 @@ std::function<double(std::span<const double>)> FileRun::function(
     const ex e = file::exact_reading(symbols_of_name(symbol)[0].subs(probe_substitutions_));
     for (const ex& s : file::symbols_of(std::vector<ex>{e})) {
       if (std::none_of(slots.begin(), slots.end(), [&](const ex& x) { return x.is_equal(s); })) {
-        return nothing;  // the file does not define it from these inputs
+        return std::nullopt;  // the file does not define it from these inputs
       }
     }
-    file::TimedExpression compiled(e, slots);
+    return e;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+std::function<double(std::span<const double>)> FileRun::function(
+    std::string_view symbol, const std::vector<std::string>& inputs) {
+  const auto nothing = [](std::span<const double>) { return std::nan(""); };
+  const std::optional<ex> e = definition(symbol, inputs);
+  if (asked_ != nullptr) {
+    asked_->push_back({std::string(symbol), inputs, e});
+  }
+  if (!e) {
+    return nothing;
+  }
+  try {
+    std::vector<ex> slots;
+    for (const std::string& input : inputs) {
+      const std::vector<ex> named = symbols_of_name(input);
+      slots.insert(slots.end(), named.begin(), named.end());
+    }
+    file::TimedExpression compiled(*e, slots);
     return [compiled = std::move(compiled)](std::span<const double> values) {
       return compiled(values, nullptr);
     };
@@ -109,17 +132,52 @@ void FileRun::define_for_probe(const file::Group& g, const std::vector<std::size
 }
 
 const std::vector<models::Point>& FileRun::points(const models::Model& model,
-                                                  const models::Settings& settings,
-                                                  std::vector<models::Point>& made) {
-  if (model.method != Method::ode && !model.shared) {
-    made = model.points(*this, settings);
-    return made;
+                                                  const models::Settings& settings) {
+  std::list<Kept>& kept = points_[&model];
+  for (const Kept& k : kept) {
+    if (k.seed == settings.seed && k.samples == settings.samples &&
+        std::all_of(k.asked.begin(), k.asked.end(), [&](const Asked& a) {
+          const std::optional<ex> now = definition(a.symbol, a.inputs);
+          return now.has_value() == a.definition.has_value() &&
+                 (!now || now->is_equal(*a.definition));
+        })) {
+      return k.points;
+    }
   }
-  auto cached = points_.find(&model);
-  if (cached == points_.end()) {
-    cached = points_.emplace(&model, model.points(*this, settings)).first;
+  Kept& made = kept.emplace_back();
+  made.seed = settings.seed;
+  made.samples = settings.samples;
+  asked_ = &made.asked;
+  try {
+    made.points = model.points(*this, settings);
+  } catch (...) {
+    asked_ = nullptr;
+    kept.pop_back();
+    throw;
   }
-  return cached->second;
+  asked_ = nullptr;
+  return made.points;
+}
+
+void FileRun::done_with(const file::Group& g) {
+  const auto same = [](const file::ModelUse& a, const file::ModelUse& b) {
+    return a.method == b.method && a.name == b.name;
+  };
+  const auto here = std::find_if(read.groups.begin(), read.groups.end(),
+                                 [&](const file::Group& x) { return &x == &g; });
+  for (const file::ModelUse& use : g.models) {
+    const bool named_later =
+        here != read.groups.end() &&
+        std::any_of(std::next(here), read.groups.end(), [&](const file::Group& later) {
+          return std::any_of(later.models.begin(), later.models.end(),
+                             [&](const file::ModelUse& x) { return same(x, use); });
+        });
+    const std::optional<Method> method = value_named<Method>(use.method);
+    const models::Model* model = method ? models::find(*method, use.name) : nullptr;
+    if (!named_later && model != nullptr) {
+      points_.erase(model);
+    }
+  }
 }
 
 }  // namespace paper
@@ -242,6 +300,7 @@ Report run(const std::vector<PaperFile>& files, const Options& options, std::str
       } catch (const ReadError& e) {
         throw placed(file, e.place(), e.what());
       }
+      run_file.done_with(g);
       result.check.file = file.name;
       add(report, std::move(result));
     }

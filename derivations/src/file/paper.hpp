@@ -14,8 +14,11 @@
 #include <ginac/ginac.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <list>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -64,18 +67,37 @@ class FileRun : public models::Probe {
   void define_for_probe(const file::Group& g, const std::vector<std::size_t>& own,
                         GiNaC::exmap in_force);
 
-  /// A model's points. An ODE model's, and those of a model marked shared, are made once per
-  /// file and shared by the checks that name it: a model knows nothing of the check, so its
-  /// points depend only on the run's seed and samples (the rods on a penalty contact cost 30 ms
-  /// each); the others are cheaper made again into @p made than kept.
+  /// A model's points, made once per file and kept for the checks that name it again: a model
+  /// knows nothing of the check, so its points depend only on the run's seed and samples and on
+  /// the file's definitions it reads through the probe. They are made again when one of those
+  /// reads differently now (another variant of a check, other definitions in force).
   const std::vector<models::Point>& points(const models::Model& model,
-                                           const models::Settings& settings,
-                                           std::vector<models::Point>& made);
+                                           const models::Settings& settings);
+
+  /// Lets go of the points of the models @p g names that no check after it in the file names.
+  void done_with(const file::Group& g);
 
  private:
+  // A definition the model read through the probe while making its points.
+  struct Asked {
+    std::string symbol;
+    std::vector<std::string> inputs;
+    std::optional<ex> definition;
+  };
+  struct Kept {
+    std::uint64_t seed = 0;
+    std::size_t samples = 0;
+    std::vector<Asked> asked;
+    std::vector<models::Point> points;
+  };
+
+  /// The file's definition of @p symbol in @p inputs as the probe reads it now, or nothing.
+  std::optional<ex> definition(std::string_view symbol, const std::vector<std::string>& inputs);
+
   GiNaC::exmap probe_substitutions_;
   std::map<std::string, std::vector<ex>> names_;
-  std::map<const models::Model*, std::vector<models::Point>> points_;
+  std::map<const models::Model*, std::list<Kept>> points_;
+  std::vector<Asked>* asked_ = nullptr;  // where function() records, while points are made
 };
 
 // ---- the model evaluator (paper_models.cpp) ---------------------------------------------------

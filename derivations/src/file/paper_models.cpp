@@ -72,7 +72,7 @@ class Evaluation {
     const models::Settings settings{
         check_seed(run.options.seed, std::string(name_of(model.method)) + ": " + use.name),
         run.options.samples};
-    points_ = &run.points(model, settings, made_);
+    points_ = &run.points(model, settings);
     symbols = file::symbols_of(expressions);
     t = run.symbols.value_of(file::SymbolName{"t", "", 0, false}).x;
     dt = run.symbols.value_of(file::SymbolName{"dt", "", 0, false}).x;
@@ -147,7 +147,6 @@ class Evaluation {
   const file::Facts& facts_;
   num::Random random_;
   bool instant_;
-  std::vector<models::Point> made_;
   const std::vector<models::Point>* points_ = nullptr;
 };
 

@@ -314,12 +314,12 @@ std::vector<Model> friction_models() {
        "P_s where the slip stopped, P_c where compression ended, the work w_c of the normal "
        "impulse until then (summed increment by increment), and the impulses at each law's "
        "end.",
-       rod_slip_then_stick, 1e-9, 1e-6, false, true},
+       rod_slip_then_stick, 1e-9, 1e-6},
       {Method::search, "rods striking rough floors",
        "The rods and floors of the model above, every case (slip throughout, slip then stick, "
        "slip that stops and starts again): the normal and tangential impulses at Newton's end "
        "(P_N, P_tN), Poisson's (P_P, P_tP) and the energetic law's (P_E, P_tE).",
-       rods_striking_rough_floors, 1e-9, 1e-6, false, true},
+       rods_striking_rough_floors, 1e-9, 1e-6},
   };
 }
 

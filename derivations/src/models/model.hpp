@@ -85,9 +85,6 @@ struct Model {
   /// Symbols of the file a point leaves unset are drawn at random (quadrature models: they only
   /// shape the force); otherwise they must follow from the equations before.
   bool draws_the_rest = false;
-  /// Its points are made once per file and shared by the checks that name it, as an ODE
-  /// model's are (a costly model that does not read the probe).
-  bool shared = false;
 };
 
 /// Every model, in the order of the docs.
