@@ -131,8 +131,7 @@ void FileRun::define_for_probe(const file::Group& g, const std::vector<std::size
   }
 }
 
-const std::vector<models::Point>& FileRun::points(const models::Model& model,
-                                                  const models::Settings& settings) {
+const ModelPoints& FileRun::points(const models::Model& model, const models::Settings& settings) {
   std::list<Kept>& kept = points_[&model];
   for (const Kept& k : kept) {
     if (k.seed == settings.seed && k.samples == settings.samples &&
@@ -141,7 +140,7 @@ const std::vector<models::Point>& FileRun::points(const models::Model& model,
           return now.has_value() == a.definition.has_value() &&
                  (!now || now->is_equal(*a.definition));
         })) {
-      return k.points;
+      return k.made;
     }
   }
   Kept& made = kept.emplace_back();
@@ -149,14 +148,35 @@ const std::vector<models::Point>& FileRun::points(const models::Model& model,
   made.samples = settings.samples;
   asked_ = &made.asked;
   try {
-    made.points = model.points(*this, settings);
+    made.made.points = model.points(*this, settings);
   } catch (...) {
     asked_ = nullptr;
     kept.pop_back();
     throw;
   }
   asked_ = nullptr;
-  return made.points;
+  // Most models give every point the same names: a point is compared with the one before, and
+  // only a point that differs looks its names up.
+  std::map<std::string, std::size_t> sets;
+  const models::Point* before = nullptr;
+  for (const models::Point& point : made.made.points) {
+    const auto same_names = [](const models::Value& a, const models::Value& b) {
+      return a.symbol == b.symbol;
+    };
+    if (before != nullptr && before->values.size() == point.values.size() &&
+        std::equal(point.values.begin(), point.values.end(), before->values.begin(), same_names)) {
+      made.made.names.push_back(made.made.names.back());
+    } else {
+      std::string key;
+      for (const models::Value& v : point.values) {
+        key += v.symbol;
+        key += '\n';
+      }
+      made.made.names.push_back(sets.emplace(key, sets.size()).first->second);
+    }
+    before = &point;
+  }
+  return made.made;
 }
 
 void FileRun::done_with(const file::Group& g) {

@@ -41,6 +41,13 @@ std::string symbol_text(file::Symbols& symbols, const ex& s);
 /// A block of the file without the spaces and newlines around it.
 std::string trimmed(std::string_view s);
 
+/// A model's points, and for each the set of names it gives values (its number among them):
+/// what the points are evaluated in is prepared once per set of names.
+struct ModelPoints {
+  std::vector<models::Point> points;
+  std::vector<std::size_t> names;
+};
+
 /// What the engine knows of one file while it checks it: what it read, and what the models
 /// ask of it (the probe and the points they share).
 class FileRun : public models::Probe {
@@ -71,8 +78,7 @@ class FileRun : public models::Probe {
   /// knows nothing of the check, so its points depend only on the run's seed and samples and on
   /// the file's definitions it reads through the probe. They are made again when one of those
   /// reads differently now (another variant of a check, other definitions in force).
-  const std::vector<models::Point>& points(const models::Model& model,
-                                           const models::Settings& settings);
+  const ModelPoints& points(const models::Model& model, const models::Settings& settings);
 
   /// Lets go of the points of the models @p g names that no check after it in the file names.
   void done_with(const file::Group& g);
@@ -88,7 +94,7 @@ class FileRun : public models::Probe {
     std::uint64_t seed = 0;
     std::size_t samples = 0;
     std::vector<Asked> asked;
-    std::vector<models::Point> points;
+    ModelPoints made;
   };
 
   /// The file's definition of @p symbol in @p inputs as the probe reads it now, or nothing.

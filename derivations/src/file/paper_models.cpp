@@ -86,6 +86,12 @@ class Evaluation {
     if (instant) {
       add(t);
     }
+    tau_ = *index_of(file::pulse_duration());
+    for (const ex& s : symbols) {
+      signs_.push_back(facts.of_symbol(s));
+    }
+    dt_ = index_of(dt);
+    t_ = index_of(t);
   }
 
   const models::Model& model;
@@ -94,7 +100,9 @@ class Evaluation {
   ex t;
   ex dt;
 
-  [[nodiscard]] const std::vector<models::Point>& points() const { return *points_; }
+  [[nodiscard]] const std::vector<models::Point>& points() const { return points_->points; }
+  /// The set of names point @p k gives (its number among the model's sets).
+  [[nodiscard]] std::size_t names(std::size_t k) const { return points_->names[k]; }
 
   [[nodiscard]] std::optional<std::size_t> index_of(const ex& s) const {
     for (std::size_t i = 0; i < symbols.size(); ++i) {
@@ -147,7 +155,12 @@ class Evaluation {
   const file::Facts& facts_;
   num::Random random_;
   bool instant_;
-  const std::vector<models::Point>* points_ = nullptr;
+  // The slots of the pulse's time scale, of dt and of t (the symbols are all added above).
+  std::size_t tau_ = 0;
+  std::optional<std::size_t> dt_;
+  std::optional<std::size_t> t_;
+  std::vector<file::Sign> signs_;  // each symbol's, as the facts give it
+  const ModelPoints* points_ = nullptr;
 };
 
 Unknowns Evaluation::unknowns(const models::Point& point) {
@@ -297,20 +310,20 @@ bool Evaluation::values_at(const models::Point& point, Unknowns& u, std::vector<
     }
   }
   for (const std::size_t slot : u.drawn) {
-    values[slot] = file::draw_with_sign(random_, facts_.of_symbol(symbols[slot]));
+    values[slot] = file::draw_with_sign(random_, signs_[slot]);
   }
   for (const std::size_t slot : u.solved) {
-    values[slot] = file::draw_with_sign(random_, facts_.of_symbol(symbols[slot]));
+    values[slot] = file::draw_with_sign(random_, signs_[slot]);
   }
-  const std::size_t tau = *index_of(file::pulse_duration());
-  const std::optional<std::size_t> d = index_of(dt);
+  const std::size_t tau = tau_;
+  const std::optional<std::size_t> d = dt_;
   values[tau] = d ? values[*d] : random_.uniform(0.5, 2.0);
   if (instant_ && u.fixes_t && d) {
     values[tau] = values[*d];  // the model's instant t of its contact dt
   } else if (instant_) {
     values[tau] = random_.uniform(0.5, 2.0);
-    if (const auto ts = index_of(t)) {
-      values[*ts] = random_.uniform(0.02, 0.98) * values[tau];
+    if (t_) {
+      values[*t_] = random_.uniform(0.02, 0.98) * values[tau];
     }
   }
   if (u.solver && !u.solver->solve(values)) {
@@ -360,38 +373,21 @@ std::string Evaluation::point_text(const models::Point& point, const Unknowns& u
   return text;
 }
 
-// The preparations of a model's points, one per set of names the points give. Most models give
-// every point the same names: then the last point's preparation serves.
+// The preparations of a model's points, one per set of names the points give.
 template <typename Prepared>
 class ByNames {
  public:
   template <typename Make>
-  Prepared& of(const models::Point& point, const Make& make) {
-    if (last_point_ != nullptr && last_point_->values.size() == point.values.size() &&
-        std::equal(
-            point.values.begin(), point.values.end(), last_point_->values.begin(),
-            [](const models::Value& a, const models::Value& b) { return a.symbol == b.symbol; })) {
-      last_point_ = &point;
-      return *last_;
-    }
-    std::string key;
-    for (const models::Value& v : point.values) {
-      key += v.symbol;
-      key += '\n';
-    }
-    last_point_ = &point;
-    auto found = cache_.find(key);
+  Prepared& of(std::size_t names, const Make& make) {
+    auto found = cache_.find(names);
     if (found == cache_.end()) {
-      found = cache_.emplace(key, make()).first;
+      found = cache_.emplace(names, make()).first;
     }
-    last_ = &found->second;
-    return *last_;
+    return found->second;
   }
 
  private:
-  std::map<std::string, Prepared> cache_;
-  const models::Point* last_point_ = nullptr;
-  Prepared* last_ = nullptr;
+  std::map<std::size_t, Prepared> cache_;
 };
 
 // ---- an equation or a step --------------------------------------------------------------------
@@ -501,8 +497,10 @@ EquationFinding evaluate(FileRun& run, const file::ModelUse& use,
   EquationFinding f{e.model.method, 0, 0.0, false, false, {}};
   ByNames<Statements> prepared;
   std::vector<double> values(e.symbols.size(), 0.0);
-  for (const models::Point& point : e.points()) {
-    Statements& s = prepared.of(point, [&] { return compile(e, point, targets, g, use.name); });
+  for (std::size_t at = 0; at < e.points().size(); ++at) {
+    const models::Point& point = e.points()[at];
+    Statements& s =
+        prepared.of(e.names(at), [&] { return compile(e, point, targets, g, use.name); });
     if (!e.values_at(point, s.unknowns, values)) {
       continue;
     }
@@ -683,8 +681,9 @@ ClaimFinding evaluate(FileRun& run, const file::ModelUse& use, const Rows& rows,
   ClaimFinding f{e.model.method, std::vector<RowFinding>(n)};
   ByNames<Relations> prepared;
   std::vector<double> values(e.symbols.size(), 0.0);
-  for (const models::Point& point : e.points()) {
-    Relations& r = prepared.of(point, [&] { return compile(e, point, rows, use.name); });
+  for (std::size_t at = 0; at < e.points().size(); ++at) {
+    const models::Point& point = e.points()[at];
+    Relations& r = prepared.of(e.names(at), [&] { return compile(e, point, rows, use.name); });
     if (!e.values_at(point, r.unknowns, values)) {
       continue;
     }
