@@ -4,9 +4,11 @@
 // or solved from the equations before; then each statement of an equation or a step is measured
 // by its residual, and each row of a claim is held against its hypotheses and conclusions.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <set>
+#include <span>
 
 #include "file/decide.hpp"
 #include "file/paper.hpp"
@@ -398,13 +400,13 @@ class ByNames {
 struct Statements {
   Unknowns unknowns;
   std::vector<bool> tested;
-  std::vector<TimedExpression> differences, scales;
+  std::vector<TimedExpression> differences;  // each with the size of its terms, compiled together
   std::vector<std::vector<TimedExpression>> denominators;
 };
 
 Statements compile(Evaluation& e, const models::Point& point, const std::vector<Target>& targets,
                    const file::Group& g, const std::string& model_name) {
-  Statements s{e.unknowns(point), {}, {}, {}, {}};
+  Statements s{e.unknowns(point), {}, {}, {}};
   const Unknowns& u = s.unknowns;
   const GiNaC::exmap rates = e.rates(point);
   bool any = false;
@@ -432,8 +434,8 @@ Statements compile(Evaluation& e, const models::Point& point, const std::vector<
     const bool ok = !solver && e.determined(u, target.left) && e.determined(u, target.right);
     s.tested.push_back(ok);
     any = any || ok;
-    s.differences.emplace_back(left - right, e.symbols);
-    s.scales.emplace_back(file::term_scale(left) + file::term_scale(right), e.symbols);
+    s.differences.emplace_back(
+        std::vector<ex>{left - right, file::term_scale(left) + file::term_scale(right)}, e.symbols);
     std::vector<TimedExpression> ds;
     for (const ex& d : target.denominators) {
       ds.emplace_back(d, e.symbols);
@@ -467,8 +469,10 @@ std::optional<double> residual_at(const Statements& s, const models::Point& poin
     if (!clear) {
       continue;
     }
-    const double difference = s.differences[i](values, point.pulse);
-    const double scale = s.scales[i](values, point.pulse);
+    std::array<double, 2> both{};
+    s.differences[i](values, point.pulse, both);
+    const double difference = both[0];
+    const double scale = both[1];
     if (!std::isfinite(difference) || !std::isfinite(scale)) {
       continue;
     }
@@ -525,7 +529,7 @@ namespace {
 // ---- a claim ----------------------------------------------------------------------------------
 
 // The claim's relations compiled for one set of names: per relation, its left side, then its
-// right side or its members, then the size of its terms.
+// right side or its members, then the size of its terms, compiled together.
 struct Relations {
   Unknowns unknowns;
   std::vector<TimedExpression> sides;
@@ -548,13 +552,14 @@ Relations compile(Evaluation& e, const models::Point& point, const Rows& rows,
                         " a value (in: " + c.text + ")");
         }
         const ex left = u.solved_form(c.left);
-        r.sides.emplace_back(left, e.symbols);
+        std::vector<ex> sides{left};
         ex scale = file::term_scale(left);
         for (const ex& side : c.membership() ? c.members : std::vector<ex>{c.right}) {
-          r.sides.emplace_back(u.solved_form(side), e.symbols);
+          sides.push_back(u.solved_form(side));
           scale += file::term_scale(u.solved_form(side));
         }
-        r.sides.emplace_back(scale, e.symbols);
+        sides.push_back(scale);
+        r.sides.emplace_back(sides, e.symbols);
       }
     }
   }
@@ -562,22 +567,21 @@ Relations compile(Evaluation& e, const models::Point& point, const Rows& rows,
 }
 
 // Whether a relation holds at a point, and whether that is sure (not within the rounding band
-// between 1e-9 and 1e-6 of the terms' size): its sides are sides[slot] (left), then the right
-// side or the members, then the size of the terms; @p slot moves past them. When it does not
-// hold and @p shown is given, the sides as text for a counterexample (formatting them costs more
-// than the rest, so only the first failure of a row asks).
+// between 1e-9 and 1e-6 of the terms' size): its sides are those sides[slot] evaluates (left,
+// then the right side or the members, then the size of the terms); @p slot moves past it. When it
+// does not hold and @p shown is given, the sides as text for a counterexample (formatting them
+// costs more than the rest, so only the first failure of a row asks).
 bool holds(const Compare& c, const std::vector<double>& values,
            const std::vector<TimedExpression>& sides, std::size_t& slot, std::optional<bool>& sure,
            std::string* shown) {
   using K = Relation::Kind;
-  const double left = sides[slot](values, nullptr);
-  std::vector<double> others;
   const std::size_t count = c.membership() ? c.members.size() : 1;
-  for (std::size_t k = 0; k < count; ++k) {
-    others.push_back(sides[slot + 1 + k](values, nullptr));
-  }
-  const double terms = std::max(std::abs(sides[slot + 1 + count](values, nullptr)), 1e-300);
-  slot += 2 + count;
+  std::vector<double> all(count + 2);
+  sides[slot](values, nullptr, all);
+  ++slot;
+  const double left = all[0];
+  const std::span<const double> others(all.data() + 1, count);
+  const double terms = std::max(std::abs(all[count + 1]), 1e-300);
   if (!std::isfinite(left) || !std::isfinite(terms) ||
       !std::all_of(others.begin(), others.end(), [](double x) { return std::isfinite(x); })) {
     sure = std::nullopt;
@@ -699,9 +703,7 @@ ClaimFinding evaluate(FileRun& run, const file::ModelUse& use, const Rows& rows,
     for (std::size_t k = 0; k < n; ++k) {
       RowFinding& row = f.rows[k];
       if (!applies[k]) {
-        for (const Compare& c : rows.conclusions[k]) {
-          slot += 2 + (c.membership() ? c.members.size() : 1);
-        }
+        slot += rows.conclusions[k].size();
         continue;
       }
       std::string failure;

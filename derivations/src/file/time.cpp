@@ -93,19 +93,34 @@ const Legendre& legendre_on_unit() {
 
 }  // namespace
 
-TimedExpression::TimedExpression(const GiNaC::ex& e, const std::vector<GiNaC::ex>& symbols) {
+TimedExpression::TimedExpression(const GiNaC::ex& e, const std::vector<GiNaC::ex>& symbols)
+    : TimedExpression(std::vector<GiNaC::ex>{e}, symbols) {}
+
+TimedExpression::TimedExpression(const std::vector<GiNaC::ex>& expressions,
+                                 const std::vector<GiNaC::ex>& symbols) {
   std::vector<GiNaC::ex> slots = symbols;
   for (std::size_t i = 0; i < symbols.size(); ++i) {
     if (symbols[i].is_equal(pulse_duration())) {
       duration_slot_ = i;
     }
   }
-  root_ = compile(e, slots);
+  for (const GiNaC::ex& e : expressions) {
+    roots_.push_back(compile(e, slots));
+  }
   slots_ = slots.size();
+  outside_.clear();
 }
 
 std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>& slots) {
+  // Outside integrals an expression means the same wherever it stands (inside one, a symbol may
+  // be the integral's variable): compiled once.
+  if (depth_ == 0) {
+    if (const auto found = outside_.find(e); found != outside_.end()) {
+      return found->second;
+    }
+  }
   Op op;
+  op.outside = depth_ == 0;
   if (GiNaC::is_a<GiNaC::numeric>(e)) {
     const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
     if (!n.is_real()) {
@@ -149,7 +164,9 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
     op.kids.push_back(compile(e.op(1), slots));
     op.kids.push_back(compile(e.op(2), slots));
     slots.push_back(e.op(0));  // the variable is bound inside the integrand only
+    ++depth_;
     op.kids.push_back(compile(e.op(3), slots));
+    --depth_;
     slots[op.index] = GiNaC::symbol();  // and its binding ends there
   } else if (GiNaC::is_a<GiNaC::function>(e)) {
     const auto& f = GiNaC::ex_to<GiNaC::function>(e);
@@ -179,6 +196,9 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
     throw std::invalid_argument("an expression that is not a number");
   }
   ops_.push_back(std::move(op));
+  if (depth_ == 0) {
+    outside_.emplace(e, ops_.size() - 1);
+  }
   return ops_.size() - 1;
 }
 
@@ -207,15 +227,33 @@ GiNaC::ex shaped_outside_integrals(const GiNaC::ex& e, const GiNaC::exmap& shape
 }
 
 double TimedExpression::operator()(std::span<const double> values, const PulseShape* shape) const {
+  if (roots_.size() == 1) {
+    double value = 0.0;
+    (*this)(values, shape, std::span<double>(&value, 1));
+    return value;
+  }
+  std::vector<double> all(roots_.size());
+  (*this)(values, shape, all);
+  return all[0];
+}
+
+void TimedExpression::operator()(std::span<const double> values, const PulseShape* shape,
+                                 std::span<double> out) const {
   if (!integrals_ && values.size() >= slots_) {
-    return sweep(values, shape);
+    sweep(values, shape, out);
+    return;
   }
   std::vector<double> slots(values.begin(), values.end());
   slots.resize(slots_, 0.0);
-  return eval(root_, slots, shape);
+  std::vector<double> kept(ops_.size(), 0.0);
+  std::vector<bool> known(ops_.size(), false);
+  for (std::size_t r = 0; r < roots_.size() && r < out.size(); ++r) {
+    out[r] = eval(roots_[r], slots, shape, kept, known);
+  }
 }
 
-double TimedExpression::sweep(std::span<const double> values, const PulseShape* shape) const {
+void TimedExpression::sweep(std::span<const double> values, const PulseShape* shape,
+                            std::span<double> out) const {
   constexpr std::size_t on_stack = 256;
   std::array<double, on_stack> small{};
   const std::unique_ptr<double[]> large(ops_.size() > on_stack ? new double[ops_.size()] : nullptr);
@@ -254,7 +292,9 @@ double TimedExpression::sweep(std::span<const double> values, const PulseShape* 
         break;
     }
   }
-  return results[root_];
+  for (std::size_t r = 0; r < roots_.size() && r < out.size(); ++r) {
+    out[r] = results[roots_[r]];
+  }
 }
 
 double TimedExpression::apply(const Op& op, const double* operands, const PulseShape* shape) const {
@@ -295,9 +335,21 @@ double TimedExpression::apply(const Op& op, const double* operands, const PulseS
   }
 }
 
-double TimedExpression::eval(std::size_t index, std::span<double> values,
-                             const PulseShape* shape) const {
+double TimedExpression::eval(std::size_t index, std::span<double> values, const PulseShape* shape,
+                             std::span<double> kept, std::vector<bool>& known) const {
   const Op& op = ops_[index];
+  if (op.outside && op.kind != Op::constant && op.kind != Op::variable) {
+    if (!known[index]) {
+      kept[index] = evaluated(op, values, shape, kept, known);
+      known[index] = true;
+    }
+    return kept[index];
+  }
+  return evaluated(op, values, shape, kept, known);
+}
+
+double TimedExpression::evaluated(const Op& op, std::span<double> values, const PulseShape* shape,
+                                  std::span<double> kept, std::vector<bool>& known) const {
   switch (op.kind) {
     case Op::constant:
       return op.value;
@@ -306,20 +358,20 @@ double TimedExpression::eval(std::size_t index, std::span<double> values,
     case Op::add: {
       double sum = 0.0;
       for (const std::size_t k : op.kids) {
-        sum += eval(k, values, shape);
+        sum += eval(k, values, shape, kept, known);
       }
       return sum;
     }
     case Op::mul: {
       double product = 1.0;
       for (const std::size_t k : op.kids) {
-        product *= eval(k, values, shape);
+        product *= eval(k, values, shape, kept, known);
       }
       return product;
     }
     case Op::integral: {
-      const double a = eval(op.kids[0], values, shape);
-      const double b = eval(op.kids[1], values, shape);
+      const double a = eval(op.kids[0], values, shape, kept, known);
+      const double b = eval(op.kids[1], values, shape, kept, known);
       // Pieces between the pulse's kinks (in t: the kinks times the duration), each by a
       // 24-point Gauss–Legendre rule: smooth pieces are integrated to rounding. (No allocation:
       // an integral inside an integral runs this at every node of the outer one.)
@@ -347,7 +399,7 @@ double TimedExpression::eval(std::size_t index, std::span<double> values,
         const double half = 0.5 * (cuts[piece + 1] - cuts[piece]);
         for (std::size_t k = 0; k < rule.x.size(); ++k) {
           values[op.index] = middle + half * rule.x[k];
-          total += half * rule.w[k] * eval(op.kids[2], values, shape);
+          total += half * rule.w[k] * eval(op.kids[2], values, shape, kept, known);
         }
       }
       values[op.index] = saved;
@@ -356,7 +408,7 @@ double TimedExpression::eval(std::size_t index, std::span<double> values,
     default: {
       std::array<double, 2> operands{};
       for (std::size_t k = 0; k < op.kids.size() && k < operands.size(); ++k) {
-        operands[k] = eval(op.kids[k], values, shape);
+        operands[k] = eval(op.kids[k], values, shape, kept, known);
       }
       return apply(op, operands.data(), shape);
     }

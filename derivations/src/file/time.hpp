@@ -10,6 +10,7 @@
 #include <ginac/ginac.h>
 
 #include <cstddef>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -50,9 +51,18 @@ class TimedExpression {
   /// Compiles @p e over @p symbols (every free symbol must be one of them; the pulse's duration
   /// may be among them). Throws std::invalid_argument on anything else.
   TimedExpression(const GiNaC::ex& e, const std::vector<GiNaC::ex>& symbols);
+  /// Compiles several expressions together, for their values at the same points: a part they
+  /// share outside integrals (an integral in a difference and in the size of its terms) is
+  /// evaluated once.
+  TimedExpression(const std::vector<GiNaC::ex>& expressions, const std::vector<GiNaC::ex>& symbols);
   /// The value at @p values (one per symbol), the pulses shaped by @p shape (a constant force
-  /// when null).
+  /// when null): the first expression's.
   [[nodiscard]] double operator()(std::span<const double> values, const PulseShape* shape) const;
+  /// The value of every expression, in their order, into @p out (one per expression).
+  void operator()(std::span<const double> values, const PulseShape* shape,
+                  std::span<double> out) const;
+  /// How many expressions it evaluates.
+  [[nodiscard]] std::size_t size() const { return roots_.size(); }
 
  private:
   struct Op {
@@ -75,17 +85,27 @@ class TimedExpression {
     double value = 0.0;             // constant; the exponent of an integer power
     std::size_t index = 0;          // variable slot; integral: the slot of its variable
     std::vector<std::size_t> kids;  // operands; integral: lower, upper, integrand
+    bool outside = false;           // outside every integral: the same at every node of one
   };
   std::size_t compile(const GiNaC::ex& e, std::vector<GiNaC::ex>& slots);
-  double eval(std::size_t op, std::span<double> values, const PulseShape* shape) const;
+  // Each operation outside integrals is evaluated once in a call: @p known says which are, and
+  // @p kept holds their values.
+  double eval(std::size_t op, std::span<double> values, const PulseShape* shape,
+              std::span<double> kept, std::vector<bool>& known) const;
+  double evaluated(const Op& op, std::span<double> values, const PulseShape* shape,
+                   std::span<double> kept, std::vector<bool>& known) const;
   // Without integrals: every operation once, in order (operands come before their operation).
-  double sweep(std::span<const double> values, const PulseShape* shape) const;
+  void sweep(std::span<const double> values, const PulseShape* shape, std::span<double> out) const;
   // One operation, its operands' values at hand.
   double apply(const Op& op, const double* operands, const PulseShape* shape) const;
 
   std::vector<Op> ops_;
   bool integrals_ = false;
-  std::size_t root_ = 0;
+  std::vector<std::size_t> roots_;
+  // While compiling: how many integrals enclose the expression, and the operations compiled
+  // outside every integral, by expression (one operation for a part that recurs there).
+  std::size_t depth_ = 0;
+  std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> outside_;
   std::size_t slots_ = 0;
   std::size_t duration_slot_ = static_cast<std::size_t>(-1);
 };
