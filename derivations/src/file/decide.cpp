@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -380,23 +381,21 @@ ex by_facts(const ex& e, const Facts& facts) {
 }
 
 ex safe_numerator(const ex& e, double terms) {
-  if (expanded_terms(e) > terms) {
-    return e;
-  }
   // Remembered: the exact method asks again for the numerators of the same premises at each
   // step of a file and in each variant of a check, and normal() (a gcd at every fraction) is the
   // costliest call it makes. normal() depends on its argument alone, so a remembered numerator is
   // the one it would compute again. The table is bounded: emptied when full.
   constexpr std::size_t remembered = 4096;
-  thread_local GiNaC::exmap numerators;
-  if (const auto found = numerators.find(e); found != numerators.end()) {
-    return found->second;
+  thread_local std::map<ex, std::pair<double, ex>, GiNaC::ex_is_less> numerators;
+  if (const auto found = numerators.find(e);
+      found != numerators.end() && found->second.first == terms) {
+    return found->second.second;
   }
-  ex numerator = GiNaC::normal(e).numer();
+  ex numerator = expanded_terms(e) > terms ? e : GiNaC::normal(e).numer();
   if (numerators.size() >= remembered) {
     numerators.clear();
   }
-  numerators.emplace(e, numerator);
+  numerators.insert_or_assign(e, std::pair<double, ex>{terms, numerator});
   return numerator;
 }
 
