@@ -415,31 +415,41 @@ void emit(const ex& e, const std::vector<ex>& symbols,
 // terms of a sum by hash values that may differ between processes; floating-point sums in
 // different orders differ in their last bits, and a report must not change with the run.
 std::string canonical(const ex& e) {
+  CanonicalForms made;
+  return canonical(e, made);
+}
+
+std::string canonical(const ex& e, CanonicalForms& made) {
+  if (const auto found = made.find(e); found != made.end()) {
+    return found->second;
+  }
+  std::string key;
   if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
     std::vector<std::string> parts;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      parts.push_back(canonical(e.op(i)));
+      parts.push_back(canonical(e.op(i), made));
     }
     std::sort(parts.begin(), parts.end());
-    std::string key = is_a<GiNaC::add>(e) ? "+(" : "*(";
+    key = is_a<GiNaC::add>(e) ? "+(" : "*(";
     for (const auto& part : parts) {
       key += part + ",";
     }
-    return key + ")";
-  }
-  if (is_a<GiNaC::power>(e)) {
-    return "^(" + canonical(e.op(0)) + "," + canonical(e.op(1)) + ")";
-  }
-  if (is_a<GiNaC::function>(e)) {  // its arguments in their own canonical form
-    std::string key = ex_to<GiNaC::function>(e).get_name() + "(";
+    key += ")";
+  } else if (is_a<GiNaC::power>(e)) {
+    key = "^(" + canonical(e.op(0), made) + "," + canonical(e.op(1), made) + ")";
+  } else if (is_a<GiNaC::function>(e)) {  // its arguments in their own canonical form
+    key = ex_to<GiNaC::function>(e).get_name() + "(";
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      key += canonical(e.op(i)) + ",";
+      key += canonical(e.op(i), made) + ",";
     }
-    return key + ")";
+    key += ")";
+  } else {
+    std::ostringstream out;
+    out << e;
+    key = out.str();
   }
-  std::ostringstream out;
-  out << e;
-  return out.str();
+  made.emplace(e, key);
+  return key;
 }
 
 Compiled compile(const ex& e, const std::vector<ex>& symbols) {

@@ -6,6 +6,7 @@
 
 #include <ginac/ginac.h>
 
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -54,6 +55,13 @@ class Compiled {
 /// A key that orders an expression's operands the same way in every run (GiNaC's own order of a
 /// sum's terms follows hash values that differ between processes): compile in this order.
 [[nodiscard]] std::string canonical(const ex& e);
+
+/// The canonical forms already made, by expression: for a caller that asks for those of the
+/// parts of one expression after those of its whole.
+using CanonicalForms = std::map<ex, std::string, GiNaC::ex_is_less>;
+
+/// canonical(), its parts' forms taken from @p made and the new ones kept there.
+[[nodiscard]] std::string canonical(const ex& e, CanonicalForms& made);
 
 /// Compiles @p e; throws std::invalid_argument on anything but numbers, π, the given symbols,
 /// sums, products, powers and the functions sin, cos, tan, exp, log, abs, their inverses and

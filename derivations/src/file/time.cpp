@@ -109,6 +109,7 @@ TimedExpression::TimedExpression(const std::vector<GiNaC::ex>& expressions,
   }
   slots_ = slots.size();
   outside_.clear();
+  canonical_.clear();
 }
 
 std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>& slots) {
@@ -147,7 +148,7 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
     op.kind = GiNaC::is_a<GiNaC::add>(e) ? Op::add : Op::mul;
     std::vector<std::pair<std::string, std::size_t>> order;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      order.emplace_back(sym::canonical(e.op(i)), i);  // the same order in every run
+      order.emplace_back(sym::canonical(e.op(i), canonical_), i);  // the same order in every run
     }
     std::sort(order.begin(), order.end());
     for (const auto& [key, i] : order) {

@@ -106,6 +106,9 @@ class TimedExpression {
   // outside every integral, by expression (one operation for a part that recurs there).
   std::size_t depth_ = 0;
   std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> outside_;
+  // While compiling: the canonical forms of the parts, which order a sum's or a product's
+  // operands (each part's form is made once, not again for every sum above it).
+  std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> canonical_;
   std::size_t slots_ = 0;
   std::size_t duration_slot_ = static_cast<std::size_t>(-1);
 };
