@@ -110,6 +110,12 @@ TimedExpression::TimedExpression(const std::vector<GiNaC::ex>& expressions,
   slots_ = slots.size();
   outside_.clear();
   canonical_.clear();
+  integrand_of_.assign(ops_.size(), 0);
+  for (std::size_t i = 0; i < ops_.size(); ++i) {
+    if (ops_[i].kind == Op::integral) {
+      integrand_of_[ops_[i].begin] = i;
+    }
+  }
 }
 
 std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>& slots) {
@@ -121,7 +127,6 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
     }
   }
   Op op;
-  op.outside = depth_ == 0;
   if (GiNaC::is_a<GiNaC::numeric>(e)) {
     const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
     if (!n.is_real()) {
@@ -160,12 +165,12 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
     op.kids.push_back(compile(e.op(1), slots));
   } else if (GiNaC::is_a<GiNaC::integral>(e)) {
     op.kind = Op::integral;
-    integrals_ = true;
     op.index = slots.size();
     op.kids.push_back(compile(e.op(1), slots));
     op.kids.push_back(compile(e.op(2), slots));
     slots.push_back(e.op(0));  // the variable is bound inside the integrand only
     ++depth_;
+    op.begin = ops_.size();  // inside an integral nothing is shared: its integrand runs from here
     op.kids.push_back(compile(e.op(3), slots));
     --depth_;
     slots[op.index] = GiNaC::symbol();  // and its binding ends there
@@ -240,34 +245,40 @@ double TimedExpression::operator()(std::span<const double> values, const PulseSh
 
 void TimedExpression::operator()(std::span<const double> values, const PulseShape* shape,
                                  std::span<double> out) const {
-  if (!integrals_ && values.size() >= slots_) {
-    sweep(values, shape, out);
-    return;
-  }
-  std::vector<double> slots(values.begin(), values.end());
-  slots.resize(slots_, 0.0);
-  std::vector<double> kept(ops_.size(), 0.0);
-  std::vector<bool> known(ops_.size(), false);
+  // Every operation's value once (an integrand's at each node of its integral), on the stack
+  // unless the program is large; the slots are the symbols' values, then the integrals'
+  // variables. Each is written before it is read: nothing is initialised.
+  constexpr std::size_t on_stack = 256;
+  std::array<double, on_stack> small_results;  // NOLINT(cppcoreguidelines-pro-type-member-init)
+  std::array<double, on_stack> small_slots;    // NOLINT(cppcoreguidelines-pro-type-member-init)
+  const std::unique_ptr<double[]> large_results(ops_.size() > on_stack ? new double[ops_.size()]
+                                                                       : nullptr);
+  const std::unique_ptr<double[]> large_slots(slots_ > on_stack ? new double[slots_] : nullptr);
+  double* results = large_results ? large_results.get() : small_results.data();
+  double* slots = large_slots ? large_slots.get() : small_slots.data();
+  const std::size_t given = std::min(values.size(), slots_);
+  std::copy_n(values.begin(), given, slots);
+  std::fill(slots + given, slots + slots_, 0.0);
+  run(0, ops_.size(), slots, shape, results);
   for (std::size_t r = 0; r < roots_.size() && r < out.size(); ++r) {
-    out[r] = eval(roots_[r], slots, shape, kept, known);
+    out[r] = results[roots_[r]];
   }
 }
 
-void TimedExpression::sweep(std::span<const double> values, const PulseShape* shape,
-                            std::span<double> out) const {
-  constexpr std::size_t on_stack = 256;
-  std::array<double, on_stack> small{};
-  const std::unique_ptr<double[]> large(ops_.size() > on_stack ? new double[ops_.size()] : nullptr);
-  double* results = large ? large.get() : small.data();
+void TimedExpression::run(std::size_t begin, std::size_t end, double* slots,
+                          const PulseShape* shape, double* results) const {
   std::array<double, 2> operands{};
-  for (std::size_t i = 0; i < ops_.size(); ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
+    if (i != begin && integrand_of_[i] != 0) {
+      i = integrand_of_[i];  // the integrand is the integral's to run
+    }
     const Op& op = ops_[i];
     switch (op.kind) {
       case Op::constant:
         results[i] = op.value;
         break;
       case Op::variable:
-        results[i] = values[op.index];
+        results[i] = slots[op.index];
         break;
       case Op::add: {
         double sum = 0.0;
@@ -285,6 +296,9 @@ void TimedExpression::sweep(std::span<const double> values, const PulseShape* sh
         results[i] = product;
         break;
       }
+      case Op::integral:
+        results[i] = integral(op, slots, shape, results);
+        break;
       default:
         for (std::size_t k = 0; k < op.kids.size() && k < operands.size(); ++k) {
           operands[k] = results[op.kids[k]];
@@ -293,9 +307,46 @@ void TimedExpression::sweep(std::span<const double> values, const PulseShape* sh
         break;
     }
   }
-  for (std::size_t r = 0; r < roots_.size() && r < out.size(); ++r) {
-    out[r] = results[roots_[r]];
+}
+
+double TimedExpression::integral(const Op& op, double* slots, const PulseShape* shape,
+                                 double* results) const {
+  const double a = results[op.kids[0]];
+  const double b = results[op.kids[1]];
+  // Pieces between the pulse's kinks (in t: the kinks times the duration), each by a 24-point
+  // Gauss–Legendre rule: smooth pieces are integrated to rounding. (No allocation: an integral
+  // inside an integral runs this at every node of the outer one.)
+  std::array<double, 16> cuts{a, b};
+  std::size_t count = 2;
+  if (shape != nullptr && duration_slot_ < slots_) {
+    const double duration = slots[duration_slot_];
+    const auto cut = [&](double t) {
+      if ((t - a) * (t - b) < 0 && count < cuts.size()) {
+        cuts[count++] = t;
+      }
+    };
+    for (const double kink : shape->kinks) {
+      cut(kink * duration);
+    }
+    cut(0.0);  // the pulse starts and stops there
+    cut(duration);
   }
+  std::sort(cuts.begin(), cuts.begin() + static_cast<std::ptrdiff_t>(count));
+  const Legendre& rule = legendre_on_unit();
+  const std::size_t integrand = op.kids[2];
+  const double saved = slots[op.index];
+  double total = 0.0;
+  for (std::size_t piece = 0; piece + 1 < count; ++piece) {
+    const double middle = 0.5 * (cuts[piece] + cuts[piece + 1]);
+    const double half = 0.5 * (cuts[piece + 1] - cuts[piece]);
+    for (std::size_t k = 0; k < rule.x.size(); ++k) {
+      slots[op.index] = middle + half * rule.x[k];
+      run(op.begin, integrand + 1, slots, shape, results);
+      total += half * rule.w[k] * results[integrand];
+    }
+  }
+  slots[op.index] = saved;
+  return b < a ? -total : total;  // the pieces run from the smaller limit up
 }
 
 double TimedExpression::apply(const Op& op, const double* operands, const PulseShape* shape) const {
@@ -333,86 +384,6 @@ double TimedExpression::apply(const Op& op, const double* operands, const PulseS
     }
     default:
       return std::nan("");
-  }
-}
-
-double TimedExpression::eval(std::size_t index, std::span<double> values, const PulseShape* shape,
-                             std::span<double> kept, std::vector<bool>& known) const {
-  const Op& op = ops_[index];
-  if (op.outside && op.kind != Op::constant && op.kind != Op::variable) {
-    if (!known[index]) {
-      kept[index] = evaluated(op, values, shape, kept, known);
-      known[index] = true;
-    }
-    return kept[index];
-  }
-  return evaluated(op, values, shape, kept, known);
-}
-
-double TimedExpression::evaluated(const Op& op, std::span<double> values, const PulseShape* shape,
-                                  std::span<double> kept, std::vector<bool>& known) const {
-  switch (op.kind) {
-    case Op::constant:
-      return op.value;
-    case Op::variable:
-      return values[op.index];
-    case Op::add: {
-      double sum = 0.0;
-      for (const std::size_t k : op.kids) {
-        sum += eval(k, values, shape, kept, known);
-      }
-      return sum;
-    }
-    case Op::mul: {
-      double product = 1.0;
-      for (const std::size_t k : op.kids) {
-        product *= eval(k, values, shape, kept, known);
-      }
-      return product;
-    }
-    case Op::integral: {
-      const double a = eval(op.kids[0], values, shape, kept, known);
-      const double b = eval(op.kids[1], values, shape, kept, known);
-      // Pieces between the pulse's kinks (in t: the kinks times the duration), each by a
-      // 24-point Gauss–Legendre rule: smooth pieces are integrated to rounding. (No allocation:
-      // an integral inside an integral runs this at every node of the outer one.)
-      std::array<double, 16> cuts{a, b};
-      std::size_t count = 2;
-      if (shape != nullptr && duration_slot_ < values.size()) {
-        const double duration = values[duration_slot_];
-        const auto cut = [&](double t) {
-          if ((t - a) * (t - b) < 0 && count < cuts.size()) {
-            cuts[count++] = t;
-          }
-        };
-        for (const double kink : shape->kinks) {
-          cut(kink * duration);
-        }
-        cut(0.0);  // the pulse starts and stops there
-        cut(duration);
-      }
-      std::sort(cuts.begin(), cuts.begin() + static_cast<std::ptrdiff_t>(count));
-      const Legendre& rule = legendre_on_unit();
-      const double saved = values[op.index];
-      double total = 0.0;
-      for (std::size_t piece = 0; piece + 1 < count; ++piece) {
-        const double middle = 0.5 * (cuts[piece] + cuts[piece + 1]);
-        const double half = 0.5 * (cuts[piece + 1] - cuts[piece]);
-        for (std::size_t k = 0; k < rule.x.size(); ++k) {
-          values[op.index] = middle + half * rule.x[k];
-          total += half * rule.w[k] * eval(op.kids[2], values, shape, kept, known);
-        }
-      }
-      values[op.index] = saved;
-      return b < a ? -total : total;  // the pieces run from the smaller limit up
-    }
-    default: {
-      std::array<double, 2> operands{};
-      for (std::size_t k = 0; k < op.kids.size() && k < operands.size(); ++k) {
-        operands[k] = eval(op.kids[k], values, shape, kept, known);
-      }
-      return apply(op, operands.data(), shape);
-    }
   }
 }
 

@@ -82,25 +82,25 @@ class TimedExpression {
       integral
     };
     Kind kind = constant;
-    double value = 0.0;             // constant; the exponent of an integer power
+    double value = 0.0;             // constant
     std::size_t index = 0;          // variable slot; integral: the slot of its variable
     std::vector<std::size_t> kids;  // operands; integral: lower, upper, integrand
-    bool outside = false;           // outside every integral: the same at every node of one
+    std::size_t begin = 0;          // integral: the first operation of its integrand
   };
   std::size_t compile(const GiNaC::ex& e, std::vector<GiNaC::ex>& slots);
-  // Each operation outside integrals is evaluated once in a call: @p known says which are, and
-  // @p kept holds their values.
-  double eval(std::size_t op, std::span<double> values, const PulseShape* shape,
-              std::span<double> kept, std::vector<bool>& known) const;
-  double evaluated(const Op& op, std::span<double> values, const PulseShape* shape,
-                   std::span<double> kept, std::vector<bool>& known) const;
-  // Without integrals: every operation once, in order (operands come before their operation).
-  void sweep(std::span<const double> values, const PulseShape* shape, std::span<double> out) const;
+  // The operations from @p begin to @p end, in order (operands come before their operation), into
+  // @p results; an integral's integrand among them is run by the integral, at each of its nodes.
+  void run(std::size_t begin, std::size_t end, double* slots, const PulseShape* shape,
+           double* results) const;
+  // An integral's value, its limits among @p results.
+  double integral(const Op& op, double* slots, const PulseShape* shape, double* results) const;
   // One operation, its operands' values at hand.
   double apply(const Op& op, const double* operands, const PulseShape* shape) const;
 
   std::vector<Op> ops_;
-  bool integrals_ = false;
+  // For the first operation of an integrand, the integral's (a run over operations skips the
+  // integrand there); zero for the others.
+  std::vector<std::size_t> integrand_of_;
   std::vector<std::size_t> roots_;
   // While compiling: how many integrals enclose the expression, and the operations compiled
   // outside every integral, by expression (one operation for a part that recurs there).
