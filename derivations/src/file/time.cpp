@@ -91,6 +91,19 @@ const Legendre& legendre_on_unit() {
   return rule;
 }
 
+// A power with a whole exponent up to 64 is multiplied out: the same rounding on every platform.
+bool whole_exponent(double exponent) {
+  return exponent == std::round(exponent) && std::abs(exponent) <= 64;
+}
+
+double whole_power(double base, double exponent) {
+  double r = 1.0;
+  for (int k = 0; k < static_cast<int>(std::abs(exponent)); ++k) {
+    r *= base;
+  }
+  return exponent < 0 ? 1.0 / r : r;
+}
+
 }  // namespace
 
 TimedExpression::TimedExpression(const GiNaC::ex& e, const std::vector<GiNaC::ex>& symbols)
@@ -163,6 +176,8 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
     op.kind = Op::power;
     op.kids.push_back(compile(e.op(0), slots));
     op.kids.push_back(compile(e.op(1), slots));
+    const Op& exponent = ops_[op.kids[1]];
+    op.whole = exponent.kind == Op::constant && whole_exponent(exponent.value);
   } else if (GiNaC::is_a<GiNaC::integral>(e)) {
     op.kind = Op::integral;
     op.index = slots.size();
@@ -299,6 +314,12 @@ void TimedExpression::run(std::size_t begin, std::size_t end, double* slots,
       case Op::integral:
         results[i] = integral(op, slots, shape, results);
         break;
+      case Op::power:
+        if (op.whole) {  // its exponent a constant: known whole when compiled
+          results[i] = whole_power(results[op.kids[0]], ops_[op.kids[1]].value);
+          break;
+        }
+        [[fallthrough]];
       default:
         for (std::size_t k = 0; k < op.kids.size() && k < operands.size(); ++k) {
           operands[k] = results[op.kids[k]];
@@ -354,12 +375,8 @@ double TimedExpression::apply(const Op& op, const double* operands, const PulseS
     case Op::power: {
       const double base = operands[0];
       const double exponent = operands[1];
-      if (exponent == std::round(exponent) && std::abs(exponent) <= 64) {
-        double r = 1.0;
-        for (int k = 0; k < static_cast<int>(std::abs(exponent)); ++k) {
-          r *= base;
-        }
-        return exponent < 0 ? 1.0 / r : r;
+      if (whole_exponent(exponent)) {
+        return whole_power(base, exponent);
       }
       return std::pow(base, exponent);
     }

@@ -86,6 +86,7 @@ class TimedExpression {
     std::size_t index = 0;          // variable slot; integral: the slot of its variable
     std::vector<std::size_t> kids;  // operands; integral: lower, upper, integrand
     std::size_t begin = 0;          // integral: the first operation of its integrand
+    bool whole = false;             // power: a constant whole exponent
   };
   std::size_t compile(const GiNaC::ex& e, std::vector<GiNaC::ex>& slots);
   // The operations from @p begin to @p end, in order (operands come before their operation), into
