@@ -40,25 +40,27 @@ std::vector<ex> symbols_of(const std::vector<ex>& expressions) {
   return list;
 }
 
-double expanded_terms(const ex& e) {
+namespace {
+
+double terms_of(const ex& e) {
   constexpr double cap = 1e12;
   if (is_a<GiNaC::add>(e)) {
     double sum = 0;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      sum += expanded_terms(e.op(i));
+      sum += terms_of(e.op(i));
     }
     return std::min(sum, cap);
   }
   if (is_a<GiNaC::mul>(e)) {
     double product = 1;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      product = std::min(product * expanded_terms(e.op(i)), cap);
+      product = std::min(product * terms_of(e.op(i)), cap);
     }
     return product;
   }
   if (is_a<GiNaC::power>(e) && is_a<numeric>(e.op(1)) &&
       GiNaC::ex_to<numeric>(e.op(1)).is_integer()) {
-    const double base = expanded_terms(e.op(0));
+    const double base = terms_of(e.op(0));
     const double n = std::abs(GiNaC::ex_to<numeric>(e.op(1)).to_double());
     if (base <= 1) {
       return 1;
@@ -72,6 +74,28 @@ double expanded_terms(const ex& e) {
     return std::min(count, std::pow(base, n) < cap ? std::pow(base, n) : cap);
   }
   return 1;
+}
+
+}  // namespace
+
+double expanded_terms(const ex& e) {
+  if (e.nops() == 0) {
+    return 1;  // a symbol or a number
+  }
+  // Remembered: the exact method bounds its work by the terms of the same premises and targets
+  // again and again, and a walk over a large expression costs more than looking it up. The
+  // table is bounded: emptied when full.
+  constexpr std::size_t remembered = 4096;
+  thread_local std::map<ex, double, GiNaC::ex_is_less> counted;
+  if (const auto found = counted.find(e); found != counted.end()) {
+    return found->second;
+  }
+  const double terms = terms_of(e);
+  if (counted.size() >= remembered) {
+    counted.clear();
+  }
+  counted.emplace(e, terms);
+  return terms;
 }
 
 bool factorable(const ex& e) {
