@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <memory>
 
 #include "file/decide.hpp"
@@ -20,28 +21,51 @@ namespace impulse::derivations::file {
 using GiNaC::ex;
 using GiNaC::is_a;
 
-ex term_scale(const ex& e) {
+namespace {
+
+ex scale_of(const ex& e) {
   // The size of the terms that cancel when e is evaluated in floating point: sums add the sizes
   // of their terms, products and whole powers multiply them, so that (F + dt) m at F = -dt is
   // measured against |F| + |dt|, not against its own rounding.
   if (is_a<GiNaC::add>(e)) {
     ex sum = 0;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      sum += term_scale(e.op(i));
+      sum += scale_of(e.op(i));
     }
     return sum;
   }
   if (is_a<GiNaC::mul>(e)) {
     ex product = 1;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      product *= term_scale(e.op(i));
+      product *= scale_of(e.op(i));
     }
     return product;
   }
   if (is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::posint)) {
-    return GiNaC::pow(term_scale(e.op(0)), e.op(1));
+    return GiNaC::pow(scale_of(e.op(0)), e.op(1));
   }
   return GiNaC::abs(e);
+}
+
+}  // namespace
+
+ex term_scale(const ex& e) {
+  if (e.nops() == 0) {
+    return GiNaC::abs(e);  // a symbol or a number
+  }
+  // Remembered: the model evaluator asks for the sizes of the same statements' terms for each
+  // model a check names and in each of its variants. The table is bounded: emptied when full.
+  constexpr std::size_t remembered = 4096;
+  thread_local std::map<ex, ex, GiNaC::ex_is_less> sizes;
+  if (const auto found = sizes.find(e); found != sizes.end()) {
+    return found->second;
+  }
+  ex size = scale_of(e);
+  if (sizes.size() >= remembered) {
+    sizes.clear();
+  }
+  sizes.emplace(e, size);
+  return size;
 }
 
 namespace {
