@@ -251,16 +251,17 @@ void Evaluation::match(Unknowns& u, const std::vector<std::size_t>& unknown) {
 void Evaluation::solve_linear(Unknowns& u, const std::vector<ex>& equations,
                               const std::vector<ex>& solved) {
   bool linear = true;
+  std::vector<ex> numerators;
   for (const ex& e : equations) {
-    const ex numerator = GiNaC::normal(e).numer();
+    numerators.push_back(GiNaC::normal(e).numer());
     for (const ex& s : solved) {
-      linear = linear && numerator.is_polynomial(s) && numerator.degree(s) <= 1;
+      linear = linear && numerators.back().is_polynomial(s) && numerators.back().degree(s) <= 1;
     }
   }
   if (linear) {
     GiNaC::lst system, names;
     for (std::size_t q = 0; q < equations.size(); ++q) {
-      system.append(GiNaC::normal(equations[q]).numer() == 0);
+      system.append(numerators[q] == 0);
       names.append(solved[q]);
     }
     try {
