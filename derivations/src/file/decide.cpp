@@ -42,25 +42,25 @@ std::vector<ex> symbols_of(const std::vector<ex>& expressions) {
 
 namespace {
 
-double terms_of(const ex& e) {
+double counted_terms(const ex& e) {
   constexpr double cap = 1e12;
   if (is_a<GiNaC::add>(e)) {
     double sum = 0;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      sum += terms_of(e.op(i));
+      sum += counted_terms(e.op(i));
     }
     return std::min(sum, cap);
   }
   if (is_a<GiNaC::mul>(e)) {
     double product = 1;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      product = std::min(product * terms_of(e.op(i)), cap);
+      product = std::min(product * counted_terms(e.op(i)), cap);
     }
     return product;
   }
   if (is_a<GiNaC::power>(e) && is_a<numeric>(e.op(1)) &&
       GiNaC::ex_to<numeric>(e.op(1)).is_integer()) {
-    const double base = terms_of(e.op(0));
+    const double base = counted_terms(e.op(0));
     const double n = std::abs(GiNaC::ex_to<numeric>(e.op(1)).to_double());
     if (base <= 1) {
       return 1;
@@ -90,7 +90,7 @@ double expanded_terms(const ex& e) {
   if (const auto found = counted.find(e); found != counted.end()) {
     return found->second;
   }
-  const double terms = terms_of(e);
+  const double terms = counted_terms(e);
   if (counted.size() >= remembered) {
     counted.clear();
   }
