@@ -6,9 +6,11 @@
 
 #include <ginac/ginac.h>
 
+#include <cstddef>
 #include <map>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace impulse::derivations::sym {
@@ -62,6 +64,29 @@ using CanonicalForms = std::map<ex, std::string, GiNaC::ex_is_less>;
 
 /// canonical(), its parts' forms taken from @p made and the new ones kept there.
 [[nodiscard]] std::string canonical(const ex& e, CanonicalForms& made);
+
+/// What a costly function of an expression gave, remembered by expression (structurally equal
+/// expressions are one entry) for a caller that asks again: bounded, emptied when full.
+template <typename Value>
+class Remembered {
+ public:
+  /// The value kept for @p e, or null.
+  [[nodiscard]] const Value* find(const ex& e) const {
+    const auto found = table_.find(e);
+    return found == table_.end() ? nullptr : &found->second;
+  }
+  /// Keeps @p value for @p e (in place of one kept before) and returns it.
+  const Value& keep(const ex& e, Value value) {
+    if (table_.size() >= bound) {
+      table_.clear();
+    }
+    return table_.insert_or_assign(e, std::move(value)).first->second;
+  }
+
+ private:
+  static constexpr std::size_t bound = 4096;
+  std::map<ex, Value, GiNaC::ex_is_less> table_;
+};
 
 /// Compiles @p e; throws std::invalid_argument on anything but numbers, π, the given symbols,
 /// sums, products, powers and the functions sin, cos, tan, exp, log, abs, their inverses and

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <set>
 #include <sstream>
 
@@ -83,19 +82,12 @@ double expanded_terms(const ex& e) {
     return 1;  // a symbol or a number
   }
   // Remembered: the exact method bounds its work by the terms of the same premises and targets
-  // again and again, and a walk over a large expression costs more than looking it up. The
-  // table is bounded: emptied when full.
-  constexpr std::size_t remembered = 4096;
-  thread_local std::map<ex, double, GiNaC::ex_is_less> counted;
-  if (const auto found = counted.find(e); found != counted.end()) {
-    return found->second;
+  // again and again, and a walk over a large expression costs more than looking it up.
+  thread_local sym::Remembered<double> counted;
+  if (const double* found = counted.find(e)) {
+    return *found;
   }
-  const double terms = counted_terms(e);
-  if (counted.size() >= remembered) {
-    counted.clear();
-  }
-  counted.emplace(e, terms);
-  return terms;
+  return counted.keep(e, counted_terms(e));
 }
 
 bool factorable(const ex& e) {
@@ -408,19 +400,13 @@ ex safe_numerator(const ex& e, double terms) {
   // Remembered: the exact method asks again for the numerators of the same premises at each
   // step of a file and in each variant of a check, and normal() (a gcd at every fraction) is the
   // costliest call it makes. normal() depends on its argument alone, so a remembered numerator is
-  // the one it would compute again. The table is bounded: emptied when full.
-  constexpr std::size_t remembered = 4096;
-  thread_local std::map<ex, std::pair<double, ex>, GiNaC::ex_is_less> numerators;
-  if (const auto found = numerators.find(e);
-      found != numerators.end() && found->second.first == terms) {
-    return found->second.second;
+  // the one it would compute again (kept with the bound it was asked for).
+  thread_local sym::Remembered<std::pair<double, ex>> numerators;
+  if (const auto* found = numerators.find(e); found != nullptr && found->first == terms) {
+    return found->second;
   }
   ex numerator = expanded_terms(e) > terms ? e : GiNaC::normal(e).numer();
-  if (numerators.size() >= remembered) {
-    numerators.clear();
-  }
-  numerators.insert_or_assign(e, std::pair<double, ex>{terms, numerator});
-  return numerator;
+  return numerators.keep(e, {terms, std::move(numerator)}).second;
 }
 
 namespace {

@@ -52,14 +52,19 @@ std::vector<ex> FileRun::symbols_of_name(std::string_view latex) {
   return names_[key] = v.vector ? std::vector<ex>{v.x, v.y} : std::vector<ex>{v.x};
 }
 
+std::vector<ex> FileRun::slots_of(const std::vector<std::string>& inputs) {
+  std::vector<ex> slots;
+  for (const std::string& input : inputs) {
+    const std::vector<ex> named = symbols_of_name(input);
+    slots.insert(slots.end(), named.begin(), named.end());
+  }
+  return slots;
+}
+
 std::optional<ex> FileRun::definition(std::string_view symbol,
                                       const std::vector<std::string>& inputs) {
   try {
-    std::vector<ex> slots;
-    for (const std::string& input : inputs) {
-      const std::vector<ex> named = symbols_of_name(input);
-      slots.insert(slots.end(), named.begin(), named.end());
-    }
+    const std::vector<ex> slots = slots_of(inputs);
     const ex e = file::exact_reading(symbols_of_name(symbol)[0].subs(probe_substitutions_));
     for (const ex& s : file::symbols_of(std::vector<ex>{e})) {
       if (std::none_of(slots.begin(), slots.end(), [&](const ex& x) { return x.is_equal(s); })) {
@@ -83,12 +88,7 @@ std::function<double(std::span<const double>)> FileRun::function(
     return nothing;
   }
   try {
-    std::vector<ex> slots;
-    for (const std::string& input : inputs) {
-      const std::vector<ex> named = symbols_of_name(input);
-      slots.insert(slots.end(), named.begin(), named.end());
-    }
-    file::TimedExpression compiled(*e, slots);
+    file::TimedExpression compiled(*e, slots_of(inputs));
     return [compiled = std::move(compiled)](std::span<const double> values) {
       return compiled(values, nullptr);
     };

@@ -97,6 +97,8 @@ class FileRun : public models::Probe {
     ModelPoints made;
   };
 
+  /// The symbols @p inputs name, in their order (a vector's components one after the other).
+  std::vector<ex> slots_of(const std::vector<std::string>& inputs);
   /// The file's definition of @p symbol in @p inputs as the probe reads it now, or nothing.
   std::optional<ex> definition(std::string_view symbol, const std::vector<std::string>& inputs);
 

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <map>
 #include <memory>
 
 #include "file/decide.hpp"
@@ -54,18 +53,12 @@ ex term_scale(const ex& e) {
     return GiNaC::abs(e);  // a symbol or a number
   }
   // Remembered: the model evaluator asks for the sizes of the same statements' terms for each
-  // model a check names and in each of its variants. The table is bounded: emptied when full.
-  constexpr std::size_t remembered = 4096;
-  thread_local std::map<ex, ex, GiNaC::ex_is_less> sizes;
-  if (const auto found = sizes.find(e); found != sizes.end()) {
-    return found->second;
+  // model a check names and in each of its variants.
+  thread_local sym::Remembered<ex> sizes;
+  if (const ex* found = sizes.find(e)) {
+    return *found;
   }
-  ex size = scale_of(e);
-  if (sizes.size() >= remembered) {
-    sizes.clear();
-  }
-  sizes.emplace(e, size);
-  return size;
+  return sizes.keep(e, scale_of(e));
 }
 
 namespace {

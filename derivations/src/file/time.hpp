@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "symbolic.hpp"
+
 namespace impulse::derivations::file {
 
 /// The shape of a contact force: u = t / duration, mean 1 over [0, 1], zero outside.
@@ -109,7 +111,7 @@ class TimedExpression {
   std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> outside_;
   // While compiling: the canonical forms of the parts, which order a sum's or a product's
   // operands (each part's form is made once, not again for every sum above it).
-  std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> canonical_;
+  sym::CanonicalForms canonical_;
   std::size_t slots_ = 0;
   std::size_t duration_slot_ = static_cast<std::size_t>(-1);
 };
