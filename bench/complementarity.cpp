@@ -11,6 +11,10 @@
 //   complementarity_lemke/<scene>       Lemke's pivoting on the same problem
 //   friction_complementarity/<scene>    Coulomb friction (mu = 0.5 at every contact, Newton's law)
 //                                       as one complementarity problem
+//   serial/<scene>                      serial collisions, each the paper's formula (to their end
+//                                       or their bound of 1000 per contact: the stack reaches it)
+//   serial_friction/<scene>             serial collisions, each the exact rule with friction
+//                                       (mu = 0.5, Newton's law)
 //
 // Scenes (bench/scenes.hpp, seed 1): stack (50 boxes, 100 contacts), cradle (101 balls),
 // pyramid (100 contacts, dependent), and rough_stack, the stack sliding sideways at 1 (so that
@@ -19,7 +23,9 @@
 #include <benchmark/benchmark.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "impulse/methods/complementarity.hpp"
@@ -99,6 +105,28 @@ void friction(benchmark::State& state, const std::string& kind) {
   state.counters["solved"] = solved ? 1 : 0;
 }
 
+// `rough`: mu = 0.5 at every contact, each collision by the exact rule; else the paper's formula.
+void serial(benchmark::State& state, const std::string& kind, bool rough) {
+  const mp::Configuration c = configuration(kind);
+  me::Options options;
+  if (rough) {
+    options.friction.assign(c.contacts().size(), 0.5);
+  }
+  std::int64_t collisions = 0;
+  bool finished = true;
+  for (auto _ : state) {
+    const me::Paper p = me::paper(c, {});
+    me::Outcome o = rough ? me::serial_exact(c, p, options) : me::serial(c, p, options);
+    benchmark::DoNotOptimize(o.after.data());
+    benchmark::ClobberMemory();
+    collisions =
+        static_cast<std::int64_t>(std::get<me::SerialDiagnostics>(o.solution).order.size());
+    finished = o.finished;
+  }
+  state.counters["iterations"] = static_cast<double>(collisions);  // the collisions
+  state.counters["solved"] = finished ? 1 : 0;
+}
+
 void register_all() {
   for (const std::string kind : {"stack", "cradle", "pyramid", "rough_stack"}) {
     benchmark::RegisterBenchmark(("paper/" + kind).c_str(), paper, kind)
@@ -115,6 +143,12 @@ void register_all() {
   }
   for (const std::string kind : {"stack", "rough_stack"}) {
     benchmark::RegisterBenchmark(("friction_complementarity/" + kind).c_str(), friction, kind)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("serial_friction/" + kind).c_str(), serial, kind, true)
+        ->Unit(benchmark::kMillisecond);
+  }
+  for (const std::string kind : {"stack", "cradle"}) {
+    benchmark::RegisterBenchmark(("serial/" + kind).c_str(), serial, kind, false)
         ->Unit(benchmark::kMillisecond);
   }
 }

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
-#include <queue>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,63 +66,105 @@ namespace serial_detail {
 using Eigen::Index;
 
 // The approaching contacts by approach speed, fastest first, the lowest index among equal speeds:
-// a heap of (speed, contact) entries of the contacts faster than the threshold (no other can be
-// chosen). A contact whose speed changes gets a new entry if it approaches; its old one stays
-// behind and is skipped when it comes up (its speed is no longer the contact's). The heap is
-// rebuilt from the speeds when stale entries outnumber the contacts.
+// a tournament over the contacts (a complete binary tree whose leaves are the contacts and whose
+// every node holds the better of its two children), so that the fastest is at the root and a
+// change of speeds costs a walk from their leaves to the root, each node above them settled once
+// (the contacts of two touching bodies share most of that walk). A contact not faster than the
+// threshold (no other can be chosen) takes part as slower than every other.
 class Fastest {
  public:
   Fastest(const Eigen::VectorXd& speeds, double threshold)
-      : speeds_(speeds), threshold_(threshold) {
-    rebuild();
+      : threshold_(threshold), key_(static_cast<std::size_t>(speeds.size())) {
+    while (leaves_ < speeds.size()) {
+      leaves_ *= 2;
+    }
+    node_.assign(2 * static_cast<std::size_t>(leaves_), none);
+    round_of_.assign(node_.size(), 0);
+    path_.assign(static_cast<std::size_t>(leaves_), 0);
+    for (Index v = 0; v < speeds.size(); ++v) {
+      key_[static_cast<std::size_t>(v)] = key(speeds(v));
+      node_[static_cast<std::size_t>(leaves_ + v)] = v;
+    }
+    for (Index at = leaves_ - 1; at >= 1; --at) {
+      settle(at);
+    }
+  }
+
+  // A change of speeds: begin(), then set() for each contact whose speed changed, then settle().
+  void begin() {
+    ++round_;
+    waiting_ = 0;
+  }
+
+  // Whether contact v has not been set since begin().
+  [[nodiscard]] bool unset(Index v) const {
+    return round_of_[static_cast<std::size_t>(leaves_ + v)] != round_;
   }
 
   // Contact v's speed is now `speed`.
-  void update(Index v, double speed) {
-    speeds_(v) = speed;
-    if (speed > threshold_) {
-      heap_.push({speed, v});
-      if (heap_.size() > 4 * static_cast<std::size_t>(speeds_.size()) + 64) {
-        rebuild();
+  void set(Index v, double speed) {
+    key_[static_cast<std::size_t>(v)] = key(speed);
+    round_of_[static_cast<std::size_t>(leaves_ + v)] = round_;
+    wait((leaves_ + v) / 2);
+  }
+
+  // The nodes above the contacts set, level by level.
+  void settle() {
+    while (waiting_ > 0) {
+      const std::size_t level = std::exchange(waiting_, 0);
+      for (std::size_t k = 0; k < level; ++k) {
+        const Index at = path_[k];
+        settle(at);
+        if (at > 1) {
+          wait(at / 2);
+        }
       }
     }
   }
 
   // The fastest approaching contact (the first of equal speeds) and its speed, or nothing when
   // no contact approaches.
-  [[nodiscard]] std::optional<std::pair<Index, double>> top() {
-    while (!heap_.empty() && heap_.top().speed != speeds_(heap_.top().contact)) {
-      heap_.pop();  // a stale entry
-    }
-    if (heap_.empty()) {
+  [[nodiscard]] std::optional<std::pair<Index, double>> top() const {
+    const Index v = node_[1];
+    if (v == none || key_[static_cast<std::size_t>(v)] == slower) {
       return std::nullopt;
     }
-    return std::pair{heap_.top().contact, heap_.top().speed};
+    return std::pair{v, key_[static_cast<std::size_t>(v)]};
   }
 
  private:
-  struct Entry {
-    double speed;
-    Index contact;
-    // The heap's top is its largest entry: the larger speed, then the smaller contact index.
-    bool operator<(const Entry& other) const {
-      return speed < other.speed || (speed == other.speed && contact > other.contact);
-    }
-  };
+  static constexpr Index none = -1;
+  static constexpr double slower = -std::numeric_limits<double>::infinity();
 
-  void rebuild() {
-    std::vector<Entry> entries;
-    for (Index v = 0; v < speeds_.size(); ++v) {
-      if (speeds_(v) > threshold_) {
-        entries.push_back({speeds_(v), v});
-      }
+  // A speed as the tournament compares it: itself when faster than the threshold.
+  [[nodiscard]] double key(double speed) const { return speed > threshold_ ? speed : slower; }
+
+  // Node `at` is to settle in this round (once).
+  void wait(Index at) {
+    if (std::exchange(round_of_[static_cast<std::size_t>(at)], round_) != round_) {
+      path_[waiting_++] = at;
     }
-    heap_ = std::priority_queue<Entry>(std::less<Entry>(), std::move(entries));
   }
 
-  Eigen::VectorXd speeds_;
+  // Node `at` holds the better of its children: the faster, the left one (lower indices) on a tie.
+  void settle(Index at) {
+    const Index left = node_[static_cast<std::size_t>(2 * at)];
+    const Index right = node_[static_cast<std::size_t>(2 * at + 1)];
+    node_[static_cast<std::size_t>(at)] =
+        right != none && (left == none || key_[static_cast<std::size_t>(right)] >
+                                              key_[static_cast<std::size_t>(left)])
+            ? right
+            : left;
+  }
+
   double threshold_;
-  std::priority_queue<Entry> heap_;
+  std::vector<double> key_;  // each contact's key()
+  Index leaves_ = 1;         // the leaves, a power of two: contact v at node leaves_ + v
+  std::vector<Index> node_;  // node 1 the root, node k's children 2k and 2k + 1; `none` if empty
+  std::vector<std::uint64_t> round_of_;  // the last round in which each node was set or waited
+  std::uint64_t round_ = 0;              // begin()'s count
+  std::vector<Index> path_;              // the nodes waiting to settle, one level's
+  std::size_t waiting_ = 0;              // how many
 };
 
 }  // namespace serial_detail
@@ -191,13 +233,17 @@ struct SerialCollisions::State {
     r.Fdt(v) += *Fdt;
     r.diagnostics.order.push_back(v);
     bool finite = true;
+    fastest->begin();
     for (const std::size_t body : {c.bumper, c.wedge}) {
       for (const Touch& t : configuration.touches(body)) {
-        const double changed = configuration.approach(r.after, t.contact);
-        finite = finite && std::isfinite(changed);
-        fastest->update(t.contact, changed);
+        if (fastest->unset(t.contact)) {  // (a contact between the two is in both lists)
+          const double changed = configuration.approach(r.after, t.contact);
+          finite = finite && std::isfinite(changed);
+          fastest->set(t.contact, changed);
+        }
       }
     }
+    fastest->settle();
     if (!finite) {
       r.diagnostics.status = SerialStatus::non_finite;
     }
