@@ -54,6 +54,7 @@ TEST_CASE("The default limits are the documented ones", "[scene][json][limits]")
   CHECK(limits.max_depth == 64);
   CHECK(limits.max_bodies == 1'000'000);
   CHECK(limits.max_contacts == 1'000'000);
+  CHECK(limits.max_keys == 64);
   CHECK(impulse::dense_limit == 2'048);  // the library's rule now, for files and C++ alike
   CHECK(refusal(row_of(3)) == "(accepted)");
 }
@@ -116,6 +117,30 @@ TEST_CASE("Bodies and contacts beyond their limits are refused while parsing",
   }
   many.append("]}");
   CHECK(refusal(many) == "s.json: contacts: more than 1000000 contacts, the most a scene may hold");
+}
+
+TEST_CASE("An object with more keys than the limit is refused at the first key too many",
+          "[scene][json][limits]") {
+  // The parser looks each key up among those before it in its object (it keeps the file's
+  // order), so a million keys would take hours: the 65th is refused as it is read.
+  std::string body = R"({"bodies": [{"name": "a", "kind": "material", "mass": 1, "velocity": 1)";
+  for (int k = 5; k <= 200'000; ++k) {
+    body.append(", \"k").append(std::to_string(k)).append("\": 0");
+  }
+  body.append("}]}");
+  CHECK(refusal(body) ==
+        "s.json: bodies[0].k65: more than 64 keys in one object, the most a scene may hold");
+  // At the limit the object goes on to the reader (which refuses the unknown key k5).
+  sc::ReadLimits few;
+  few.max_keys = 5;
+  CHECK_THAT(refusal(R"({"dimension": 1, "bodies": [{"name": "a", "kind": "material",
+                                     "mass": 1, "velocity": 1, "k5": 0}]})",
+                     few),
+             Contains("bodies[0].k5: unknown key"));
+  CHECK(refusal(R"({"bodies": [{"name": "a", "kind": "material", "mass": 1, "velocity": 1,
+                                "k5": 0, "k6": 0}]})",
+                few) ==
+        "s.json: bodies[0].k6: more than 5 keys in one object, the most a scene may hold");
 }
 
 TEST_CASE("The dense method's policies are refused above their limit of contacts",

@@ -34,6 +34,10 @@ namespace impulse::scene {
 /// - `max_bodies` and `max_contacts`, 1,000,000 each: ten times the largest scene bench/
 ///   measures (100,000 contacts: 0.1 to 0.6 s and under 200 MiB with the sparse method, which
 ///   grows about linearly). Counted while parsing, so an array is refused at its limit.
+/// - `max_keys`, 64: the keys of one object (a body has at most 10). The parser keeps an object's
+///   members in the order of the file and looks a key up among those before it, so an object
+///   of a million keys would take hours; counted while parsing, refused at the first key too
+///   many.
 ///
 /// The rules of a scene's contents (among them impulse::dense_limit, the most contacts the
 /// policies `basic` and `drop-equation` may have, and the bound on serial collisions) are the
@@ -43,6 +47,7 @@ struct ReadLimits {
   std::size_t max_depth = 64;                      ///< arrays and objects inside each other
   std::size_t max_bodies = 1'000'000;              ///< elements of `bodies`
   std::size_t max_contacts = 1'000'000;            ///< elements of `contacts`
+  std::size_t max_keys = 64;                       ///< keys of one object
 };
 
 /// @brief Reads a scene from the text of a scene file (see the scene format) and checks it.
