@@ -208,6 +208,9 @@ VectorXd settled_solution(const FrictionLcp& lcp, const VectorXd& z) {
 // an attempt met numbers that are not finite.
 bool lemke_attempts(const FrictionSystem& system, double tolerance, FrictionSolution& s,
                     bool& found) {
+  if (found && s.residual <= tolerance * s.scale) {
+    return false;  // solved already (the pivoting on modes): no tableau of 4N x 4N is built
+  }
   const Index n = system.B.size();
   const FrictionLcp lcp = friction_lcp(system);
   const Index orders = std::min<Index>(2 * n, 8);
@@ -299,11 +302,13 @@ FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool
   if (least_norm && all_finite_in(system.W) && all_finite_in(system.u0) &&
       all_finite_in(system.B)) {
     // First the pivoting on the contacts' modes, started from the normal impulses without
-    // friction; Lemke's method only if it does not end at a solution. Stacks of 100 to 200
-    // contacts take 20 to 50 steps; a problem that takes more (a pyramid's dependent contacts
-    // make it cycle) goes to Lemke's method after at most 20 + N/2 of them.
+    // friction; Lemke's method only if it does not end at a solution (and has at most
+    // lemke_friction_limit contacts). A change of mode travels about one box of a stack per
+    // step: stacks of 100 to 200 contacts take 20 to 50 steps, of 700 contacts 358; a problem
+    // that takes more than 20 + N (a pyramid's dependent contacts make it cycle) goes on to
+    // Lemke's method.
     const detail::ModePivoting modes =
-        detail::pivot_modes(system, start, tolerance, static_cast<int>(20 + n / 2));
+        detail::pivot_modes(system, start, tolerance, static_cast<int>(20 + n));
     if (modes.solved) {
       found = true;
       s.algorithm = FrictionAlgorithm::modes;
@@ -313,7 +318,10 @@ FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool
       s.residual = friction_residual(system, s.normal, s.tangential, s.scale);
     }
   }
-  if (lemke_attempts(system, tolerance, s, found)) {
+  if (!(found && s.residual <= tolerance * s.scale) &&
+      static_cast<std::size_t>(n) > lemke_friction_limit) {
+    s.lemke_too_large = true;  // (the pivoting on modes' answer, if any, stays: inaccurate)
+  } else if (lemke_attempts(system, tolerance, s, found)) {
     s.status = LcpStatus::non_finite;
     s.normal.setConstant(std::numeric_limits<double>::quiet_NaN());
     s.tangential = s.normal;
@@ -402,10 +410,19 @@ Outcome complementarity_friction(const multipoint::Configuration& configuration,
   if (s.status == LcpStatus::infeasible) {
     o.finished = false;
     o.unfinished =
-        "complementarity with friction: Lemke's pivoting ended on a ray after " +
-        counted(static_cast<std::size_t>(s.pivots), "pivot", "pivots") +
-        ", without impulses (the contacts may wedge: pushes within their friction cones that "
-        "move nothing); the serial method (--method serial) resolves one collision at a time";
+        s.lemke_too_large
+            ? "complementarity with friction: the pivoting on the contacts' modes did not end at "
+              "impulses that meet the conditions, and Lemke's method, its fallback, takes at "
+              "most " +
+                  std::to_string(lemke_friction_limit) + " contacts (its dense tableau of " +
+                  unknowns +
+                  " would take hours); the serial method (--method serial) resolves one "
+                  "collision at a time"
+            : "complementarity with friction: Lemke's pivoting ended on a ray after " +
+                  counted(static_cast<std::size_t>(s.pivots), "pivot", "pivots") +
+                  ", without impulses (the contacts may wedge: pushes within their friction "
+                  "cones that move nothing); the serial method (--method serial) resolves one "
+                  "collision at a time";
   }
   o.details.push_back("Coulomb friction as one complementarity problem (" + unknowns +
                       "): " + detail::law_words(configuration, options));

@@ -100,9 +100,18 @@ struct FrictionSolution {
   /// that leave every velocity as Lemke's answer has it, when they still meet the conditions
   /// (true); otherwise Lemke's own vertex (false).
   bool least_norm = false;
-  /// The algorithm that found the impulses (added after the fields above, which keep their order).
+  /// The algorithm that found the impulses.
   FrictionAlgorithm algorithm = FrictionAlgorithm::lemke;
+  /// Whether Lemke's method was left out because the problem has more than
+  /// lemke_friction_limit contacts (then `infeasible` means that the pivoting on modes did not
+  /// end, `pivots` its changes of mode).
+  bool lemke_too_large = false;
 };
+
+/// @brief The most contacts for which solve_friction() falls back on Lemke's method: its dense
+/// tableau holds 4N × (8N + 1) numbers (16 MiB at 256 contacts, 1 GiB at 2,048) and each pivot
+/// costs as many operations, so that beyond this a fallback would run for hours.
+inline constexpr std::size_t lemke_friction_limit = 256;
 
 /// @brief Solves the friction problem of @p system by pivoting on the contacts' modes or, where
 /// that does not end at a solution, by Lemke's method (lemke_lcp()), then chooses
