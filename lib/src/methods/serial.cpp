@@ -159,7 +159,9 @@ class Fastest {
 
   double threshold_;
   std::vector<double> key_;  // each contact's key()
-  Index leaves_ = 1;         // the leaves, a power of two: contact v at node leaves_ + v
+  // The leaves, a power of two and at least two (so that the root is not a leaf): contact v at
+  // node leaves_ + v.
+  Index leaves_ = 2;
   std::vector<Index> node_;  // node 1 the root, node k's children 2k and 2k + 1; `none` if empty
   std::vector<std::uint64_t> round_of_;  // the last round in which each node was set or waited
   std::uint64_t round_ = 0;              // begin()'s count
