@@ -50,8 +50,7 @@ mp::Configuration configuration(const std::string& kind) {
       }
     }
   }
-  return {scene.bodies, std::vector<impulse::Elasticity>(scene.bodies.size(), scene.elasticity),
-          scene.contacts};
+  return impulse::scenes::configuration(scene);
 }
 
 void paper(benchmark::State& state, const std::string& kind) {

@@ -22,8 +22,7 @@ namespace me = impulse::methods;
 mp::Configuration stack(benchmark::State& state) {
   const impulse::scenes::Scene scene =
       impulse::scenes::stack(static_cast<std::size_t>(state.range(0)), 1);
-  return {scene.bodies, std::vector<impulse::Elasticity>(scene.bodies.size(), scene.elasticity),
-          scene.contacts};
+  return impulse::scenes::configuration(scene);
 }
 
 // The frictionless problem, by Lemke's pivoting (the algorithm the friction problem uses).

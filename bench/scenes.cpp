@@ -167,6 +167,11 @@ Scene generate(std::string_view kind, std::size_t contacts, std::uint64_t seed) 
   throw InvalidInput(message);
 }
 
+multipoint::Configuration configuration(const Scene& scene) {
+  return {scene.bodies, std::vector<Elasticity>(scene.bodies.size(), scene.elasticity),
+          scene.contacts};
+}
+
 std::string to_json(const Scene& scene) {
   std::string out("{\n  \"dimension\": 2,\n  \"elasticity\": ");
   out.append(number(scene.elasticity.value())).append(",\n  \"bodies\": [\n");

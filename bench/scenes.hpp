@@ -61,6 +61,11 @@ struct Scene {
 /// @return the scene
 [[nodiscard]] Scene generate(std::string_view kind, std::size_t contacts, std::uint64_t seed = 1);
 
+/// @brief The scene's bodies, elasticities (everyone's) and contacts, checked.
+/// @param scene the scene
+/// @return its configuration
+[[nodiscard]] multipoint::Configuration configuration(const Scene& scene);
+
 /// @brief The scene as a scene file (shared/spec/scene-format.md): dimension 2, the elasticity,
 /// the bodies (rigid: mass, inertia, position, velocity, angular_velocity; material: mass,
 /// velocity; static: nothing else) and the contacts by body name.

@@ -26,9 +26,6 @@ impulse::ContactSystem system_of(const impulse::scenes::Scene& s) {
                       s.contacts);
 }
 
-mp::Configuration configuration_of(const impulse::scenes::Scene& s) {
-  return {s.bodies, std::vector<impulse::Elasticity>(s.bodies.size(), s.elasticity), s.contacts};
-}
 }  // namespace
 
 TEST_CASE("Above 256 contacts: projected Gauss-Seidel, started from the paper's impulses",
@@ -141,7 +138,7 @@ TEST_CASE("Above its limit of contacts, friction's complementarity does not fall
         box->p.x() += box->mass;  // sliding sideways at 1 as it lands
       }
     }
-    const mp::Configuration c = configuration_of(scene);
+    const mp::Configuration c = impulse::scenes::configuration(scene);
     REQUIRE(c.contacts().size() > me::lemke_friction_limit);
     const std::vector<double> mu(c.contacts().size(), 0.5);
     const me::FrictionResolution r = me::resolve_friction_complementarity(c, mu);

@@ -18,11 +18,6 @@ namespace me = impulse::methods;
 
 namespace {
 
-mp::Configuration configuration_of(const impulse::scenes::Scene& scene) {
-  return {scene.bodies, std::vector<impulse::Elasticity>(scene.bodies.size(), scene.elasticity),
-          scene.contacts};
-}
-
 // Bit for bit: the same collisions in the same order, the same sums and the same bodies after.
 void require_same(const me::SerialResolution& a, const me::SerialResolution& b) {
   REQUIRE(a.diagnostics.order == b.diagnostics.order);
@@ -49,7 +44,7 @@ TEST_CASE("Serial collisions in slices end where one call ends, bit for bit",
   // 21 balls (elasticity 2) ends after one collision per contact; the pyramid (1.2) in between.
   for (const char* kind : {"stack", "cradle", "pyramid"}) {
     const auto scene = impulse::scenes::generate(kind, 40);
-    const mp::Configuration configuration = configuration_of(scene);
+    const mp::Configuration configuration = impulse::scenes::configuration(scene);
     const me::SerialResolution whole = me::resolve_serial(configuration);
     for (const std::int64_t slice : {1, 7, 1000}) {
       CAPTURE(kind, slice);
@@ -70,7 +65,7 @@ TEST_CASE("Serial collisions in slices end where one call ends, bit for bit",
 TEST_CASE("Serial collisions in slices: the end is seen without another call", "[methods]") {
   // The cradle of 3 balls needs 2 collisions: a slice of 2 ends them, and says so.
   const auto scene = impulse::scenes::generate("cradle", 2);
-  const mp::Configuration configuration = configuration_of(scene);
+  const mp::Configuration configuration = impulse::scenes::configuration(scene);
   me::SerialCollisions collisions(configuration);
   CHECK(collisions.advance(2));
   CHECK(collisions.collisions() == 2);
@@ -79,7 +74,7 @@ TEST_CASE("Serial collisions in slices: the end is seen without another call", "
   // A bound of 3 on the stack: the third collision's slice ends at the bound, with what still
   // approaches.
   const auto stack = impulse::scenes::generate("stack", 10);
-  const mp::Configuration stacked = configuration_of(stack);
+  const mp::Configuration stacked = impulse::scenes::configuration(stack);
   me::SerialCollisions bounded(stacked, {.max_collisions = 3});
   CHECK_FALSE(bounded.advance(2));
   CHECK(bounded.advance(1));
@@ -90,7 +85,7 @@ TEST_CASE("Serial collisions in slices: the end is seen without another call", "
 
 TEST_CASE("The serial method in slices gives serial()'s outcome", "[methods][section5]") {
   const auto scene = impulse::scenes::generate("stack", 40);
-  const mp::Configuration configuration = configuration_of(scene);
+  const mp::Configuration configuration = impulse::scenes::configuration(scene);
   const me::Options options;
   const me::Paper paper = me::paper(configuration, options.solver);
   const me::Outcome whole = me::serial(configuration, paper, options);

@@ -145,9 +145,7 @@ TEST_CASE("The page's scenes of 100 contacts: the paper's answer, with no pivot"
   for (const char* kind : {"stack", "pyramid", "cradle"}) {
     CAPTURE(kind);
     const auto scene = impulse::scenes::generate(kind, 100, 1);
-    const mp::Configuration c(scene.bodies,
-                              std::vector<Elasticity>(scene.bodies.size(), scene.elasticity),
-                              scene.contacts);
+    const mp::Configuration c = impulse::scenes::configuration(scene);
     const impulse::ContactSystem system = c.assemble();
     const impulse::Solution paper = impulse::solve(system);
     REQUIRE(paper.Fdt.minCoeff() > 0.0);
