@@ -86,16 +86,24 @@ TEST_CASE("Serial collisions on a stack of 150 boxes reach their bound", "[metho
   CHECK(passed.diagnostics.passes == 1);
 }
 
-TEST_CASE("Friction's complementarity on a sliding stack of 400 boxes ends by pivoting on modes",
+TEST_CASE("Friction's complementarity on a tall sliding stack ends by pivoting on modes",
           "[methods][friction]") {
   // collide.html's stack made taller: boxes 2 wide and 1 high (m = 1, I = (4 + 1)/12 = 5/12),
   // each on the one below (the first on the ground) at its two corners, landing at (1, -1).
-  // A change of mode travels about one box per step, so the steps grow with the height: this
-  // stack takes more than the 20 + N/2 steps once allowed, after which Lemke's method on 3,200
+  // A change of mode travels about one box per step, so the steps grow with the height: 400
+  // boxes take more than the 20 + N/2 steps once allowed, after which Lemke's method on 3,200
   // unknowns ran on (stopped after 30 s; on 500 boxes after 15 minutes).
+#ifdef NDEBUG
+  constexpr std::size_t boxes = 400;
+#else
+  // Unoptimised Eigen (the asan preset's Debug build) took 97 s for 400 boxes. The sanitizers
+  // look for memory errors and undefined behaviour, which a lower stack reaches through the same
+  // code; only the optimised builds (ci, eigen-only) go past the old bound of steps.
+  constexpr std::size_t boxes = 100;
+#endif
   std::vector<mp::Body> bodies{mp::StaticBody{}};
   std::vector<mp::Contact> contacts;
-  for (std::size_t k = 0; k < 400; ++k) {
+  for (std::size_t k = 0; k < boxes; ++k) {
     impulse::rigid_2d::RigidBody box;
     box.inertia = 5.0 / 12.0;
     box.position = {0.0, static_cast<double>(k) + 0.5};
