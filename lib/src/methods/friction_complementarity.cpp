@@ -208,9 +208,6 @@ VectorXd settled_solution(const FrictionLcp& lcp, const VectorXd& z) {
 // an attempt met numbers that are not finite.
 bool lemke_attempts(const FrictionSystem& system, double tolerance, FrictionSolution& s,
                     bool& found) {
-  if (found && s.residual <= tolerance * s.scale) {
-    return false;  // solved already (the pivoting on modes): no tableau of 4N x 4N is built
-  }
   const Index n = system.B.size();
   const FrictionLcp lcp = friction_lcp(system);
   const Index orders = std::min<Index>(2 * n, 8);
@@ -318,10 +315,12 @@ FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool
       s.residual = friction_residual(system, s.normal, s.tangential, s.scale);
     }
   }
-  if (!(found && s.residual <= tolerance * s.scale) &&
-      static_cast<std::size_t>(n) > lemke_friction_limit) {
+  // Lemke's method (its tableau of 4N x (8N + 1) built) only where the pivoting on modes left
+  // no answer within the tolerance, and only up to its limit of contacts.
+  const bool settled = found && s.residual <= tolerance * s.scale;
+  if (!settled && static_cast<std::size_t>(n) > lemke_friction_limit) {
     s.lemke_too_large = true;  // (the pivoting on modes' answer, if any, stays: inaccurate)
-  } else if (lemke_attempts(system, tolerance, s, found)) {
+  } else if (!settled && lemke_attempts(system, tolerance, s, found)) {
     s.status = LcpStatus::non_finite;
     s.normal.setConstant(std::numeric_limits<double>::quiet_NaN());
     s.tangential = s.normal;
