@@ -170,3 +170,26 @@ TEST_CASE("The JSON report has the contract's keys", "[derivations][notation]") 
   CHECK(json["summary"]["does-not-follow"] == 1);
   CHECK(d::exit_status(report) == 1);
 }
+
+TEST_CASE("What is left of a step is shown factored, without terms that cancel",
+          "[derivations][notation]") {
+  // From ΔK = ½ m v² (1 - e)(1 + e) the step ΔK = J² (1 - e) / (2 m (1 + e)) leaves, over one
+  // denominator (by hand):
+  //   ½ m v² (1 - e)(1 + e) - J² (1 - e) / (2 m (1 + e))
+  //     = (1 - e) (m² v² (1 + e)² - J²) / (2 m (1 + e))
+  //     = (1 - e) (m v (1 + e) - J) (m v (1 + e) + J) / (2 m (1 + e)).
+  // GiNaC 1.8's factorisation wrote each of the two last factors with terms that cancel,
+  // (e v + v) m - 10 (1 + e) m + 10 e m + 10 m - J, and that was what the report showed.
+  const auto report = d::check_derivation(
+      "assume: m > 0, 0 \\le e \\le 1\n\n$$\\Delta K = \\frac12 m v^2 (1-e)(1+e)$$\n\n"
+      "$$\\Delta K = \\frac{J^2 (1-e)}{2 m (1+e)}$$\n",
+      "energy.md");
+  REQUIRE(report.equations.size() == 2);
+  const auto& step = report.equations[1];
+  REQUIRE(step.verdict == d::Verdict::does_not_follow);
+  CAPTURE(step.residual, step.residual_text);
+  CHECK(step.residual.find("10") == std::string::npos);
+  CHECK(step.residual.find("e m v + m v - J") != std::string::npos);
+  CHECK(step.residual.find("e m v + m v + J") != std::string::npos);
+  CHECK(step.residual.find("1 - e") != std::string::npos);
+}

@@ -90,6 +90,24 @@ double expanded_terms(const ex& e) {
   return counted.keep(e, counted_terms(e));
 }
 
+ex factored(const ex& e) {
+  const auto tidy = [](const ex& f) {
+    if (is_a<GiNaC::power>(f)) {
+      return GiNaC::pow(GiNaC::expand(f.op(0)), f.op(1));
+    }
+    return GiNaC::expand(f);
+  };
+  const ex product = GiNaC::factor(e);
+  if (!is_a<GiNaC::mul>(product)) {
+    return tidy(product);
+  }
+  ex tidied = 1;
+  for (std::size_t i = 0; i < product.nops(); ++i) {
+    tidied *= tidy(product.op(i));
+  }
+  return tidied;
+}
+
 bool factorable(const ex& e) {
   // GiNaC's factoring (square-free decomposition, then gcds over many variables) takes a time
   // that depends on the order it gives the variables and grows fast with their number: a
@@ -137,7 +155,7 @@ std::vector<ex> doubtful_factors(const ex& e, const Facts& facts) {
       }
     }
   }
-  const ex product = factorable(rest) ? GiNaC::factor(rest) : rest;
+  const ex product = factorable(rest) ? factored(rest) : rest;
   const auto one = [&](const ex& f) {
     if (is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1))) {
       add(f.op(0));
@@ -290,10 +308,10 @@ ex exponential(const ex& y, const Facts& facts) {
 // absolute value dropped where the facts give f's sign.
 ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts) {
   // A polynomial under the root factored where that is cheap: M^2 + 2 M m + m^2 is (M + m)^2.
-  const auto factored = [](const ex& f) {
+  const auto in_factors = [](const ex& f) {
     if (is_a<GiNaC::add>(f) && factorable(f)) {
       try {
-        return GiNaC::factor(f);
+        return factored(f);
       } catch (const std::exception&) {
       }
     }
@@ -302,9 +320,9 @@ ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts)
   ex base = 1;
   const auto each = [&](const ex& f) {
     if (is_a<GiNaC::power>(f)) {
-      base *= GiNaC::pow(factored(f.op(0)), f.op(1));
+      base *= GiNaC::pow(in_factors(f.op(0)), f.op(1));
     } else {
-      base *= factored(f);
+      base *= in_factors(f);
     }
   };
   if (is_a<GiNaC::mul>(given_base)) {

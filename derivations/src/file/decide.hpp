@@ -84,6 +84,12 @@ inline constexpr double most_expanded_terms = 4000;
 /// polynomial of many symbols and high degrees can take minutes).
 [[nodiscard]] bool factorable(const GiNaC::ex& e);
 
+/// GiNaC's factorisation of @p e, each factor expanded: GiNaC 1.8 can leave terms that cancel
+/// inside a factor of several variables ((e v + v) m - 10 (1 + e) m + 10 e m + 10 m - J), which
+/// a reader would be shown and which hide the factor's sign from the facts. Throws as
+/// GiNaC::factor does.
+[[nodiscard]] GiNaC::ex factored(const GiNaC::ex& e);
+
 /// The factors of @p e (a polynomial) that the facts do not show to be non-zero, each once,
 /// without numeric factors. Empty when @p e is a non-zero constant.
 [[nodiscard]] std::vector<GiNaC::ex> doubtful_factors(const GiNaC::ex& e, const Facts& facts);

@@ -65,7 +65,7 @@ ex readable(const ex& e) {
     return n;  // shown over one denominator, unfactored
   }
   try {
-    return GiNaC::factor(n.numer()) / GiNaC::factor(n.denom());
+    return factored(n.numer()) / factored(n.denom());
   } catch (const std::exception&) {
     return n;
   }
@@ -668,7 +668,7 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
         continue;
       }
       // c is d times something the facts keep from zero (1/m + …/I and I m (…)).
-      if (facts.nonzero(GiNaC::factor(GiNaC::normal(c / d)))) {
+      if (facts.nonzero(factored(GiNaC::normal(c / d)))) {
         return true;
       }
     }
@@ -682,7 +682,7 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
   for (const ex& c : forward.conditions) {
     if (facts.nonzero(c) || given_as_written(c) || given_by_equality(c) ||
         facts.nonzero(in_sines(c)) ||
-        (expanded_terms(c) <= 200 && facts.nonzero(GiNaC::factor(GiNaC::normal(c))))) {
+        (expanded_terms(c) <= 200 && facts.nonzero(factored(GiNaC::normal(c))))) {
       continue;
     }
     std::vector<ex> premises = before.differences;
