@@ -59,6 +59,11 @@ const std::map<std::string, Expected> expected{
     // The \frac of dy/dx (line 5, column 3): y is no declared function, so its derivative
     // would be 0 (read as d y over d x it would cancel to y / x).
     {"derivative.md", {5, 3, "nothing in y is declared a function"}},
+    // The p of \mathrm{d}p (line 5, column 30): dp is one symbol, which would have nothing to do
+    // with the function p.
+    {"differential-of-function.md", {5, 30, "p is declared a function"}},
+    // The second \mathrm, of \mathrm{d}(m v) (line 3, column 20).
+    {"differential-of-expression.md", {3, 20, "of an expression it is not read"}},
 };
 
 std::string read(const std::filesystem::path& path) {

@@ -3,6 +3,7 @@
 // calls the same must follow from each other ("follows"); writings of different things must not.
 // A test of the form "$$X = c$$ $$Y = c$$ → follows" can fail: were X and Y read as different
 // symbols or values, the step would not follow and a counterexample would show it.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -70,6 +71,30 @@ TEST_CASE("Symbols: subscripts, primes, accents, \\Delta and dt", "[derivations]
     names.push_back(v.symbol);
   }
   CHECK(names == std::vector<std::string>{"F", "\\Delta E_o", "a", "dt"});
+}
+
+TEST_CASE("A differential written \\mathrm{d}p is one symbol", "[derivations][notation]") {
+  // The contract's example, F \mathrm{d}t = \mathrm{d}p: the differential is a symbol of its own,
+  // not the product of a symbol d and p.
+  same("\\mathrm{d}p", "\\text{d}p");
+  different("\\mathrm{d}p", "p");
+  different("\\mathrm{d}p", "\\mathrm{d}p_1");
+  // Read as products, d p = d p_1 + d p_2 would give p = p_1 + p_2 wherever d is not 0 (a
+  // condition on a "d" the file never wrote). Differentials that add up say nothing of the
+  // quantities: p = 1, p_1 = 1, p_2 = -1 with dp = 0, dp_1 = -1, dp_2 = 1 breaks the step.
+  const d::DerivationReport report = d::check_derivation(
+      "$$\\mathrm{d}p = \\mathrm{d}p_1 + \\mathrm{d}p_2$$\n\n$$p = p_1 + p_2$$\n",
+      "differentials.md");
+  REQUIRE(report.equations.at(1).verdict == d::Verdict::does_not_follow);
+  std::vector<std::string> names;
+  for (const auto& v : report.equations.at(1).counterexample) {
+    names.push_back(v.symbol);
+  }
+  CHECK(std::find(names.begin(), names.end(), "d") == names.end());
+  CHECK(std::find(names.begin(), names.end(), "\\mathrm{d}p") != names.end());
+  // Divided by dt, as the paper does: F dt = dp gives F = dp / dt.
+  CHECK(verdicts("$$F\\,\\mathrm{d}t = \\mathrm{d}p$$\n\n$$F = \\mathrm{d}p / \\mathrm{d}t$$") ==
+        std::vector<std::string>{"premise", "follows-if"});
 }
 
 TEST_CASE("Vectors of the plane", "[derivations][notation]") {

@@ -157,9 +157,7 @@ class DimensionWalk {
 
   Maybe product(const Node& n) {
     Maybe total = Dimension{};
-    const auto factors = merged_factors(n, [&](const SymbolName& name) {
-      return s_.differentials_.contains(s_.resolve(name).unprimed().latex());
-    });
+    const auto factors = s_.factors(n);
     for (const auto& [factor, op] : factors) {
       const auto d = walk(factor);
       if (!d || !total) {

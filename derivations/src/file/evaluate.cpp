@@ -79,22 +79,42 @@ bool whole(const ex& e) {
 
 }  // namespace
 
-// d followed by a symbol declared with `differentials:` is that symbol's differential.
-std::vector<std::pair<Node, char>> merged_factors(
-    const Node& product, const std::function<bool(const SymbolName&)>& differential) {
+std::vector<std::pair<Node, char>> Symbols::factors(const Node& product) const {
   std::vector<std::pair<Node, char>> factors;
   for (std::size_t i = 0; i < product.children.size(); ++i) {
     const Node& c = product.children[i];
     const bool d = c.kind == NodeKind::symbol && c.symbol.base == "d" &&
                    c.symbol.subscript.empty() && c.symbol.primes == 0 && !c.symbol.delta;
-    if (d && i + 1 < product.children.size() && product.ops[i + 1] == ' ' &&
-        product.children[i + 1].kind == NodeKind::symbol &&
-        !product.children[i + 1].symbol.differential &&
-        differential(product.children[i + 1].symbol)) {
-      Node merged = product.children[i + 1];
-      merged.symbol.differential = true;
-      merged.offset = c.offset;
-      factors.emplace_back(std::move(merged), product.ops[i]);
+    const bool upright = d && c.text == upright_d;
+    const Node* next = i + 1 < product.children.size() && product.ops[i + 1] == ' ' &&
+                               product.children[i + 1].kind == NodeKind::symbol &&
+                               !product.children[i + 1].symbol.differential
+                           ? &product.children[i + 1]
+                           : nullptr;
+    if (upright && next == nullptr) {
+      throw error(c.offset,
+                  "expected a symbol after \\mathrm{d}: the differential of a symbol "
+                  "(\\mathrm{d}p) is one symbol, of an expression it is not read; name the "
+                  "expression with let: and take the differential of that name");
+    }
+    if (upright && function(next->symbol) != nullptr) {
+      const std::string f = resolve(next->symbol).latex();
+      throw error(next->offset,
+                  "expected a symbol that is not a function after \\mathrm{d}: " + f +
+                      " is declared a function, and \\mathrm{d}" + f +
+                      " would be a symbol unrelated to it; write its derivative times the "
+                      "differential, \\frac{\\mathrm{d}" +
+                      f + "}{\\mathrm{d}t}\\,\\mathrm{d}t");
+    }
+    const bool merged =
+        d && next != nullptr &&
+        (upright ? !is_vector(resolve(next->symbol))
+                 : differentials_.contains(resolve(next->symbol).unprimed().latex()));
+    if (merged) {
+      Node differential = *next;
+      differential.symbol.differential = true;
+      differential.offset = c.offset;
+      factors.emplace_back(std::move(differential), product.ops[i]);
       ++i;
       continue;
     }
@@ -450,9 +470,7 @@ class Evaluator {
   }
 
   Value product(const Node& n) {
-    const auto factors = merged_factors(n, [&](const SymbolName& name) {
-      return s_.differentials_.contains(s_.resolve(name).unprimed().latex());
-    });
+    const auto factors = s_.factors(n);
     Value acc = eval(factors[0].first);
     for (std::size_t i = 1; i < factors.size(); ++i) {
       const Value next = eval(factors[i].first);

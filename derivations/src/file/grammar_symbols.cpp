@@ -61,6 +61,11 @@ Node Grammar::symbol_atom(std::size_t depth) {
     if (name.base == "d" && peek_raw().kind == Tok::letter && peek_raw().text == "t") {
       take();
       name.base = "dt";
+    } else if (name.base == "d" && first.text != "\\mathit" && first.text != "\\textit") {
+      Node n = make(NodeKind::symbol, first.offset);
+      n.symbol = name;
+      n.text = upright_d;
+      return decorate(depth, std::move(n));
     }
   } else {
     throw error(first, "expected a symbol, found " + describe(first));

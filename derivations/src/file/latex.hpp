@@ -79,13 +79,18 @@ enum class NodeKind {
   dots,          ///< \cdots between the terms of a sum: the terms whose subscripts lie between
 };
 
+/// Node::text of the symbol d written upright: the operator of a differential, not a letter.
+inline constexpr std::string_view upright_d = "\\mathrm{d}";
+
 /// A node of an expression tree, with the span of the file it was read from.
 struct Node {
   NodeKind kind = NodeKind::number;
   std::size_t offset = 0;  ///< where its first token stands in the file
   std::size_t end = 0;     ///< the byte after its last token
-  std::string text;        ///< number: its digits; function: its name
-  SymbolName symbol;       ///< symbol
+  /// number: its digits; function: its name; the symbol d written upright (\mathrm{d}, \text{d}):
+  /// upright_d, the d of a differential
+  std::string text;
+  SymbolName symbol;  ///< symbol
   std::vector<Node> children;
   std::string ops;  ///< sum and product: one operator character per child
 };

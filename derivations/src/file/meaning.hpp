@@ -92,11 +92,6 @@ struct SymbolInfo {
 /// its coefficients); 0 for none.
 [[nodiscard]] std::size_t index_part(const std::string& subscript);
 
-/// The factors of a product, with d and a symbol declared with `differentials:` merged into
-/// that symbol's differential (the operator before each factor: ' ', '.', 'x', '*', '/').
-[[nodiscard]] std::vector<std::pair<Node, char>> merged_factors(
-    const Node& product, const std::function<bool(const SymbolName&)>& differential);
-
 /// The symbols, vectors, definitions and units of one file, as its lines declare them.
 class Symbols {
  public:
@@ -218,6 +213,11 @@ class Symbols {
   Value block_value(const Block& block, std::size_t offset,
                     const std::function<Value(const Node&)>& eval) const;
   std::vector<std::pair<Node, char>> expanded_terms(const Node& sum);
+  // The factors of a product (the operator before each: ' ', '.', 'x', '*', '/'), with a
+  // differential merged into one symbol: \mathrm{d} before a scalar symbol, and d before a
+  // symbol declared with `differentials:`. \mathrm{d} before a declared function, or before
+  // no symbol, is refused; before a vector it stays a factor.
+  std::vector<std::pair<Node, char>> factors(const Node& product) const;
   Value block_product(const Value& a, const Value& b, char op, std::size_t offset,
                       std::vector<GiNaC::ex>& denominators) const;
   std::vector<std::string> indices_in(const Node& node) const;
