@@ -172,4 +172,12 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
         std::vector<std::string>{"premise", "follows"});
   CHECK(verdicts("$$y = \\sqrt{V^2}$$\n\n$$y = V$$") !=
         std::vector<std::string>{"premise", "follows"});
+  // √(k/m) = k^{1/2} m^{-1/2} for k, m > 0 (undecided before: the root of a quotient was not
+  // split); with the power of m's root slipped it must not follow (at k = m = 4, x = 1 the step
+  // gives v = 4 where √(k/m) x = 1).
+  const std::string spring = "assume: m > 0, k > 0\n\n$$v = x \\sqrt{k/m}$$\n\n";
+  CHECK(verdicts(spring + "$$v = x k^{0.5} m^{-0.5}$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts(spring + "$$v = x k^{0.5} m^{0.5}$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
 }

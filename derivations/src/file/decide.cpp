@@ -304,8 +304,8 @@ ex exponential(const ex& y, const Facts& facts) {
   return one(expanded);
 }
 
-// (Π f^k)^(p/q): each factor whose power k is a multiple of q comes out as |f|^(k p/q), the
-// absolute value dropped where the facts give f's sign.
+// (Π f^k)^(p/q): each factor the facts keep positive comes out as f^(k p/q), and each whose power
+// k is a multiple of q as |f|^(k p/q), the absolute value dropped where the facts give f's sign.
 ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts) {
   // A polynomial under the root factored where that is cheap: M^2 + 2 M m + m^2 is (M + m)^2.
   const auto in_factors = [](const ex& f) {
@@ -336,6 +336,15 @@ ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts)
   ex outside = 1;
   ex inside = 1;
   const auto one = [&](const ex& factor) {
+    // A factor the facts keep positive comes out whatever its power: (k/m)^(1/2) is
+    // k^(1/2) m^(-1/2) for k, m > 0 (the principal root of f g is f's times g's when f > 0).
+    const bool power = is_a<GiNaC::power>(factor) && is_a<numeric>(factor.op(1)) &&
+                       GiNaC::ex_to<numeric>(factor.op(1)).is_rational();
+    const ex base_of = power ? factor.op(0) : factor;
+    if ((power || !is_a<numeric>(factor)) && facts.sign(base_of) == Sign::positive) {
+      outside *= GiNaC::pow(base_of, (power ? factor.op(1) : ex(1)) * exponent);
+      return;
+    }
     if (is_a<GiNaC::power>(factor) && is_a<numeric>(factor.op(1)) &&
         GiNaC::ex_to<numeric>(factor.op(1)).is_integer() &&
         GiNaC::mod(GiNaC::ex_to<numeric>(factor.op(1)), q).is_zero()) {
