@@ -62,6 +62,9 @@ const std::map<std::string, Expected> expected{
     // The p of \mathrm{d}p (line 5, column 30): dp is one symbol, which would have nothing to do
     // with the function p.
     {"differential-of-function.md", {5, 30, "p is declared a function"}},
+    // The \text of \text{or} (line 5, column 14): x = 3 or x = -3 are cases, one of which
+    // holds; read as two steps, x = -3 would not follow from x^2 = 9 where x = 3.
+    {"cases-joined-by-or.md", {5, 14, "does not join two equations by 'or'"}},
     // The second \mathrm, of \mathrm{d}(m v) (line 3, column 20).
     {"differential-of-expression.md", {3, 20, "of an expression it is not read"}},
 };

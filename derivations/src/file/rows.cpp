@@ -3,6 +3,7 @@
 // at \\ and at the arrows and annotations that separate equations inside a row, each row's tag
 // and label taken, and its sides (between the '=') read by the grammar.
 #include <algorithm>
+#include <cctype>
 
 #include "file/grammar.hpp"
 #include "file/latex.hpp"
@@ -118,6 +119,25 @@ bool words(const std::vector<Token>& tokens, std::size_t open, std::size_t end) 
   return tokens[end - 1].space_before;
 }
 
+// Whether a \text{…} (its '{' at open, end after its '}') holds the word "or" (or "either"): it
+// joins its equations as cases, one of which holds.
+bool disjunction(const std::vector<Token>& tokens, std::size_t open, std::size_t end) {
+  std::vector<std::string> words{""};
+  for (std::size_t k = open + 1; k < end; ++k) {
+    const Token& t = tokens[k];
+    if (t.kind != Tok::letter || t.space_before) {
+      words.emplace_back();
+    }
+    if (t.kind == Tok::letter) {
+      for (const char c : t.text) {
+        words.back() += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      }
+    }
+  }
+  return std::any_of(words.begin(), words.end(),
+                     [](const std::string& w) { return w == "or" || w == "either"; });
+}
+
 // row-steps := [arrow] equations {(arrow | annotation | ',') equations} [annotation]
 // arrow := '\Rightarrow' | '\implies' | '\therefore' | '\Longrightarrow'   (a step)
 //        | '\iff' | '\Leftrightarrow' | '\Longleftrightarrow'                (an equivalence)
@@ -184,6 +204,13 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
                                     tokens.end());
       if (holds_relation(current.tokens) && equation_follows(end, true)) {
         // an annotation between two equations, or at the end of the row
+        if (!blank_tokens(rest) && disjunction(tokens, open, end)) {
+          throw source.error(t.offset,
+                             "expected an annotation that does not join two equations by 'or': "
+                             "each equation of a row is a step that must hold, not one of "
+                             "cases; write the cases as one equation (a product equal to zero) or "
+                             "each in a derivation of its own");
+        }
         next_piece(Join::row, first_offset(rest, t.offset));
         k = end - 1;
         continue;
