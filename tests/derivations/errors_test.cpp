@@ -62,6 +62,9 @@ const std::map<std::string, Expected> expected{
     // The p of \mathrm{d}p (line 5, column 30): dp is one symbol, which would have nothing to do
     // with the function p.
     {"differential-of-function.md", {5, 30, "p is declared a function"}},
+    // The g of v^2/2g (line 5, column 12): (v^2/2) g as read from left to right, v^2/(2g) as a
+    // student means it.
+    {"division-then-product.md", {5, 12, "a/b c could be a over b, times c"}},
     // The \text of \text{or} (line 5, column 14): x = 3 or x = -3 are cases, one of which
     // holds; read as two steps, x = -3 would not follow from x^2 = 9 where x = 3.
     {"cases-joined-by-or.md", {5, 14, "does not join two equations by 'or'"}},

@@ -73,6 +73,22 @@ TEST_CASE("Symbols: subscripts, primes, accents, \\Delta and dt", "[derivations]
   CHECK(names == std::vector<std::string>{"F", "\\Delta E_o", "a", "dt"});
 }
 
+TEST_CASE("A division followed by a product: read where it is not ambiguous",
+          "[derivations][notation]") {
+  // A number over a number, then factors: the half of m v^2.
+  same("1/2 m v^2", "\\frac{1}{2} m v^2");
+  different("1/2 m v^2", "\\frac{1}{2 m} v^2");
+  // Then a differential: F over m, times dt.
+  same("F/m\\,dt", "\\frac{F}{m} dt");
+  // Otherwise refused (errors_test.cpp): v^2/2g.
+  CHECK_THROWS_AS(d::check_derivation("$$h = v^2/2g$$\n", "h.md"), d::DerivationError);
+  CHECK_THROWS_AS(d::check_derivation("$$a = b/c d$$\n", "a.md"), d::DerivationError);
+  // Written with parentheses it is read: a c d = b follows wherever a = b/(c d) is defined, and
+  // not back where c d = 0.
+  CHECK(verdicts("$$a = b/(c d)$$\n\n$$a c d = b$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
+}
+
 TEST_CASE("A differential written \\mathrm{d}p is one symbol", "[derivations][notation]") {
   // The contract's example, F \mathrm{d}t = \mathrm{d}p: the differential is a symbol of its own,
   // not the product of a symbol d and p.

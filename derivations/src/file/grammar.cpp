@@ -208,8 +208,10 @@ Node Grammar::term(std::size_t depth) {
           product.children.back().kind == NodeKind::number) {
         throw error(next, "expected an operator between two numbers (write \\cdot or \\times)");
       }
+      const Token written = next;
       product.children.push_back(factor(depth + 1));
       product.ops += ' ';
+      refuse_ambiguous_division(product, written);
     } else {
       break;
     }
@@ -219,6 +221,26 @@ Node Grammar::term(std::size_t depth) {
   }
   product.end = last_end_;
   return product;
+}
+
+// a / b c: a over b times c, or a over b c? Refused unless it is a number over a number (1/2 m v^2)
+// or what follows is a differential (F/m dt).
+void Grammar::refuse_ambiguous_division(const Node& product, const Token& written) const {
+  const std::size_t n = product.children.size();
+  if (n < 3 || product.ops[n - 2] != '/') {
+    return;
+  }
+  const auto number = [](const Node& x) { return x.kind == NodeKind::number; };
+  const Node& after = product.children[n - 1];
+  const bool differential =
+      after.kind == NodeKind::symbol &&
+      (after.symbol.base == "dt" || after.symbol.differential || after.text == upright_d);
+  if ((number(product.children[n - 3]) && number(product.children[n - 2])) || differential) {
+    return;
+  }
+  throw error(written,
+              "expected an operator or \\frac after a division: a/b c could be a over b, times c, "
+              "or a over b c; write \\frac{a}{b} c or \\frac{a}{b c} (or a/(b c))");
 }
 
 // factor := ('+' | '-') factor | atom postfix
