@@ -62,6 +62,9 @@ const std::map<std::string, Expected> expected{
     // The p of \mathrm{d}p (line 5, column 30): dp is one symbol, which would have nothing to do
     // with the function p.
     {"differential-of-function.md", {5, 30, "p is declared a function"}},
+    // The \vec of \vec a (line 3, column 8): a and b are not declared vectors, so \cdot would
+    // multiply numbers, and (a b)^2 = a^2 b^2 would follow where (a . b)^2 = |a|^2 |b|^2 does not.
+    {"dot-of-undeclared.md", {3, 8, "written as a vector but not declared one"}},
     // The g of v^2/2g (line 5, column 12): (v^2/2) g as read from left to right, v^2/(2g) as a
     // student means it.
     {"division-then-product.md", {5, 12, "a/b c could be a over b, times c"}},

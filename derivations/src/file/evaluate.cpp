@@ -491,6 +491,10 @@ class Evaluator {
         divides_by(next.x, factors[i].first);
         acc = {acc.vector, acc.x / next.x, acc.vector ? acc.y / next.x : ex(0)};
       } else if (!acc.vector && !next.vector) {
+        if (op == '.' || op == 'x') {
+          undeclared_vector(factors[i - 1].first, op);
+          undeclared_vector(factors[i].first, op);
+        }
         acc = {false, acc.x * next.x, 0};
       } else if (acc.vector != next.vector) {
         const Value& scalar = acc.vector ? next : acc;
@@ -507,6 +511,21 @@ class Evaluator {
       }
     }
     return acc;
+  }
+
+  // A symbol written as a vector (\vec a, \hat n, \mathbf a) but not declared one, beside \cdot
+  // or \times: the product of two numbers would stand for a dot or cross product, silently
+  // ((\vec a \cdot \vec b)^2 = a^2 b^2 would follow).
+  void undeclared_vector(const Node& n, char op) const {
+    if (n.kind != NodeKind::symbol || !n.symbol.accent || s_.component_of(s_.resolve(n.symbol))) {
+      return;
+    }
+    const std::string name = s_.resolve(n.symbol).latex();
+    throw error(n.offset, "expected a vector declared with vector: beside " +
+                              std::string(op == '.' ? "\\cdot" : "\\times") + ", found " +
+                              name + ", written as a vector but not declared one (so the " +
+                              "product would be of two numbers); declare it (vector: " + name +
+                              ")");
   }
 
   Value fraction(const Node& n) {
