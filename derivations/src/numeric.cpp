@@ -187,4 +187,8 @@ std::string brief(double value, int digits) {
   return buffer.data();
 }
 
+std::string residual_text(double worst) {
+  return worst < rounding_level ? "below " + brief(rounding_level, 2) : brief(worst, 2);
+}
+
 }  // namespace impulse::derivations::num

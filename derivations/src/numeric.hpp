@@ -66,4 +66,13 @@ double gauss_legendre(const std::function<std::vector<double>(const std::vector<
 /// A few significant digits, for notes ("1.2e-08").
 std::string brief(double value, int digits = 3);
 
+/// Below this a relative residual is rounding: its digits follow the order in which a sum's
+/// terms were added, which GiNaC takes from hashes that follow the program's layout in memory,
+/// so they change from build to build (and from run to run with address-space randomisation).
+inline constexpr double rounding_level = 1e-15;
+
+/// A worst relative residual as notes print it: two significant digits, or "below 1e-15" at
+/// the level of rounding.
+std::string residual_text(double worst);
+
 }  // namespace impulse::derivations::num

@@ -63,7 +63,11 @@ std::string methods_list(const std::vector<Method>& methods) {
 }
 
 std::string error_text(const Outcome& o) {
-  return o.max_relative_error ? num::brief(*o.max_relative_error, 2) : "-";
+  if (!o.max_relative_error) {
+    return "-";
+  }
+  return *o.max_relative_error < num::rounding_level ? "<" + num::brief(num::rounding_level, 2)
+                                                     : num::brief(*o.max_relative_error, 2);
 }
 
 std::string pad(std::string text, std::size_t width) {

@@ -107,6 +107,39 @@ TEST_CASE("Text report: grouped by section, a summary line, the errata and refut
   REQUIRE(check::render(report(), check::Format::text, true).find('\033') != std::string::npos);
 }
 
+TEST_CASE("Text report: a worst disagreement at the level of rounding is shown as such",
+          "[derivations]") {
+  // Below 1e-15 a relative disagreement's digits follow the order in which a sum's terms were
+  // added (GiNaC's, which follows the program's layout in memory): 2.1e-16 in one build, 2.2e-16
+  // in another. The table shows "<1e-15", the notes "below 1e-15"; above it, two digits.
+  const std::string text = check::render(report(), check::Format::text);
+  std::size_t rounding = 0;
+  std::size_t above = 0;
+  for (const auto& r : report().results) {
+    if (!r.outcome.max_relative_error) {
+      continue;
+    }
+    CAPTURE(r.check.id, *r.outcome.max_relative_error, r.outcome.note);
+    const std::size_t row = text.find("\n  " + r.check.id + " ");
+    REQUIRE(row != std::string::npos);
+    const std::string line = text.substr(row + 1, text.find('\n', row + 1) - row - 1);
+    if (*r.outcome.max_relative_error < 1e-15) {
+      ++rounding;
+      CHECK(line.ends_with("<1e-15"));
+    } else {
+      ++above;
+      CHECK(line.find("<1e-15") == std::string::npos);
+    }
+    // No residual of the notes below the level (0, or below 1e-15) is printed as a number.
+    static const std::regex below_level(R"(residual (0[ (,]|0$|[0-9.]+e-(1[6-9]|[2-9][0-9])))");
+    CHECK(!std::regex_search(r.outcome.note, below_level));
+  }
+  // The paper has both kinds (equation (1.1)'s numeric samples agree to rounding; the ODE's
+  // comparisons, to its tolerance).
+  CHECK(rounding > 0);
+  CHECK(above > 0);
+}
+
 TEST_CASE("Markdown report: a heading with an anchor and the math for every check",
           "[derivations]") {
   const std::string md = check::render(report(), check::Format::markdown);

@@ -518,7 +518,7 @@ EquationFinding evaluate(FileRun& run, const file::ModelUse& use,
   f.fails = f.points > 0 && f.worst >= e.model.fails_above;
   f.detail = std::string(row_of(e.model.method).directive) + ": " + use.name + ", " +
              std::to_string(f.points) + " points, worst relative residual " +
-             num::brief(f.worst, 2) +
+             num::residual_text(f.worst) +
              (f.holds   ? " (holds)"
               : f.fails ? " (fails)"
                         : " (undecided)");

@@ -834,10 +834,10 @@ void Checker::conclude(const Scalars& before, const Scalars& step, const Forward
                        EquationResult& r) {
   using O = Implication::Outcome;
   const Implication& exact = forward.implication;
-  const std::string numeric_note =
-      numeric.points == 0
-          ? "numeric: " + numeric.how
-          : "numeric: " + numeric.how + ", worst relative residual " + num::brief(numeric.worst, 2);
+  const std::string numeric_note = numeric.points == 0
+                                       ? "numeric: " + numeric.how
+                                       : "numeric: " + numeric.how + ", worst relative residual " +
+                                             num::residual_text(numeric.worst);
   switch (exact.outcome) {
     case O::holds:
     case O::holds_if: {
