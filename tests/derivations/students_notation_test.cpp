@@ -140,6 +140,16 @@ TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
         std::vector<std::string>{"premise", "follows"});
   // d/dt (m v) with v a function and m a constant: m dv/dt.
   same("\\frac{d}{dt}\\left(m v\\right)", "m \\dot v", "function: v");
+  // \dot x(0) is the derivative at 0, not \dot x times 0 (which made it 0): from
+  // x(t) = x_0 + v_0 t + a t^2 / 2, \dot x = v_0 + a t, so \dot x(0) = v_0 and \ddot x(2) = a;
+  // \dot x(0) = v_0 + a does not follow (a = 1 breaks it).
+  const std::string motion = "function: x\n\n$$x(t) = x_0 + v_0 t + \\frac{1}{2} a t^2$$\n\n";
+  CHECK(verdicts(motion + "$$\\dot x(0) = v_0$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
+  CHECK(verdicts(motion + "$$\\ddot x(2) = a$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
+  CHECK(verdicts(motion + "$$\\dot x(0) = v_0 + a$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
   refused("$$J = \\int F\\,dt$$", 1, 7, "limits");
   // Σ_{i=1}^{3} i = 6; Σ_{i=1}^{N} (c a_i + b) = c Σ a_i + N b.
   same("\\sum_{i=1}^{3} i", "6");

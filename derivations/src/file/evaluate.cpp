@@ -215,6 +215,23 @@ Value Symbols::block_product(const Value& a, const Value& b, char op, std::size_
   return r;
 }
 
+// \dot x or \ddot x of a declared function x: the declaration and the order of the derivative.
+std::optional<std::pair<const FunctionDeclaration*, unsigned>> dotted_of(const Symbols& symbols,
+                                                                         const SymbolName& name) {
+  const bool dot = name.base.starts_with("\\dot{");
+  const bool ddot = name.base.starts_with("\\ddot{");
+  if (!dot && !ddot) {
+    return std::nullopt;
+  }
+  SymbolName under = name;
+  under.base = name.base.substr(dot ? 5 : 6, name.base.size() - (dot ? 6 : 7));
+  const FunctionDeclaration* f = symbols.function(under);
+  if (f == nullptr) {
+    return std::nullopt;
+  }
+  return std::pair{f, dot ? 1U : 2U};
+}
+
 class Evaluator {
  public:
   explicit Evaluator(Symbols& symbols) : s_(symbols) {}
@@ -383,25 +400,21 @@ class Evaluator {
     return s_.symbol_value(n.symbol);
   }
 
-  // \dot x and \ddot x of a declared function x: its derivatives in t.
-  std::optional<ex> dotted_function(const SymbolName& name) {
-    const bool dot = name.base.starts_with("\\dot{");
-    const bool ddot = name.base.starts_with("\\ddot{");
-    if (!dot && !ddot) {
-      return std::nullopt;
-    }
-    SymbolName under = name;
-    under.base = name.base.substr(dot ? 5 : 6, name.base.size() - (dot ? 6 : 7));
-    const FunctionDeclaration* f = s_.function(under);
-    if (f == nullptr) {
+  // \dot x and \ddot x of a declared function x: its derivatives in t; at @p at when given
+  // (\dot x(0)).
+  std::optional<ex> dotted_function(const SymbolName& name, const std::optional<ex>& at = {}) {
+    const auto dotted = dotted_of(s_, name);
+    if (!dotted) {
       return std::nullopt;  // \dot x of a number x is a symbol of its own
     }
+    const FunctionDeclaration* f = dotted->first;
     if (f->variables.size() != 1 || f->variables[0].latex() != "t") {
       throw error(0, "expected " + name.base + " of a function of t alone");
     }
     const ex t = s_.scalar(f->variables[0]);
-    const ex value = GiNaC::function(f->serial, t);
-    return value.diff(GiNaC::ex_to<GiNaC::symbol>(t), dot ? 1 : 2);
+    const ex value =
+        GiNaC::function(f->serial, t).diff(GiNaC::ex_to<GiNaC::symbol>(t), dotted->second);
+    return at ? value.subs(t == *at) : value;
   }
 
   // F(t), f(a, b): a declared function's value; m(v_1 - v_2): a product; F(t) with t the
@@ -423,6 +436,11 @@ class Evaluator {
         arguments.push_back(scalar_of(n.children[k]));
       }
       return {false, GiNaC::function(f->serial, arguments), 0};
+    }
+    if (count == 1) {
+      if (const auto value = dotted_function(name, scalar_of(n.children[1]))) {
+        return {false, *value, 0};  // \dot x(0): the derivative at 0
+      }
     }
     if (name.primes > 0) {
       SymbolName plain = name;
@@ -522,8 +540,8 @@ class Evaluator {
     }
     const std::string name = s_.resolve(n.symbol).latex();
     throw error(n.offset, "expected a vector declared with vector: beside " +
-                              std::string(op == '.' ? "\\cdot" : "\\times") + ", found " +
-                              name + ", written as a vector but not declared one (so the " +
+                              std::string(op == '.' ? "\\cdot" : "\\times") + ", found " + name +
+                              ", written as a vector but not declared one (so the " +
                               "product would be of two numbers); declare it (vector: " + name +
                               ")");
   }
@@ -1055,7 +1073,7 @@ class CallResolver {
     for (std::size_t k = 1; k < copy.children.size(); ++k) {
       copy.children[k] = run(copy.children[k]);
     }
-    if (s_.function(name) != nullptr) {
+    if (s_.function(name) != nullptr || (dotted_of(s_, name) && n.children.size() == 2)) {
       if (power == nullptr) {
         return copy;
       }
