@@ -182,6 +182,14 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
         std::vector<std::string>{"premise", "follows"});
   CHECK(verdicts("$$y = \\sqrt{V^2}$$\n\n$$y = V$$") !=
         std::vector<std::string>{"premise", "follows"});
+  // A premise that divides by 2a keeps a from zero: the quadratic formula's root solves the
+  // quadratic with no condition (by hand, with s^2 = b^2 - 4ac: a x^2 + b x + c =
+  // (s^2 - b^2 + 4ac) / (4a) = 0), and the other root solves it too, so it is one way only.
+  const std::string root = "$$x = \\frac{-b + \\sqrt{b^2 - 4ac}}{2a}$$\n\n";
+  CHECK(verdicts(root + "$$a x^2 + b x + c = 0$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
+  CHECK(verdicts(root + "$$a x^2 + b x - c = 0$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
   // √(k/m) = k^{1/2} m^{-1/2} for k, m > 0 (undecided before: the root of a quotient was not
   // split); with the power of m's root slipped it must not follow (at k = m = 4, x = 1 the step
   // gives v = 4 where √(k/m) x = 1).
