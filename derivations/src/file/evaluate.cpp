@@ -215,6 +215,8 @@ Value Symbols::block_product(const Value& a, const Value& b, char op, std::size_
   return r;
 }
 
+namespace {
+
 // \dot x or \ddot x of a declared function x: the declaration and the order of the derivative.
 std::optional<std::pair<const FunctionDeclaration*, unsigned>> dotted_of(const Symbols& symbols,
                                                                          const SymbolName& name) {
@@ -231,6 +233,8 @@ std::optional<std::pair<const FunctionDeclaration*, unsigned>> dotted_of(const S
   }
   return std::pair{f, dot ? 1U : 2U};
 }
+
+}  // namespace
 
 class Evaluator {
  public:
