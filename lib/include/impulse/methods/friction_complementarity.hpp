@@ -151,8 +151,12 @@ struct FrictionResolution {
   std::vector<multipoint::Body> after;  ///< the bodies after (before, unless solved/inaccurate)
 };
 
-/// @brief friction_system(), solve_friction() and the impulses applied to the bodies (each
-/// contact's normal and tangential impulse, multipoint::apply_impulses).
+/// @brief friction_system(), solved, and the impulses applied to the bodies (each contact's
+/// normal and tangential impulse, multipoint::apply_impulses). The pivoting on the contacts'
+/// modes starts from the paper's impulses without friction (methods::paper), as the command line
+/// and the page do; from zero where those are not found (the paper's system beyond the dense
+/// limit, or not solved). From zero, on a stack sliding as it lands, the modes can go back and
+/// forth where from the paper's impulses they settle.
 /// @param configuration the bodies and contacts
 /// @param friction μ of each contact
 /// @param tolerance as solve_friction()
