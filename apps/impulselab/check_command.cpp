@@ -133,7 +133,9 @@ std::string failure_of(const check::DerivationReport& report) {
     }
   }
   if (report.task && !report.task->target_reached) {
-    return report.file + ": the task's target is not reached (" + report.task->reason + ")";
+    std::string why = check::task_verdict(*report.task);
+    why.pop_back();  // the full stop: the message ends as the others do
+    return report.file + ": " + why;
   }
   return report.file + ": fails";
 }

@@ -165,6 +165,15 @@ TEST_CASE("check --task: the target reached, or not, and why", "[cli][derivation
   CHECK(report.at("task").at("target_reached") == false);
   CHECK(report.at("task").at("reason") == "target-assumed");
   CHECK(report.at("task").at("extra_premises") == json::array({10}));
+  // The message on standard error says why, as the report does: the target is not "not
+  // reached" when the submission assumed it, or used a premise the task does not give.
+  CHECK_THAT(assumed.err, Contains("the target is assumed, not derived (the premise at line 10"));
+  CHECK_THAT(assumed.err, !Contains("not reached"));
+  const t::Run extra = t::run("check --task " + t::quote(task + "task.md") + " " +
+                              t::quote(task + "extra-premise.md"));
+  REQUIRE(extra.status == 1);
+  CHECK_THAT(extra.err, Contains("a premise the task does not give (line"));
+  CHECK_THAT(extra.err, !Contains("not reached"));
   const t::Run no_target =
       t::run("check --task " + derivation("s3-elastic.md") + " " + t::quote(task + "correct-a.md"));
   CHECK(no_target.status == 2);

@@ -224,6 +224,12 @@ class TaskError : public FileError {
 /// @return 0 or 1
 [[nodiscard]] int exit_status(const DerivationReport& report);
 
+/// @brief What a submission made of its task, as a sentence: "the target is reached at line 9.",
+/// "a premise the task does not give (line 7).", "the target is assumed, not derived (…)." …
+/// @param task the task's result
+/// @return the sentence (the text report prints it after "Task TASK.md: ")
+[[nodiscard]] std::string task_verdict(const TaskResult& task);
+
 /// @brief One file of a run over several: its report, or why it could not be read.
 struct FileRow {
   std::string file;                        ///< how it was named

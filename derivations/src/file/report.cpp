@@ -12,6 +12,27 @@
 
 namespace impulse::derivations {
 
+std::string task_verdict(const TaskResult& t) {
+  if (t.target_reached) {
+    return "the target is reached at line " + std::to_string(t.line.value_or(0)) + ".";
+  }
+  std::string lines;
+  for (const std::size_t l : t.extra_premises) {
+    lines += (lines.empty() ? "" : ", ") + std::to_string(l);
+  }
+  if (t.reason == "target-assumed") {
+    return "the target is assumed, not derived (the premise at line " + lines + " is the target).";
+  }
+  if (t.reason == "extra-premise") {
+    return std::string("a premise the task does not give (line") +
+           (t.extra_premises.size() == 1 ? " " : "s ") + lines + ").";
+  }
+  if (t.reason == "step-fails") {
+    return "a step before the target does not pass.";
+  }
+  return "the target is not reached (no step is equivalent to " + t.target + ").";
+}
+
 namespace {
 
 std::string value_text(double x, const std::string& exact) {
@@ -71,26 +92,7 @@ std::string conditional_text(const DerivationReport& r) {
 }
 
 std::string task_text(const TaskResult& t) {
-  std::string text = "Task " + t.task + ": ";
-  if (t.target_reached) {
-    return text + "the target is reached at line " + std::to_string(t.line.value_or(0)) + ".";
-  }
-  std::string lines;
-  for (const std::size_t l : t.extra_premises) {
-    lines += (lines.empty() ? "" : ", ") + std::to_string(l);
-  }
-  if (t.reason == "target-assumed") {
-    return text + "the target is assumed, not derived (the premise at line " + lines +
-           " is the target).";
-  }
-  if (t.reason == "extra-premise") {
-    return text + "a premise the task does not give (line" +
-           (t.extra_premises.size() == 1 ? " " : "s ") + lines + ").";
-  }
-  if (t.reason == "step-fails") {
-    return text + "a step before the target does not pass.";
-  }
-  return text + "the target is not reached (no step is equivalent to " + t.target + ").";
+  return "Task " + t.task + ": " + task_verdict(t);
 }
 
 std::string pad(std::string text, std::size_t width) {
