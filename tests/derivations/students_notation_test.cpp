@@ -182,6 +182,13 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
         std::vector<std::string>{"premise", "follows"});
   CHECK(verdicts("$$y = \\sqrt{V^2}$$\n\n$$y = V$$") !=
         std::vector<std::string>{"premise", "follows"});
+  // x^3 = 8 has one real root: x^3 - 8 = (x - 2)(x^2 + 2x + 4), and x^2 + 2x + 4 = (x + 1)^2 + 3
+  // is never 0 (its discriminant 4 - 16 is negative). Undecided before: the second case was not
+  // known to be empty. x = -2 does not follow (-8 is not 8).
+  CHECK(verdicts("$$x^3 = 8$$\n\n$$x = 8^{1/3}$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("$$x^3 = 8$$\n\n$$x = -2$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
   // A premise that divides by 2a keeps a from zero: the quadratic formula's root solves the
   // quadratic with no condition (by hand, with s^2 = b^2 - 4ac: a x^2 + b x + c =
   // (s^2 - b^2 + 4ac) / (4a) = 0), and the other root solves it too, so it is one way only.

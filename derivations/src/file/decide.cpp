@@ -665,10 +665,37 @@ class Decider {
     return found;
   }
 
+  // Whether f = 0 has no real solution: the facts keep f from zero, or f is a quadratic in a
+  // symbol whose discriminant the facts keep negative.
+  bool no_real_zero(const ex& f) const {
+    if (facts_.nonzero(f)) {
+      return true;
+    }
+    for (const ex& x : symbols_of(f)) {
+      if (!f.is_polynomial(x) || f.degree(x) != 2) {
+        continue;
+      }
+      const ex a = f.coeff(x, 2);
+      const ex b = f.coeff(x, 1);
+      const ex c = f.coeff(x, 0);
+      if (facts_.sign(GiNaC::expand(b * b - 4 * a * c)) == Sign::negative) {
+        return true;
+      }
+    }
+    return false;
+  }
+
   Found branch(const Frame& frame, const std::vector<ex>& premises, std::size_t index,
                const std::vector<ex>& factors) {
     std::vector<Found> cases;
     for (const ex& f : factors) {
+      if (no_real_zero(f)) {
+        // x^2 + 2x + 4 = 0 (of x^3 = 8) has no real solution: the step holds there vacuously.
+        Found empty;
+        empty.outcome = Implied::holds;
+        cases.push_back(empty);
+        continue;
+      }
       Frame child = frame;
       child.depth = frame.depth + 1;
       child.premises = premises;
