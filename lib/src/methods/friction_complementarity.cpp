@@ -340,6 +340,15 @@ FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool
   return s;
 }
 
+// The paper's impulses (without friction), which suggest the contacts that push: where it solved
+// its system, the start of the pivoting on modes; else none (from zero).
+VectorXd paper_start(const multipoint::Configuration& configuration, const Paper& paper) {
+  return paper.solution.status == SolveStatus::success &&
+                 paper.solution.Fdt.size() == static_cast<Index>(configuration.contacts().size())
+             ? paper.solution.Fdt
+             : VectorXd();
+}
+
 FrictionResolution resolve_from(const multipoint::Configuration& configuration,
                                 std::span<const double> friction, double tolerance, bool least_norm,
                                 const VectorXd& start) {
@@ -370,11 +379,7 @@ FrictionResolution resolve_friction_complementarity(const multipoint::Configurat
   // it solves from there (tests/methods/large_test.cpp).
   VectorXd start;
   try {
-    const Paper p = paper(configuration, SolverOptions{});
-    if (p.solution.status == SolveStatus::success &&
-        p.solution.Fdt.size() == static_cast<Index>(configuration.contacts().size())) {
-      start = p.solution.Fdt;
-    }
+    start = paper_start(configuration, paper(configuration, SolverOptions{}));
   } catch (const InvalidInput&) {
     // Beyond the dense limit: from zero.
   }
@@ -390,11 +395,8 @@ Outcome complementarity_friction(const multipoint::Configuration& configuration,
   for (std::size_t v = 0; v < n && v < options.friction.size(); ++v) {
     mu[v] = options.friction[v];
   }
-  // The paper's impulses (without friction) suggest which contacts push.
-  const bool paper_solved = paper.solution.status == SolveStatus::success &&
-                            paper.solution.Fdt.size() == static_cast<Index>(n);
   const FrictionResolution r = resolve_from(configuration, mu, options.complementarity.tolerance,
-                                            true, paper_solved ? paper.solution.Fdt : VectorXd());
+                                            true, paper_start(configuration, paper));
   const FrictionSolution& s = r.solution;
   Outcome o;
   o.method = Method::complementarity;
