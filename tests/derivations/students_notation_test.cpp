@@ -197,6 +197,16 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
         std::vector<std::string>{"premise", "follows-one-way"});
   CHECK(verdicts(root + "$$a x^2 + b x - c = 0$$") ==
         std::vector<std::string>{"premise", "does-not-follow"});
+  // The same when the denominator shows only once the equations before are put in: u = p/q and
+  // q = r s keep r s from zero, so u = p/(r s) needs no condition (follows-if r s ≠ 0 before:
+  // the premise's denominator q was compared with r s as written). With w = r s in place of q,
+  // nothing keeps r s from zero and the condition stays (where r = 0, u = p/q holds and the
+  // step is not defined).
+  const std::string given = "given:\n\n$$u = \\frac{p}{q} \\\\ ";
+  CHECK(verdicts(given + "q = r s$$\n\n$$u = \\frac{p}{r s}$$") ==
+        std::vector<std::string>{"premise", "premise", "follows-one-way"});
+  CHECK(verdicts(given + "w = r s$$\n\n$$u = \\frac{p w}{q r s}$$") ==
+        std::vector<std::string>{"premise", "premise", "follows-if"});
   // √(k/m) = k^{1/2} m^{-1/2} for k, m > 0 (undecided before: the root of a quotient was not
   // split); with the power of m's root slipped it must not follow (at k = m = 4, x = 1 the step
   // gives v = 4 where √(k/m) x = 1).

@@ -520,6 +520,15 @@ class Decider {
         numerators.push_back(p);
       }
     }
+    if (const auto undefined = undefined_premise(frame, numerators)) {
+      // x = -b / (2a) with a = 0: no point of this case is one where the equations before are
+      // defined, so it holds nothing against the step.
+      Found outside;
+      outside.outcome = Implied::holds;
+      outside.how.push_back("where " + text(*undefined) +
+                            " = 0 the equations before are not defined");
+      return outside;
+    }
     // The step a multiple of an equation before (the most common step: that equation rewritten,
     // multiplied or divided by a factor): it follows wherever that equation holds. Tried first:
     // it needs no factoring.
@@ -663,6 +672,47 @@ class Decider {
       }
     }
     return found;
+  }
+
+  // A denominator of the equations before that vanishes on the whole case: it is 0 once the
+  // case's values are put in, or a premise of the case divides it. Large expressions are left
+  // alone (the search decides them as before).
+  std::optional<ex> undefined_premise(const Frame& frame, const std::vector<ex>& numerators) const {
+    for (const ex& written : problem_.premise_denominators) {
+      if (is_a<numeric>(written)) {
+        continue;
+      }
+      ex d = written;
+      try {
+        bool changed = false;
+        for (const Solved& s : frame.solved) {
+          if (d.has(s.symbol)) {
+            d = d.subs(GiNaC::exmap{{s.symbol, s.value}});
+            changed = true;
+          }
+        }
+        if (expanded_terms(d) > 200) {
+          continue;
+        }
+        if (changed && numerator(d).is_zero()) {
+          return written;
+        }
+        for (const ex& p : numerators) {
+          // p divides d only if d has every symbol of p (checked first: it costs no division).
+          const std::vector<ex> in_p = symbols_of(p);
+          if (in_p.empty() || expanded_terms(p) > 200 ||
+              !std::all_of(in_p.begin(), in_p.end(), [&](const ex& u) { return d.has(u); })) {
+            continue;
+          }
+          if (is_a<numeric>(GiNaC::normal(d / p).denom())) {
+            return written;
+          }
+        }
+      } catch (const std::exception&) {
+        return written;  // the case's values divide by zero in it
+      }
+    }
+    return std::nullopt;
   }
 
   // Whether f = 0 has no real solution: the facts keep f from zero, or f is a quadratic in a

@@ -674,29 +674,13 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
     }
     return false;
   };
-  // c divides a denominator of the equations before: where c = 0 they are not defined (x = -b /
-  // (2a) keeps a from zero).
-  const auto given_by_premises = [&](const ex& c) {
-    for (const ex& d : before.denominators) {
-      if (expanded_terms(d) > 200 || expanded_terms(c) > 200) {
-        continue;
-      }
-      try {
-        if (GiNaC::is_a<GiNaC::numeric>(GiNaC::normal(d / c).denom())) {
-          return true;
-        }
-      } catch (const std::exception&) {
-      }
-    }
-    return false;
-  };
   // c reduced by the facts' equalities is a number: n_x^2 + n_y^2 where n_x^2 + n_y^2 = 1.
   const auto given_by_equality = [&](const ex& c) {
     const ex rest = reduced(c, facts.equalities());
     return GiNaC::is_a<GiNaC::numeric>(rest) && !rest.is_zero();
   };
   for (const ex& c : forward.conditions) {
-    if (facts.nonzero(c) || given_as_written(c) || given_by_premises(c) || given_by_equality(c) ||
+    if (facts.nonzero(c) || given_as_written(c) || given_by_equality(c) ||
         facts.nonzero(in_sines(c)) ||
         (expanded_terms(c) <= 200 && facts.nonzero(factored(GiNaC::normal(c))))) {
       continue;
