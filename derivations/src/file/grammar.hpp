@@ -38,6 +38,8 @@ struct RowTokens {
 /// The rows of a block (cut at \\), each with its \tag and \label; rows of spacing dropped.
 [[nodiscard]] std::vector<RowTokens> split_rows(const Source& source,
                                                 const std::vector<Token>& tokens);
+/// The letter d alone (no subscript, prime, accent or Δ): the d of a derivative or differential.
+[[nodiscard]] bool is_plain_d(const Node& n);
 /// One side of an equation or relation, read by the grammar.
 [[nodiscard]] Side parse_side(const Source& source, std::vector<Token> tokens,
                               std::size_t fallback_offset, const Limits& limits);

@@ -8,12 +8,12 @@
 
 namespace impulse::derivations::file {
 
-namespace {
-
 bool is_plain_d(const Node& n) {
   return n.kind == NodeKind::symbol && n.symbol.base == "d" && n.symbol.subscript.empty() &&
          n.symbol.primes == 0 && !n.symbol.delta && !n.symbol.accent;
 }
+
+namespace {
 
 // The order written on a d or a variable: d^2 is 2, d is 1; 0 when it is not a whole power.
 int order_of(const Node& exponent) {

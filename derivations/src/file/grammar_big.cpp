@@ -7,11 +7,6 @@ namespace impulse::derivations::file {
 
 namespace {
 
-bool is_d(const Node& n) {
-  return n.kind == NodeKind::symbol && n.symbol.base == "d" && n.symbol.subscript.empty() &&
-         n.symbol.primes == 0 && !n.symbol.delta && !n.symbol.accent;
-}
-
 // The symbol dt, dt', dt'': the differential of t, t', t''.
 bool is_dt(const Node& n) {
   return n.kind == NodeKind::symbol && n.symbol.base == "dt" && n.symbol.subscript.empty() &&
@@ -161,7 +156,7 @@ void Grammar::take_differential(Node& n) {
     n.symbol = SymbolName{"t", "", integrand.children.back().symbol.primes, false};
     integrand.children.pop_back();
     integrand.ops.pop_back();
-  } else if (count >= 2 && is_d(integrand.children[count - 2]) &&
+  } else if (count >= 2 && is_plain_d(integrand.children[count - 2]) &&
              integrand.children.back().kind == NodeKind::symbol &&
              integrand.ops[count - 2] == ' ') {
     n.symbol = integrand.children.back().symbol;
