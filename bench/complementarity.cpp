@@ -41,16 +41,11 @@ namespace me = impulse::methods;
 constexpr std::size_t contacts = 100;
 
 mp::Configuration configuration(const std::string& kind) {
-  impulse::scenes::Scene scene =
-      impulse::scenes::generate(kind == "rough_stack" ? "stack" : kind, contacts, 1);
-  if (kind == "rough_stack") {
-    for (mp::Body& body : scene.bodies) {
-      if (auto* box = std::get_if<impulse::rigid_2d::RigidBody>(&body)) {
-        box->p.x() += box->mass;  // sliding at 1 to the right as it lands
-      }
-    }
+  if (kind == "rough_stack") {  // sliding at 1 to the right as it lands
+    return impulse::scenes::configuration(
+        impulse::scenes::sliding(impulse::scenes::generate("stack", contacts, 1)));
   }
-  return impulse::scenes::configuration(scene);
+  return impulse::scenes::configuration(impulse::scenes::generate(kind, contacts, 1));
 }
 
 void paper(benchmark::State& state, const std::string& kind) {

@@ -167,6 +167,15 @@ Scene generate(std::string_view kind, std::size_t contacts, std::uint64_t seed) 
   throw InvalidInput(message);
 }
 
+Scene sliding(Scene scene, double speed) {
+  for (multipoint::Body& body : scene.bodies) {
+    if (auto* box = std::get_if<RigidBody>(&body)) {
+      box->p.x() += box->mass * speed;
+    }
+  }
+  return scene;
+}
+
 multipoint::Configuration configuration(const Scene& scene) {
   return {scene.bodies, std::vector<Elasticity>(scene.bodies.size(), scene.elasticity),
           scene.contacts};

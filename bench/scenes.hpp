@@ -61,6 +61,13 @@ struct Scene {
 /// @return the scene
 [[nodiscard]] Scene generate(std::string_view kind, std::size_t contacts, std::uint64_t seed = 1);
 
+/// @brief The scene with every rigid body also moving sideways (along x) at `speed`: a stack
+/// that slides as it lands, for friction.
+/// @param scene the scene
+/// @param speed the added velocity along x
+/// @return the scene, sliding
+[[nodiscard]] Scene sliding(Scene scene, double speed = 1);
+
 /// @brief The scene's bodies, elasticities (everyone's) and contacts, checked.
 /// @param scene the scene
 /// @return its configuration

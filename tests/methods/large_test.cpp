@@ -158,12 +158,7 @@ TEST_CASE("Friction's complementarity starts from the paper's impulses, also cal
   // would have solved the stack too, so only the optimised builds tell the two apart.
   constexpr int contacts = 200;
 #endif
-  auto scene = impulse::scenes::generate("stack", contacts);
-  for (mp::Body& body : scene.bodies) {
-    if (auto* box = std::get_if<impulse::rigid_2d::RigidBody>(&body)) {
-      box->p.x() += box->mass;
-    }
-  }
+  const auto scene = impulse::scenes::sliding(impulse::scenes::generate("stack", contacts));
   const mp::Configuration c = impulse::scenes::configuration(scene);
   const std::vector<double> mu(c.contacts().size(), 0.5);
   const me::FrictionResolution r = me::resolve_friction_complementarity(c, mu);
