@@ -71,6 +71,9 @@ const std::map<std::string, Expected> expected{
     // The \text of \text{or} (line 5, column 14): x = 3 or x = -3 are cases, one of which
     // holds; read as two steps, x = -3 would not follow from x^2 = 9 where x = 3.
     {"cases-joined-by-or.md", {5, 14, "does not join two equations by 'or'"}},
+    // The x of x(t) (line 3, column 3): x not declared a function, x(t) was x times t, and
+    // x(0) = 0 followed (x times 0), though the function's value at 0 is x_0.
+    {"value-of-undeclared.md", {3, 3, "x times t?"}},
     // The second \mathrm, of \mathrm{d}(m v) (line 3, column 20).
     {"differential-of-expression.md", {3, 20, "of an expression it is not read"}},
 };

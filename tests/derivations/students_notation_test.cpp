@@ -124,6 +124,12 @@ TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
   refused("$$J = \\int_0^T F(t)\\,dt$$\n\n$$J = \\frac{F T^2}{2}$$", 1, 16, "F(t)");
   // Outside an integral an undeclared m(v_1 - v_2) is a product.
   same("m(v_1 - v_2)", "m v_1 - m v_2");
+  // But a name before one symbol or number is refused anywhere: nobody writes v times 0 as v(0),
+  // and read so, v(t) = v_0 - g t gave v(0) = 0 (v times 0) where the function's value is v_0.
+  refused("$$v(t) = v_0 - g t$$\n\n$$v(0) = v_0$$", 1, 3, "v(t): v at t (a function's value)");
+  refused("$$y = v(-2)$$", 1, 7, "v(-2)");
+  CHECK(verdicts("function: v\n\n$$v(t) = v_0 - g t$$\n\n$$v(0) = v_0$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
   // ∫_0^T a t dt = a T^2 / 2 (hand: the antiderivative a t^2 / 2 at T minus at 0).
   CHECK(verdicts("$$W = \\int_0^T a t\\,dt$$\n\n$$W = \\frac{a T^2}{2}$$") ==
         std::vector<std::string>{"premise", "follows"});

@@ -1104,6 +1104,22 @@ class CallResolver {
                                    name.latex() + "), and for a vector write [a, b]");
     }
     const Node& argument = n.children[1];
+    const auto single = [](const Node& a) {
+      return a.kind == NodeKind::number || a.kind == NodeKind::symbol;
+    };
+    const bool lone =
+        single(argument) || (argument.kind == NodeKind::sum && argument.children.size() == 1 &&
+                             single(argument.children[0]));
+    if (lone && !(argument.kind == NodeKind::symbol && is_bound(argument.symbol))) {
+      // x(0), v(t), \omega(T) of a name not declared a function: nobody writes a product so; the
+      // value of a function is meant (x(t) = x_0 + v_0 t then x(0) = 0 followed, as x times 0).
+      const std::string inside = s_.written(argument);
+      throw s_.error(n.offset, name.latex() + "(" + inside + "): " + name.latex() + " at " +
+                                   inside + " (a function's value), or " + name.latex() +
+                                   " times " + inside + "? Declare it with function: " +
+                                   name.latex() + " for the function, or write " + name.latex() +
+                                   " \\cdot " + inside + " for the product");
+    }
     if (argument.kind == NodeKind::symbol && is_bound(argument.symbol)) {
       throw s_.error(n.offset, name.latex() + "(" + argument.symbol.latex() + "): " + name.latex() +
                                    " times " + argument.symbol.latex() + ", or " + name.latex() +

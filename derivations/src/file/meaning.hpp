@@ -205,6 +205,10 @@ class Symbols {
   ReadError error(std::size_t offset, const std::string& message) const {
     return source_.error(offset, message);
   }
+  /// The node as the file writes it.
+  std::string written(const Node& n) const {
+    return source_.text().substr(n.offset, n.end > n.offset ? n.end - n.offset : 0);
+  }
 
   struct Block {
     Side entry;
