@@ -115,6 +115,33 @@ TEST_CASE("Students' functions: inverse, hyperbolic, logarithms, arguments witho
   refused("$$y = \\sin^{-1} x$$", 1, 13, "\\sin^{-1}");
 }
 
+TEST_CASE("Students' e and i: Euler's number upright, e to a power and a lone i refused",
+          "[derivations][students-notation]") {
+  // \mathrm{e} is Euler's number: ln(A e^{-t/τ}) = ln A - t/τ for A > 0 (by hand); the slip
+  // + t/τ does not follow.
+  const std::string decay = "assume: A > 0, \\tau > 0\n\n$$x = A \\mathrm{e}^{-t/\\tau}$$\n\n";
+  CHECK(verdicts(decay + "$$\\ln x = \\ln A - \\frac{t}{\\tau}$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts(decay + "$$\\ln x = \\ln A + \\frac{t}{\\tau}$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
+  same("\\mathrm{e}^{x}", "\\exp(x)");
+  same("\\mathrm{e}", "\\exp(1)");
+  // e to a power that is no number: Euler's number, or a restitution coefficient's power (v_n =
+  // e^n v_0 after n bounces)? Read as the letter, x_0 e^{-t/τ} gave ln(e) in its derivative and
+  // right steps failed with e = 1. Refused at the e, unless a fact makes e a quantity.
+  refused("$$x = x_0 e^{-t/\\tau}$$\n\n$$x = x_0$$", 1, 11, "Euler's number");
+  CHECK(verdicts("assume: 0 \\le e \\le 1\n\n$$h = e^{2n} h_0$$\n\n$$h = (e^n)^2 h_0$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  same("e^2", "e \\cdot e");  // a number for a power: the letter's square, (1 - e^2) as ever
+  // A lone i: read as a real letter, |a + i b|^2 = (a + i b)^2 would follow, which no complex
+  // number obeys (|1 + i|^2 = 2, (1 + i)^2 = 2i). Refused; a fact makes i a quantity; an index
+  // bound by a sum is read (\sum_{i=1}^{3} i = 6).
+  refused("$$z = a + i b$$\n\n$$z = b i + a$$", 1, 11, "imaginary unit");
+  CHECK(verdicts("assume: i > 0\n\n$$u = i R$$\n\n$$R = \\frac{u}{i}$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  same("\\sum_{i=1}^{3} i", "6");
+}
+
 TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
           "[derivations][students-notation]") {
   // F(t) declared a function is F of t; J = ∫ F dt does not give F T^2 / 2.

@@ -425,6 +425,9 @@ void Reader::on_assume(const Directive& d) {
 
 // One relation of assume:, as facts: the sign of a symbol, of an expression, an equality.
 void Reader::fact(std::size_t at, const Relation& r) {
+  for (const Side* side : {&r.left, &r.right}) {
+    symbols_.note_quantities(side->expression);
+  }
   const auto value = [&](const Side& side) {
     note_used(side.expression);
     const Meaning m = symbols_.meaning(side.expression);

@@ -234,6 +234,12 @@ std::optional<std::pair<const FunctionDeclaration*, unsigned>> dotted_of(const S
   return std::pair{f, dot ? 1U : 2U};
 }
 
+// The letter alone: no subscript, prime, accent, Δ or differential (e, i).
+bool plain_letter(const Node& n, std::string_view letter) {
+  return n.kind == NodeKind::symbol && n.symbol.base == letter && n.symbol.subscript.empty() &&
+         n.symbol.primes == 0 && !n.symbol.accent && !n.symbol.delta && !n.symbol.differential;
+}
+
 }  // namespace
 
 class Evaluator {
@@ -401,6 +407,17 @@ class Evaluator {
     if (const auto dotted = dotted_function(name)) {
       return {false, *dotted, 0};
     }
+    if (plain_letter(n, "e") && n.text == upright_e) {
+      return {false, GiNaC::exp(ex(1)), 0};  // \mathrm{e}: Euler's number
+    }
+    if (plain_letter(n, "i") && !s_.is_quantity(name)) {
+      // A real i times b would pass |a + i b|^2 = (a + i b)^2, which no complex number obeys.
+      throw error(n.offset,
+                  "expected real numbers: i could be the imaginary unit, which this checker does "
+                  "not read (write a complex equation as two, its real and imaginary parts), or "
+                  "a real quantity i (then say so with a fact, assume: i > 0, or name it "
+                  "otherwise)");
+    }
     return s_.symbol_value(n.symbol);
   }
 
@@ -562,12 +579,26 @@ class Evaluator {
   }
 
   Value power(const Node& n) {
-    const Value base = unblocked(eval(n.children[0]), n.children[0].offset);
+    const Node& written_base = n.children[0];
+    const bool letter_e = plain_letter(written_base, "e") && bound(written_base.symbol) == nullptr;
+    const Value base = unblocked(eval(written_base), written_base.offset);
     const Value exponent = unblocked(eval(n.children[1]), n.children[1].offset);
     if (exponent.vector) {
       throw error(n.children[1].offset, "expected a scalar exponent, found a vector");
     }
     const ex e = exponent.x;
+    if (letter_e && written_base.text == upright_e) {
+      return {false, GiNaC::exp(e), 0};  // \mathrm{e}^{x}: the exponential
+    }
+    if (letter_e && !GiNaC::is_a<numeric>(e) && !s_.is_quantity(written_base.symbol)) {
+      // e^{-t/\tau} read as a letter to a power: its derivative held ln(e), and right steps
+      // failed with e = 1 as the counterexample.
+      throw error(written_base.offset,
+                  "e^{…}: Euler's number to a power (the exponential), or a quantity e (a "
+                  "coefficient of restitution) to a power? Write \\exp(…) or \\mathrm{e}^{…} "
+                  "for the exponential; for the quantity, give a fact of it (assume: 0 \\le e "
+                  "\\le 1)");
+    }
     if (GiNaC::is_a<numeric>(e)) {
       const numeric k = GiNaC::ex_to<numeric>(e);
       if (k.is_integer() && GiNaC::abs(k) > s_.limits_.exponent) {

@@ -61,10 +61,11 @@ Node Grammar::symbol_atom(std::size_t depth) {
     if (name.base == "d" && peek_raw().kind == Tok::letter && peek_raw().text == "t") {
       take();
       name.base = "dt";
-    } else if (name.base == "d" && first.text != "\\mathit" && first.text != "\\textit") {
+    } else if ((name.base == "d" || name.base == "e") && first.text != "\\mathit" &&
+               first.text != "\\textit") {
       Node n = make(NodeKind::symbol, first.offset);
       n.symbol = name;
-      n.text = upright_d;
+      n.text = name.base == "d" ? upright_d : upright_e;
       return decorate(depth, std::move(n));
     }
   } else {

@@ -81,6 +81,8 @@ enum class NodeKind {
 
 /// Node::text of the symbol d written upright: the operator of a differential, not a letter.
 inline constexpr std::string_view upright_d = "\\mathrm{d}";
+/// Node::text of the symbol e written upright (\mathrm{e}): Euler's number, not a letter.
+inline constexpr std::string_view upright_e = "\\mathrm{e}";
 
 /// A node of an expression tree, with the span of the file it was read from.
 struct Node {
@@ -88,7 +90,7 @@ struct Node {
   std::size_t offset = 0;  ///< where its first token stands in the file
   std::size_t end = 0;     ///< the byte after its last token
   /// number: its digits; function: its name; the symbol d written upright (\mathrm{d}, \text{d}):
-  /// upright_d, the d of a differential
+  /// upright_d, the d of a differential; the symbol e written so: upright_e, Euler's number
   std::string text;
   SymbolName symbol;  ///< symbol
   std::vector<Node> children;

@@ -183,6 +183,25 @@ void Symbols::declare_units(const SymbolName& name, const Dimension& dimension, 
   units_[resolve(name).latex()] = dimension;
 }
 
+void Symbols::note_quantities(const Node& node) {
+  if (node.kind == NodeKind::symbol) {
+    quantities_.insert(resolve(node.symbol).latex());
+  }
+  for (const Node& child : node.children) {
+    note_quantities(child);
+  }
+}
+
+bool Symbols::is_quantity(const SymbolName& name) const {
+  const std::string key = resolve(name).latex();
+  if (quantities_.contains(key) || units_.contains(key) || is_vector(name) ||
+      function(name) != nullptr) {
+    return true;
+  }
+  const auto symbol = symbols_.find(key);
+  return symbol != symbols_.end() && substitutions_.contains(symbol->second);
+}
+
 void Symbols::declare_force(const SymbolName& name) {
   const Value v = symbol_value(resolve(name));
   forces_.push_back(v.x);

@@ -149,6 +149,13 @@ class Symbols {
   /// Whether the symbol @p s is indexed by the index @p index (m_i by i).
   [[nodiscard]] bool indexed_by(const GiNaC::ex& s, const GiNaC::ex& index) const;
 
+  /// The symbols of @p node named by a fact of `assume:`: each is a real quantity of the file
+  /// (so e to a power is that quantity's power, not Euler's number's; i is no imaginary unit).
+  void note_quantities(const Node& node);
+  /// Whether the file says @p name is a real quantity: a fact names it, `units:` gives its
+  /// dimension, `let:` defines it, or it is declared a vector or a function.
+  [[nodiscard]] bool is_quantity(const SymbolName& name) const;
+
   /// `vector: name` from here on.
   void declare_vector(const SymbolName& name);
   /// `units: name [D]`.
@@ -237,6 +244,7 @@ class Symbols {
   std::map<GiNaC::ex, SymbolInfo, GiNaC::ex_is_less> infos_;
   std::map<std::string, bool> vectors_;     // unprimed latex keys declared vectors
   std::map<std::string, Dimension> units_;  // latex key → dimension
+  std::set<std::string> quantities_;        // latex keys a fact of assume: names
   std::map<std::string, std::optional<Dimension>> defined_dimensions_;
   GiNaC::exmap substitutions_;
   std::map<std::string, FunctionDeclaration> functions_;  // latex key → declaration
