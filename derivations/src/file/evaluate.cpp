@@ -286,10 +286,7 @@ class Evaluator {
 
   void divides_by(const ex& d, const Node& written) {
     denominators_.push_back(d);
-    written_.push_back(
-        written.end > written.offset
-            ? std::string(s_.source_.text().substr(written.offset, written.end - written.offset))
-            : std::string());
+    written_.push_back(s_.written(written));
   }
 
   // The denominators written inside an integral (or a sum) that hold its variable: the
