@@ -142,6 +142,22 @@ TEST_CASE("Students' e and i: Euler's number upright, e to a power and a lone i 
   same("\\sum_{i=1}^{3} i", "6");
 }
 
+TEST_CASE("Students' units after numbers are refused", "[derivations][students-notation]") {
+  // L = 2 m (a metre) read \\mathrm{m} as the mass m: with I = m L^2 / 12, I = m^3 / 3 followed.
+  refused(
+      "assume: m > 0\n\ngiven:\n\n$$L = 2\\,\\mathrm{m} \\\\ I = \\frac{1}{12} m L^2$$\n\n"
+      "$$I = \\frac{1}{3} m^3$$",
+      5, 10, "without a unit");
+  refused("$$v = 3\\,\\mathrm{m/s}$$", 1, 19, "units (m/s");
+  refused("$$a = 9.8\\,\\mathrm{m}^2$$", 1, 12, "\\mathrm{m}");
+  // An upright name that is no unit stays a name (2 KE = m v^2 from KE = m v^2 / 2), and
+  // \\mathrm{d} after a number is a differential.
+  CHECK(verdicts("$$\\mathrm{KE} = \\frac{1}{2} m v^2$$\n\n$$2\\,\\mathrm{KE} = m v^2$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("$$J = 2\\,\\mathrm{d}t$$\n\n$$J = 2\\,dt$$") ==
+        std::vector<std::string>{"premise", "follows"});
+}
+
 TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
           "[derivations][students-notation]") {
   // F(t) declared a function is F of t; J = ∫ F dt does not give F T^2 / 2.

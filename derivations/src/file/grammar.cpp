@@ -4,6 +4,7 @@
 #include "file/grammar.hpp"
 
 #include <algorithm>
+#include <set>
 
 namespace impulse::derivations::file {
 
@@ -212,6 +213,7 @@ Node Grammar::term(std::size_t depth) {
       product.children.push_back(factor(depth + 1));
       product.ops += ' ';
       refuse_ambiguous_division(product, written);
+      refuse_unit(product, written);
     } else {
       break;
     }
@@ -241,6 +243,30 @@ void Grammar::refuse_ambiguous_division(const Node& product, const Token& writte
   throw error(written,
               "expected an operator or \\frac after a division: a/b c could be a over b, times c, "
               "or a over b c; write \\frac{a}{b} c or \\frac{a}{b c} (or a/(b c))");
+}
+
+// 2\,\mathrm{m}, 3\,\mathrm{kg}: a unit after a number, read as a symbol it would be a quantity
+// (the mass m: L = 2 m and I = m L^2 / 12 gave I = m^3 / 3). Refused: units are not read.
+void Grammar::refuse_unit(const Node& product, const Token& written) const {
+  static const std::set<std::string, std::less<>> units{
+      "m",   "s",  "kg", "g", "N", "J", "W",  "Pa", "Hz", "rad", "cm",  "mm",  "km", "h",
+      "min", "ms", "K",  "V", "A", "C", "eV", "kN", "kJ", "kW",  "mph", "deg", "L",  "mL"};
+  const std::size_t n = product.children.size();
+  if (n < 2 || product.children[n - 2].kind != NodeKind::number || written.kind != Tok::command ||
+      !commands::names.contains(written.text)) {
+    return;
+  }
+  const Node& after = product.children[n - 1];
+  const Node& unit = after.kind == NodeKind::power ? after.children[0] : after;
+  if (unit.kind != NodeKind::symbol || !unit.symbol.subscript.empty() ||
+      !units.contains(unit.symbol.base)) {
+    return;
+  }
+  throw error(written,
+              "expected a number without a unit: " + written.text + "{" + unit.symbol.base +
+                  "} after a number is a unit, which this checker does not read (read as a "
+                  "symbol, it would be a quantity: \\mathrm{m} the mass m); write the "
+                  "equation in numbers alone, with units: for the symbols' dimensions");
 }
 
 // factor := ('+' | '-') factor | atom postfix

@@ -140,8 +140,13 @@ std::string Grammar::name_group(const Token& command_token) {
     } else if (t.kind == Tok::end) {
       throw error(open, "expected '}' to close this '{'");
     } else {
+      const bool unit =
+          is_char(t, '/') || is_char(t, '^') || is_char(t, '.') || is_command(t, "\\cdot");
       throw error(t, "expected letters and digits in " + command_token.text +
-                         "{…} (a name), found " + describe(t));
+                         "{…} (a name), found " + describe(t) +
+                         (unit ? ": units (m/s, m\\cdot s^{-1}) are not read; write the equation "
+                                 "in numbers alone, with units: for the symbols' dimensions"
+                               : ""));
     }
   }
   if (text.empty()) {
