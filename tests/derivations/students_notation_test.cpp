@@ -94,6 +94,19 @@ TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students
   different("v_\\perp", "v_\\parallel");
   refused("$$\\Delta(m v) = J$$", 1, 9, "\\Delta");  // at its parenthesis
   refused("$$\\overline{x} = 1$$", 1, 3, "\\overline");
+  // A symbol written as a vector but not declared one is a number of its own (part one), but not
+  // where a vector changes the reading: divided by (m = F / a followed from F = m a, with
+  // "follows-if a ≠ 0"), inside |…| (|3 i + 4 j| = 5 failed with i = 1, j = -1), or side by side
+  // with another (2 \\vec u \\vec a t).
+  const std::string newton = "assume: m > 0\n\n$$\\vec F = m \\vec a$$\n\n";
+  refused(newton + "$$m = \\vec F / \\vec a$$", 5, 16, "\\vec a as a divisor");
+  refused(newton + "$$m = \\frac{\\vec F}{\\vec a}$$", 5, 21, "written as a vector");
+  refused("$$\\vec v = 3\\hat{i} + 4\\hat{j}$$\n\n$$|\\vec v| = 5$$", 3, 4, "inside |");
+  refused("$$s = 2\\vec u \\vec a t$$", 1, 15, "beside another");
+  CHECK(verdicts(newton + "$$\\vec F - m \\vec a = 0$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("vector: F, a\n\nassume: m > 0\n\n$$\\vec F = m \\vec a$$\n\n$$|\\vec F| = m "
+                 "|\\vec a|$$") == std::vector<std::string>{"premise", "follows-one-way"});
 }
 
 TEST_CASE("Students' functions: inverse, hyperbolic, logarithms, arguments without parentheses",

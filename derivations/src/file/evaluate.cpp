@@ -524,12 +524,16 @@ class Evaluator {
         if (next.vector) {
           throw error(at, "expected a scalar to divide by, found a vector");
         }
+        undeclared_vector(factors[i].first, "as a divisor");
         divides_by(next.x, factors[i].first);
         acc = {acc.vector, acc.x / next.x, acc.vector ? acc.y / next.x : ex(0)};
       } else if (!acc.vector && !next.vector) {
         if (op == '.' || op == 'x') {
-          undeclared_vector(factors[i - 1].first, op);
-          undeclared_vector(factors[i].first, op);
+          const std::string beside = op == '.' ? "beside \\cdot" : "beside \\times";
+          undeclared_vector(factors[i - 1].first, beside);
+          undeclared_vector(factors[i].first, beside);
+        } else if (op == ' ' && accented(factors[i - 1].first)) {
+          undeclared_vector(factors[i].first, "beside another such symbol");  // \vec u \vec a
         }
         acc = {false, acc.x * next.x, 0};
       } else if (acc.vector != next.vector) {
@@ -549,24 +553,39 @@ class Evaluator {
     return acc;
   }
 
-  // A symbol written as a vector (\vec a, \hat n, \mathbf a) but not declared one, beside \cdot
-  // or \times: the product of two numbers would stand for a dot or cross product, silently
-  // ((\vec a \cdot \vec b)^2 = a^2 b^2 would follow).
-  void undeclared_vector(const Node& n, char op) const {
-    if (n.kind != NodeKind::symbol || !n.symbol.accent || s_.component_of(s_.resolve(n.symbol))) {
+  // A symbol written as a vector (\vec a, \hat n, \mathbf a) but not declared one: a number
+  // there would stand in silence for a vector where a vector makes the reading another one or
+  // none. Beside \cdot or \times, (\vec a \cdot \vec b)^2 = a^2 b^2 would follow; divided by,
+  // \vec F = m \vec a would give m = \vec F / \vec a; beside another, \vec u \vec a would be a
+  // product of numbers.
+  bool accented(const Node& n) const {
+    return n.kind == NodeKind::symbol && n.symbol.accent &&
+           !s_.component_of(s_.resolve(n.symbol)) && !s_.is_quantity(n.symbol);
+  }
+
+  void undeclared_vector(const Node& n, const std::string& where) const {
+    if (!accented(n)) {
       return;
     }
     const std::string name = s_.resolve(n.symbol).latex();
-    throw error(n.offset, "expected a vector declared with vector: beside " +
-                              std::string(op == '.' ? "\\cdot" : "\\times") + ", found " + name +
-                              ", written as a vector but not declared one (so the " +
-                              "product would be of two numbers); declare it (vector: " + name +
-                              ")");
+    throw error(n.offset, "expected a vector declared with vector:, found " + s_.written(n) + " " +
+                              where +
+                              ", written as a vector but not declared one (so it would be read "
+                              "as a number); declare it (vector: " +
+                              name + ")");
+  }
+
+  void refuse_accented_inside(const Node& n, const std::string& where) const {
+    undeclared_vector(n, where);
+    for (const Node& child : n.children) {
+      refuse_accented_inside(child, where);
+    }
   }
 
   Value fraction(const Node& n) {
     const Value top = eval(n.children[0]);
     const Value bottom = eval(n.children[1]);
+    undeclared_vector(n.children[1], "as a divisor");
     if (bottom.vector || bottom.block()) {
       throw error(n.children[1].offset,
                   "expected a scalar denominator, found " + kind_name(bottom));
@@ -707,6 +726,10 @@ class Evaluator {
   // \|v\| and |x| (|v| of a vector is its length too).
   Value size(const Node& n) {
     const Value v = unblocked(eval(n.children[0]), n.children[0].offset);
+    if (!v.vector) {
+      // |\vec v| of an undeclared \vec v = 3\hat i + 4\hat j: the size of a number, 5 failing.
+      refuse_accented_inside(n.children[0], "inside |…|");
+    }
     if (n.kind == NodeKind::norm && !v.vector) {
       throw error(n.offset, "expected a vector inside \\| \\| (for a scalar write |x|)");
     }
