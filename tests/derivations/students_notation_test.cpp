@@ -77,6 +77,18 @@ TEST_CASE("Students' arrows, annotations and separators inside a display",
   CHECK(verdicts("$$a = b \\text{ because the masses are equal}$$\n\n$$a - b = 0$$") ==
         std::vector<std::string>{"premise", "follows"});
   refused("$$a = \\text{the mass} b$$", 1, 7, "words");
+  // A line that begins with '=' after a row that ends with an equation of its own: the chain p =
+  // m v was meant, but the line went on from J/m, and the slip = J/m passed (p = m (J/m) = J).
+  const std::string chain = "$$\\begin{aligned}\np &= m v && \\text{with } v = \\frac{J}{m} \\\\\n";
+  refused(chain + "  &= \\frac{J}{m}\n\\end{aligned}$$", 3, 4, "continues one chain");
+  // An annotation alone, or an arrow, before the line: it goes on from the equation before. (By
+  // hand: m v = m (J/m) is v = J/m, which p = m v does not give; m (J/m) = J holds for every m, so
+  // it follows and gives nothing back; after 2x = 2, the line = 3 is 2 = 3, false for every x.)
+  CHECK(verdicts("$$\\begin{aligned}\np &= m v && \\text{(momentum)} \\\\\n  &= m \\frac{J}{m} "
+                 "\\\\\n  &= J\n\\end{aligned}$$") ==
+        std::vector<std::string>{"premise", "does-not-follow", "follows-one-way"});
+  CHECK(verdicts("$$x = 1 \\Rightarrow 2x = 2 \\\\ &= 3$$") ==
+        std::vector<std::string>{"premise", "follows", "does-not-follow"});
 }
 
 TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students-notation]") {

@@ -485,8 +485,24 @@ std::vector<Row> read_block(const Source& source, std::size_t content_offset,
   check_braces(source, tokens);
   tokens = strip_environments(source, std::move(tokens));
   std::vector<RowTokens> token_rows;
+  bool beside = false;  // the row before ends with an equation after an annotation or a comma
   for (RowTokens& row : split_rows(source, tokens)) {
-    for (RowTokens& piece : split_steps(source, std::move(row))) {
+    const auto first = std::find_if(row.tokens.begin(), row.tokens.end(), [](const Token& t) {
+      return t.kind != Tok::spacing && !is_char(t, '&');
+    });
+    if (beside && first != row.tokens.end() && is_char(*first, '=')) {
+      // p &= m v && \text{with } v = J/m \\ &= J/m: the chain p = … was meant, and the line
+      // went on from J/m (and its slip passed).
+      throw source.error(first->offset,
+                         "expected a line that continues one chain: this line begins with '=', "
+                         "but the line before ends with an equation of its own (after an "
+                         "annotation or a comma), so it could go on from that equation's right "
+                         "side or from the chain's; write that equation on a line of its own "
+                         "after the chain, or begin this line with its left side");
+    }
+    std::vector<RowTokens> pieces = split_steps(source, std::move(row));
+    beside = pieces.size() > 1 && pieces.back().join == Join::row;
+    for (RowTokens& piece : pieces) {
       token_rows.push_back(std::move(piece));
     }
   }
