@@ -106,6 +106,11 @@ TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students
   different("v_\\perp", "v_\\parallel");
   refused("$$\\Delta(m v) = J$$", 1, 9, "\\Delta");  // at its parenthesis
   refused("$$\\overline{x} = 1$$", 1, 3, "\\overline");
+  // x^10: LaTeX raises the 1 alone (x^1 then 0), so y = x^10 and y = x^{10} disagreed, with y = 0
+  // as the counterexample. Several digits after ^ or _ are refused; \\frac12 stays a half.
+  refused("$$y = x^10$$\n\n$$y = x^{10}$$", 1, 9, "write {10} for 10");
+  refused("$$v_12 = 1$$", 1, 5, "write {12}");
+  same("\\frac12 x", "\\frac{1}{2} x");
   // A symbol written as a vector but not declared one is a number of its own (part one), but not
   // where a vector changes the reading: divided by (m = F / a followed from F = m a, with
   // "follows-if a ≠ 0"), inside |…| (|3 i + 4 j| = 5 failed with i = 1, j = -1), or side by side

@@ -387,9 +387,17 @@ Node Grammar::script(std::size_t depth, const Token& caret) {
                   is_char(caret, '_') ? "a limit after '_'" : "an exponent after '^'");
 }
 
-// LaTeX takes one character from a number after ^ or _ : x^23 is x^2 times 3.
-Node Grammar::single_digit(const Token& t) {
+// LaTeX takes one character from a number after \frac, ^ or _: \frac12 is a half. After ^ or _
+// (`script`) a number of several digits is refused: x^23 shows x squared, then 3, but the writer
+// of x^10 meant the tenth power.
+Node Grammar::single_digit(const Token& t, bool script) {
   Token& digits = tokens_[position_];
+  if (script && digits.text.size() > 1 && digits.text[1] != '.') {
+    throw error(digits, "expected one digit, or braces, after '^' or '_': LaTeX takes only the " +
+                            digits.text.substr(0, 1) + " (it shows the power or limit " +
+                            digits.text.substr(0, 1) + ", then " + digits.text.substr(1) +
+                            "); write {" + digits.text + "} for " + digits.text);
+  }
   Node n = make(NodeKind::number, t.offset);
   n.text = digits.text.substr(0, 1);
   n.end = t.offset + 1;

@@ -86,7 +86,7 @@ class Grammar {
   bool bar_ahead();
   Node bar(std::size_t depth, Node base);
   Node script(std::size_t depth, const Token& caret);
-  Node single_digit(const Token& t);
+  Node single_digit(const Token& t, bool script);
   [[nodiscard]] bool explicit_product(const Token& t) const;
   [[nodiscard]] bool starts_atom(const Token& t) const;
   [[nodiscard]] static bool big_operator(const Token& t);

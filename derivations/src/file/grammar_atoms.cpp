@@ -263,7 +263,7 @@ Node Grammar::argument(std::size_t depth, const Token& before, const std::string
     return group_inside(depth, open, '}');
   }
   if (next.kind == Tok::number) {
-    return single_digit(next);
+    return single_digit(next, is_char(before, '^') || is_char(before, '_'));
   }
   if (next.kind == Tok::letter ||
       (next.kind == Tok::command && commands::greek.contains(next.text))) {

@@ -224,7 +224,7 @@ std::string Grammar::subscript(std::size_t depth) {
     return take().text;
   }
   if (t.kind == Tok::number) {
-    return single_digit(t).text;
+    return single_digit(t, true).text;
   }
   if (t.kind == Tok::command &&
       (commands::greek.contains(t.text) || t.text == "\\perp" || t.text == "\\parallel")) {
