@@ -107,14 +107,14 @@ TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students
   refused("$$\\Delta(m v) = J$$", 1, 9, "\\Delta");  // at its parenthesis
   refused("$$\\overline{x} = 1$$", 1, 3, "\\overline");
   // x^10: LaTeX raises the 1 alone (x^1 then 0), so y = x^10 and y = x^{10} disagreed, with y = 0
-  // as the counterexample. Several digits after ^ or _ are refused; \\frac12 stays a half.
+  // as the counterexample. Several digits after ^ or _ are refused; \frac12 stays a half.
   refused("$$y = x^10$$\n\n$$y = x^{10}$$", 1, 9, "write {10} for 10");
   refused("$$v_12 = 1$$", 1, 5, "write {12}");
   same("\\frac12 x", "\\frac{1}{2} x");
   // A symbol written as a vector but not declared one is a number of its own (part one), but not
   // where a vector changes the reading: divided by (m = F / a followed from F = m a, with
   // "follows-if a ≠ 0"), inside |…| (|3 i + 4 j| = 5 failed with i = 1, j = -1), or side by side
-  // with another (2 \\vec u \\vec a t).
+  // with another (2 \vec u \vec a t).
   const std::string newton = "assume: m > 0\n\n$$\\vec F = m \\vec a$$\n\n";
   refused(newton + "$$m = \\vec F / \\vec a$$", 5, 16, "\\vec a as a divisor");
   refused(newton + "$$m = \\frac{\\vec F}{\\vec a}$$", 5, 21, "written as a vector");
@@ -130,8 +130,13 @@ TEST_CASE("Students' functions: inverse, hyperbolic, logarithms, arguments witho
           "[derivations][students-notation]") {
   same("\\sin a \\cos b", "\\sin(a) \\cos(b)");
   same("\\sin \\cos \\theta", "\\sin(\\cos(\\theta))");
-  same("\\sin\\theta\\, t^2", "\\sin(\\theta t^2)");
-  different("\\sin\\theta\\, t^2", "t^2 \\sin\\theta");
+  same("\\sin \\omega t", "\\sin(\\omega t)");
+  // Past spacing, \cdot, \times or / the argument would run on where the factor after may be
+  // meant outside: W = F \cos\theta \cdot d was F cos(θ d), and W = F d \cos\theta failed;
+  // \sin\theta/2 was sin(θ/2). Refused at the operator or the factor after the spacing.
+  refused("$$y = \\sin\\theta\\, t^2$$", 1, 20, "'\\,'");
+  refused("$$W = F\\cos\\theta \\cdot d$$\n\n$$W = F d \\cos\\theta$$", 1, 19, "'\\cdot'");
+  refused("$$y = \\sin\\theta/2$$", 1, 17, "'/'");
   same("\\sin^2 x", "(\\sin x)^2");
   same("\\log_2 8", "3");
   // e is a symbol (an elasticity), not Euler's number: ln(e^2) = 2 ln e, not 2.
@@ -173,7 +178,7 @@ TEST_CASE("Students' e and i: Euler's number upright, e to a power and a lone i 
 }
 
 TEST_CASE("Students' units after numbers are refused", "[derivations][students-notation]") {
-  // L = 2 m (a metre) read \\mathrm{m} as the mass m: with I = m L^2 / 12, I = m^3 / 3 followed.
+  // L = 2 m (a metre) read \mathrm{m} as the mass m: with I = m L^2 / 12, I = m^3 / 3 followed.
   refused(
       "assume: m > 0\n\ngiven:\n\n$$L = 2\\,\\mathrm{m} \\\\ I = \\frac{1}{12} m L^2$$\n\n"
       "$$I = \\frac{1}{3} m^3$$",
@@ -181,7 +186,7 @@ TEST_CASE("Students' units after numbers are refused", "[derivations][students-n
   refused("$$v = 3\\,\\mathrm{m/s}$$", 1, 19, "units (m/s");
   refused("$$a = 9.8\\,\\mathrm{m}^2$$", 1, 12, "\\mathrm{m}");
   // An upright name that is no unit stays a name (2 KE = m v^2 from KE = m v^2 / 2), and
-  // \\mathrm{d} after a number is a differential.
+  // \mathrm{d} after a number is a differential.
   CHECK(verdicts("$$\\mathrm{KE} = \\frac{1}{2} m v^2$$\n\n$$2\\,\\mathrm{KE} = m v^2$$") ==
         std::vector<std::string>{"premise", "follows"});
   CHECK(verdicts("$$J = 2\\,\\mathrm{d}t$$\n\n$$J = 2\\,dt$$") ==

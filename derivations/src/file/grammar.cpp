@@ -180,6 +180,18 @@ Node Grammar::term(std::size_t depth) {
     if (bare_argument_ > 0 && integrand_ > 0 && differential_ahead()) {
       break;  // \int \sin \omega t \, dt: the argument ends before the differential
     }
+    if (bare_argument_ > 0 &&
+        (explicit_product(next) ||
+         (starts_atom(next) && position_ > 0 && tokens_[position_ - 1].kind == Tok::spacing))) {
+      // F \cos\theta \cdot d was cos(θ d), \sin\theta/2 sin(θ/2), v_0 \cos\theta\, t_f
+      // cos(θ t_f): the writer may have meant the factor outside.
+      throw error(next,
+                  "expected parentheses around the argument of a function: written "
+                  "without them, it would run on past " +
+                      describe(explicit_product(next) ? next : tokens_[position_ - 1]) +
+                      ", where the factor after may be meant outside; write \\cos(\\theta "
+                      "d) for the one, (\\cos\\theta) d or d \\cos\\theta for the other");
+    }
     if (big_operator(next)) {
       if (bare_argument_ > 0) {
         break;
