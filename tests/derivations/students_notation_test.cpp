@@ -100,6 +100,10 @@ TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students
   same("v^2_1", "v_1^2");
   same("{v_1}'", "v_1'");
   same("\\Delta{p}", "\\Delta p");
+  // \Delta v^2: the square of the change, or the change of the square (W = m \Delta v^2 / 2 from
+  // the work-energy theorem)? Refused at the ^; (\Delta v)^2 is the square.
+  refused("$$W = \\tfrac12 m \\Delta v^2$$", 1, 26, "(\\Delta v)^");
+  same("(\\Delta v)^2", "\\Delta v \\cdot \\Delta v");
   same("\\hat n", "n");
   same("\\mathbf n", "n");
   different("\\bar x", "x");

@@ -303,6 +303,17 @@ Node Grammar::factor(std::size_t depth) {
 // (v^2_1 is (v_1)^2: a subscript after the power belongs to the symbol under it)
 Node Grammar::postfix(std::size_t depth, Node base) {
   if (is_char(peek_raw(), '^')) {
+    const Token& before = token(position_ - 1);
+    const bool grouped = is_char(before, ')') || is_char(before, ']');  // (\Delta v)^2
+    if (base.kind == NodeKind::symbol && base.symbol.delta && !grouped) {
+      // W = \tfrac12 m \Delta v^2 means the change of v^2 (read as (Δv)^2, a right step failed).
+      SymbolName changed = base.symbol;
+      changed.delta = false;
+      const std::string delta = "\\Delta " + changed.latex();
+      throw error(peek_raw(), "expected (" + delta + ")^… for a power of the change: " + delta +
+                                  "^… could be the change of the power too; for that one, write "
+                                  "the difference (v_f^2 - v_i^2) or name it");
+    }
     const Token caret = take();
     Node exponent = script(depth + 1, caret);
     if (is_char(peek_raw(), '_') && base.kind == NodeKind::symbol &&
