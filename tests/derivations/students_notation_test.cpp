@@ -262,6 +262,14 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
   // a < b makes b - a positive.
   CHECK(verdicts("assume: a < b\n\n$$(b - a) x = 1$$\n\n$$x = \\frac{1}{b - a}$$") ==
         std::vector<std::string>{"premise", "follows"});
+  // The numeric method's points keep a strict fact clear of its boundary: with 0 < m_2 < m_1,
+  // solving (m_1 - m_2)(u - w) = 0 for m_1 gave m_1 - m_2 = 1e-17, "a point where u = w fails",
+  // and the step was undecided. Where the premise does not give it, u = w still fails.
+  const std::string masses = "assume: 0 < m_2 < m_1\n\n";
+  CHECK(verdicts(masses + "$$(m_1 - m_2) u = (m_1 - m_2) w$$\n\n$$u = w$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts(masses + "$$(m_1 - m_2) u = w$$\n\n$$u = w$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
   // 4 - 3 sin²θ ≥ 1 for every θ.
   CHECK(verdicts("$$(4 - 3\\sin^2\\theta) x = 1$$\n\n$$x = \\frac{1}{4 - 3\\sin^2\\theta}$$") ==
         std::vector<std::string>{"premise", "follows"});

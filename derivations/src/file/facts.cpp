@@ -640,16 +640,20 @@ bool Facts::satisfied_numerically(const std::vector<ex>& symbols,
     }
     return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
   };
+  // A strict fact's expression at rounding level from 0 is on its boundary, which the fact leaves
+  // out (as a denominator there is): m_1 > m_2 with m_1 solved from (m_1 - m_2)(u - w) = 0 gave
+  // m_1 - m_2 = 1e-17 > 0, and a point where u = w fails.
+  constexpr double clear = 1e-9;
   for (const auto& [r, sign] : relations_) {
     const auto v = value_of(r);
     if (!v) {
       continue;
     }
-    const bool ok = sign == Sign::positive      ? *v > 0
-                    : sign == Sign::negative    ? *v < 0
+    const bool ok = sign == Sign::positive      ? *v > clear
+                    : sign == Sign::negative    ? *v < -clear
                     : sign == Sign::nonnegative ? *v >= 0
                     : sign == Sign::nonpositive ? *v <= 0
-                    : sign == Sign::nonzero     ? *v != 0
+                    : sign == Sign::nonzero     ? std::abs(*v) > clear
                                                 : true;
     if (!ok) {
       return false;
