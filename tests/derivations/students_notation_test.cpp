@@ -262,6 +262,16 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
   // a < b makes b - a positive.
   CHECK(verdicts("assume: a < b\n\n$$(b - a) x = 1$$\n\n$$x = \\frac{1}{b - a}$$") ==
         std::vector<std::string>{"premise", "follows"});
+  // Dividing by the effective mass's denominator with n a unit vector: the condition came out
+  // reduced by n_x^2 = 1 - n_y^2, -(I + m (r_x n_y - r_y n_x)^2) in another form, and was shown
+  // though I, m > 0 keep it from zero. Without unit: n it was already dropped.
+  const std::string effective =
+      "$$J \\left(\\frac{1}{m} + \\frac{\\det(\\vec r, \\vec n)^2}{I}\\right) = -u$$\n\n$$J = "
+      "-\\frac{u}{\\frac{1}{m} + \\frac{\\det(\\vec r, \\vec n)^2}{I}}$$";
+  CHECK(verdicts("vector: r, n\n\nunit: n\n\nassume: m > 0, I > 0\n\n" + effective) ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("vector: r, n\n\nassume: m > 0, I > 0\n\n" + effective) ==
+        std::vector<std::string>{"premise", "follows"});
   // The numeric method's points keep a strict fact clear of its boundary: with 0 < m_2 < m_1,
   // solving (m_1 - m_2)(u - w) = 0 for m_1 gave m_1 - m_2 = 1e-17, "a point where u = w fails",
   // and the step was undecided. Where the premise does not give it, u = w still fails.

@@ -667,8 +667,12 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
       if (expanded_terms(d) > 200 || expanded_terms(c) > 200 || !facts.nonzero(d)) {
         continue;
       }
-      // c is d times something the facts keep from zero (1/m + …/I and I m (…)).
-      if (facts.nonzero(factored(GiNaC::normal(c / d)))) {
+      // c is d times something the facts keep from zero (1/m + …/I and I m (…)); with a unit
+      // vector, c may be d reduced by its equality (n_x^2 written 1 - n_y^2), so the quotient
+      // is reduced too.
+      if (facts.nonzero(factored(GiNaC::normal(c / d))) ||
+          (!facts.equalities().empty() &&
+           facts.nonzero(factored(GiNaC::normal(reduced(c / d, facts.equalities())))))) {
         return true;
       }
     }
