@@ -678,38 +678,50 @@ class Decider {
   // case's values are put in, or a premise of the case divides it. Large expressions are left
   // alone (the search decides them as before).
   std::optional<ex> undefined_premise(const Frame& frame, const std::vector<ex>& numerators) const {
+    constexpr double small = 60;  // terms: larger ones are left to the search (a division of
+                                  // large polynomials, or the numerator of a large fraction, costs
+                                  // more than the case)
     for (const ex& written : problem_.premise_denominators) {
-      if (is_a<numeric>(written)) {
+      if (is_a<numeric>(written) || expanded_terms(written) > small) {
         continue;
       }
       ex d = written;
+      bool changed = false;
       try {
-        bool changed = false;
         for (const Solved& s : frame.solved) {
           if (d.has(s.symbol)) {
             d = d.subs(GiNaC::exmap{{s.symbol, s.value}});
             changed = true;
           }
         }
-        if (expanded_terms(d) > 200) {
-          continue;
+      } catch (const std::exception&) {
+        return written;  // the case's values divide by zero in it
+      }
+      try {
+        if (changed) {
+          if (expanded_terms(d) > small) {
+            continue;
+          }
+          d = numerator(d);
+          if (d.is_zero()) {
+            return written;
+          }
         }
-        if (changed && numerator(d).is_zero()) {
-          return written;
-        }
+        const ex polynomial = GiNaC::expand(d);
         for (const ex& p : numerators) {
           // p divides d only if d has every symbol of p (checked first: it costs no division).
           const std::vector<ex> in_p = symbols_of(p);
-          if (in_p.empty() || expanded_terms(p) > 200 ||
+          if (in_p.empty() || expanded_terms(p) > small ||
               !std::all_of(in_p.begin(), in_p.end(), [&](const ex& u) { return d.has(u); })) {
             continue;
           }
-          if (is_a<numeric>(GiNaC::normal(d / p).denom())) {
+          ex quotient;
+          if (GiNaC::divide(polynomial, GiNaC::expand(p), quotient)) {
             return written;
           }
         }
       } catch (const std::exception&) {
-        return written;  // the case's values divide by zero in it
+        continue;  // not polynomials (a root, a function): no exact division
       }
     }
     return std::nullopt;
