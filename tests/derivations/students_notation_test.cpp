@@ -73,6 +73,8 @@ TEST_CASE("Students' arrows, annotations and separators inside a display",
   CHECK(verdicts("$$a = b, \\quad a - b = 0$$") == std::vector<std::string>{"premise", "follows"});
   refused("$$a \\approx b$$", 1, 5, "\\approx");
   refused("$$a = b$$\n\n$$x = \\pm b$$", 3, 7, "\\pm");
+  // Between terms too (the quadratic formula): it used to say "expected '}'".
+  refused("$$t = \\frac{v_0 \\pm \\sqrt{v_0^2 - 2 g h}}{g}$$", 1, 17, "two equations");
   // Words after the last equation are an annotation; inside an equation they are refused.
   CHECK(verdicts("$$a = b \\text{ because the masses are equal}$$\n\n$$a - b = 0$$") ==
         std::vector<std::string>{"premise", "follows"});
@@ -219,6 +221,9 @@ TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
   same("\\int_0^1 \\frac{1}{1 + x}\\,dx", "\\ln 2");
   // ∫_0^π sin u du = 2 (hand: -cos π + cos 0).
   same("\\int_0^{\\pi} \\sin u\\,du", "2");
+  // A minus before the integrand (the spring's work): ∫_{x_1}^{x_2} -k x dx = -k (x_2^2 - x_1^2)/2
+  // by hand; it was refused as "expected the integrand".
+  same("\\int_{x_1}^{x_2} -k x\\, dx", "-\\frac{k}{2}\\left(x_2^2 - x_1^2\\right)");
   // Across the pole of 1 / x the formula ln|x| does not hold: the integral is left whole, and
   // the step claiming ln 2 - ln 1 for it is not passed.
   CHECK(verdicts("$$W = \\int_{-1}^{2} \\frac{1}{x}\\,dx$$\n\n$$W = \\ln 2$$") !=

@@ -122,6 +122,9 @@ Node Grammar::expression(std::size_t depth) {
     sum.children.push_back(sum_term(depth + 1));
     sum.ops += sign;
   }
+  if (is_command(peek(), "\\pm") || is_command(peek(), "\\mp")) {
+    refused_command(peek());  // between terms too (v_0 \pm \sqrt{…}): two equations, not a '}'
+  }
   for (std::size_t i = 0; i < sum.children.size(); ++i) {
     if (sum.children[i].kind == NodeKind::dots &&
         (i == 0 || i + 1 == sum.children.size() || sum.ops[i] != '+')) {

@@ -3,6 +3,8 @@
 // limits and their differential. Each takes the rest of its term as its argument.
 #include "file/grammar.hpp"
 
+#include <optional>
+
 namespace impulse::derivations::file {
 
 namespace {
@@ -108,8 +110,13 @@ Node Grammar::integral(std::size_t depth, const Token& op) {
       upper = script(depth + 1, mark);
     }
   }
+  std::optional<Token> minus;  // \int_{x_1}^{x_2} -k x\, dx
+  if (is_char(peek(), '-')) {
+    minus = take();
+  }
   if (!starts_atom(peek()) && !big_operator(peek())) {
-    throw error(peek(), "expected the integrand after \\int (ending in its differential, dt)");
+    throw error(peek(),
+                "expected the integrand after \\int (ending in its differential: dt, dx, …)");
   }
   ++integrand_;
   n.children.push_back(term(depth + 1));
@@ -121,6 +128,13 @@ Node Grammar::integral(std::size_t depth, const Token& op) {
     n.ops += 'p';
   } else {
     take_differential(n);
+  }
+  if (minus) {
+    Node negated = make(NodeKind::sum, minus->offset);
+    negated.children.push_back(std::move(n.children[0]));
+    negated.ops.push_back('-');
+    negated.end = negated.children[0].end;
+    n.children[0] = std::move(negated);
   }
   if (lower) {
     n.children.push_back(std::move(*lower));
