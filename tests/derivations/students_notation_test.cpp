@@ -214,6 +214,19 @@ TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
   refused("$$y = v(-2)$$", 1, 7, "v(-2)");
   CHECK(verdicts("function: v\n\n$$v(t) = v_0 - g t$$\n\n$$v(0) = v_0$$") ==
         std::vector<std::string>{"premise", "follows-one-way"});
+  // \dot E of an E not declared a function was a symbol unrelated to E, so the energy's rate
+  // failed; refused now, and with function: E declared it follows (hand: dE/dt = m ẋ ẍ + k x ẋ
+  // by the chain rule), while the slip 2 k x ẋ does not.
+  const std::string energy =
+      "assume: m, k > 0\n\n$$E = \\tfrac12 m \\dot x^2 + \\tfrac12 k x^2$$\n\n";
+  refused("function: x\n\n" + energy + "$$\\dot E = m \\dot x \\ddot x + k x \\dot x$$", 7, 3,
+          "function: E");
+  CHECK(
+      verdicts("function: x, E\n\n" + energy + "$$\\dot E = m \\dot x \\ddot x + k x \\dot x$$") ==
+      std::vector<std::string>{"premise", "follows-one-way"});
+  CHECK(verdicts("function: x, E\n\n" + energy +
+                 "$$\\dot E = m \\dot x \\ddot x + 2 k x \\dot x$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
   // ∫_0^T a t dt = a T^2 / 2 (hand: the antiderivative a t^2 / 2 at T minus at 0).
   CHECK(verdicts("$$W = \\int_0^T a t\\,dt$$\n\n$$W = \\frac{a T^2}{2}$$") ==
         std::vector<std::string>{"premise", "follows"});

@@ -404,6 +404,17 @@ class Evaluator {
     if (const auto dotted = dotted_function(name)) {
       return {false, *dotted, 0};
     }
+    if ((name.base.starts_with("\\dot{") || name.base.starts_with("\\ddot{")) &&
+        !s_.is_quantity(name)) {
+      // \dot E of an E not declared a function was a symbol unrelated to E: E = m \dot x^2 / 2
+      // then \dot E = m \dot x \ddot x failed.
+      const std::string under =
+          name.base.substr(name.base.find('{') + 1, name.base.size() - name.base.find('{') - 2);
+      throw error(n.offset, "expected " + under + " declared a function (function: " + under +
+                                ") under " + name.latex() + ": its derivative in t; as it is, " +
+                                name.latex() + " would be a symbol of its own, unrelated to " +
+                                under);
+    }
     if (plain_letter(n, "e") && n.text == upright_e) {
       return {false, GiNaC::exp(ex(1)), 0};  // \mathrm{e}: Euler's number
     }
