@@ -301,6 +301,17 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
   // 4 - 3 sin²θ ≥ 1 for every θ.
   CHECK(verdicts("$$(4 - 3\\sin^2\\theta) x = 1$$\n\n$$x = \\frac{1}{4 - 3\\sin^2\\theta}$$") ==
         std::vector<std::string>{"premise", "follows"});
+  // Roots of numbers meet as their prime factors' powers: √(10/7) √(7/10) = 1, so v = √(10 g h/7)
+  // follows from g h = 7 v^2 / 10 for v, g, h > 0 (undecided before, "what is left:
+  // -√(10/7) √(7/10) v + v"); the slip √(7 g h/10) does not.
+  same("\\sqrt{\\frac{10}{7}} \\sqrt{\\frac{7}{10}}", "1");
+  same("\\sqrt{6}", "\\sqrt{2} \\sqrt{3}");
+  different("\\sqrt{6}", "\\sqrt{2} \\sqrt{2}");
+  const std::string rolling = "assume: g, h, v > 0\n\n$$g h = \\frac{7}{10} v^2$$\n\n";
+  CHECK(verdicts(rolling + "$$v = \\sqrt{\\frac{10 g h}{7}}$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts(rolling + "$$v = \\sqrt{\\frac{7 g h}{10}}$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
   // √(V²) = V only for V ≥ 0.
   CHECK(verdicts("assume: V > 0\n\n$$y = \\sqrt{V^2}$$\n\n$$y = V$$") ==
         std::vector<std::string>{"premise", "follows"});

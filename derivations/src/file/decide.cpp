@@ -197,24 +197,48 @@ bool positive(const ex& e, const Facts& facts) {
   return facts.sign(e) == Sign::positive;
 }
 
-// ln q of a positive rational q as a sum of its prime factors' logarithms, so that ln 8 meets
-// 3 ln 2 and ln 6 meets ln 2 + ln 3 (factors up to 10^4 are tried; what is left stays whole).
-ex rational_logarithm(const numeric& q) {
-  ex sum = 0;
-  const auto add = [&](numeric n, int sign) {
+// A positive rational as its prime factors below 10^4 with their powers (negative for the
+// denominator's); what is left of the numerator or the denominator stays one factor.
+std::vector<std::pair<numeric, long>> prime_powers(const numeric& q) {
+  std::vector<std::pair<numeric, long>> powers;
+  const auto add = [&](numeric n, long sign) {
     for (long p = 2; p < 10000 && n > 1; ++p) {
+      long k = 0;
       while (GiNaC::mod(n, p).is_zero()) {
         n = n / p;
-        sum += sign * GiNaC::log(numeric(p));
+        ++k;
+      }
+      if (k > 0) {
+        powers.emplace_back(numeric(p), sign * k);
       }
     }
     if (n > 1) {
-      sum += sign * GiNaC::log(n);
+      powers.emplace_back(n, sign);
     }
   };
   add(q.numer(), 1);
   add(q.denom(), -1);
+  return powers;
+}
+
+// ln q of a positive rational q as a sum of its prime factors' logarithms, so that ln 8 meets
+// 3 ln 2 and ln 6 meets ln 2 + ln 3.
+ex rational_logarithm(const numeric& q) {
+  ex sum = 0;
+  for (const auto& [p, k] : prime_powers(q)) {
+    sum += k * GiNaC::log(p);
+  }
   return sum;
+}
+
+// q^r of a positive rational q and a rational r as its prime factors' powers, so that
+// √(10/7) √(7/10) meets 1 and √6 meets √2 √3.
+ex rational_root(const numeric& q, const numeric& r) {
+  ex product = 1;
+  for (const auto& [p, k] : prime_powers(q)) {
+    product *= GiNaC::pow(ex(p), ex(k * r));  // as ex: a power of numerics alone is a float
+  }
+  return product;
 }
 
 // ln a, with the logarithm of a product of positive factors written as a sum, of a positive
@@ -396,6 +420,10 @@ ex by_facts(const ex& e, const Facts& facts) {
     }
     if (is_a<numeric>(exponent) && !GiNaC::ex_to<numeric>(exponent).is_integer() &&
         GiNaC::ex_to<numeric>(exponent).is_rational()) {
+      if (is_a<numeric>(base) && GiNaC::ex_to<numeric>(base).is_rational() &&
+          GiNaC::ex_to<numeric>(base).is_positive()) {
+        return rational_root(GiNaC::ex_to<numeric>(base), GiNaC::ex_to<numeric>(exponent));
+      }
       return root_taken(base, GiNaC::ex_to<numeric>(exponent), facts);
     }
     return x;
