@@ -301,6 +301,22 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
   // 4 - 3 sin²θ ≥ 1 for every θ.
   CHECK(verdicts("$$(4 - 3\\sin^2\\theta) x = 1$$\n\n$$x = \\frac{1}{4 - 3\\sin^2\\theta}$$") ==
         std::vector<std::string>{"premise", "follows"});
+  // Dividing by cos θ: on 0 < θ < π/2 it is positive, so no condition (before, the condition
+  // was shown as 1 ± tan(θ/2) ≠ 0, and π/2 was no bound); on 0 ≤ θ ≤ π/2 it may be 0, and the
+  // condition reads cos θ ≠ 0, as the file writes it.
+  const std::string cancel = "$$x \\cos\\theta = y \\cos\\theta$$\n\n$$x = y$$";
+  CHECK(verdicts("assume: 0 < \\theta < \\pi/2\n\n" + cancel) ==
+        std::vector<std::string>{"premise", "follows"});
+  // sin θ > 0 on 0 < θ < π (its crest inside); cos θ on 0 < θ < 2 passes through 0 at π/2.
+  CHECK(
+      verdicts("assume: 0 < \\theta < \\pi\n\n$$x \\sin\\theta = y \\sin\\theta$$\n\n$$x = y$$") ==
+      std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("assume: 0 < \\theta < 2\n\n" + cancel) ==
+        std::vector<std::string>{"premise", "follows-if"});
+  const auto closed =
+      d::check_derivation("assume: 0 \\le \\theta \\le \\pi/2\n\n" + cancel, "cos.md");
+  REQUIRE(closed.equations.at(1).verdict == d::Verdict::follows_if);
+  CHECK(closed.equations.at(1).condition_text == "cos(theta) != 0");
   // Roots of numbers meet as their prime factors' powers: √(10/7) √(7/10) = 1, so v = √(10 g h/7)
   // follows from g h = 7 v^2 / 10 for v, g, h > 0 (undecided before, "what is left:
   // -√(10/7) √(7/10) v + v"); the slip √(7 g h/10) does not.

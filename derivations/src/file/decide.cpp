@@ -1272,6 +1272,42 @@ class Trig {
 
 }  // namespace
 
+namespace {
+
+// The conditions in τ alone (τ = tan(angle/2)) whose product is a number times 1 - τ² or τ,
+// replaced by cos(angle) or sin(angle): 1 - τ² = cos(angle) (1 + τ²) and 2τ = sin(angle) (1 + τ²).
+std::vector<ex> in_the_angle(const std::vector<ex>& conditions, const ex& tau, const ex& angle) {
+  std::vector<ex> kept;
+  ex product = 1;
+  bool any = false;
+  for (const ex& c : conditions) {
+    const std::vector<ex> in_c = symbols_of(c);
+    if (in_c.size() == 1 && in_c[0].is_equal(tau) && c.is_polynomial(tau)) {
+      product *= c;
+      any = true;
+    } else {
+      kept.push_back(c);
+    }
+  }
+  if (!any) {
+    return conditions;
+  }
+  try {
+    if (is_a<numeric>(GiNaC::normal(product / (1 - tau * tau)))) {
+      kept.push_back(GiNaC::cos(angle));
+      return kept;
+    }
+    if (is_a<numeric>(GiNaC::normal(product / tau))) {
+      kept.push_back(GiNaC::sin(angle));
+      return kept;
+    }
+  } catch (const std::exception&) {
+  }
+  return conditions;
+}
+
+}  // namespace
+
 Implication implies(const Problem& given, const Facts& facts, const Budget& budget) {
   Implication result;
   // Roots, powers and logarithms simplified where the facts allow it.
@@ -1325,7 +1361,11 @@ Implication implies(const Problem& given, const Facts& facts, const Budget& budg
           "angles that show it");
       found.residual = original.target;
     } else {
-      // Conditions back in the angles: τ = tan(angle/2).
+      // Conditions back in the angles: τ = tan(angle/2); those in one τ alone whose product is
+      // 1 - τ² (or τ) are cos(angle) ≠ 0 (or sin(angle) ≠ 0), as the file would write them.
+      for (const auto& [tau, angle] : rewrite.tangents) {
+        found.conditions = in_the_angle(found.conditions, tau, angle);
+      }
       GiNaC::exmap back;
       for (const auto& [tau, angle] : rewrite.tangents) {
         back[tau] = GiNaC::tan(angle / 2);

@@ -196,6 +196,44 @@ bool function_named(const ex& e, const char* name) {
   return is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == name;
 }
 
+// sin or cos over a range of their argument narrower than a turn: the values at its ends, and ±1
+// where a crest or trough lies inside. A value at an end within 1e-15 of 0 is 0 (cos of the
+// double nearest π/2 is 6e-17), with that end's openness: on 0 < θ < π/2, cos θ > 0.
+Range wave(const Range& a, bool cosine) {
+  constexpr double pi = 3.14159265358979323846;
+  if (!std::isfinite(a.low) || !std::isfinite(a.high) || a.high - a.low >= 2 * pi) {
+    return {-1, 1, false, false};
+  }
+  const auto f = [&](double x) {
+    const double v = cosine ? std::cos(x) : std::sin(x);
+    return std::abs(v) < 1e-15 ? 0.0 : v;
+  };
+  const double at_low = f(a.low);
+  const double at_high = f(a.high);
+  Range r;
+  if (at_low < at_high || (at_low == at_high && a.low_open)) {
+    r = {at_low, at_high, a.low_open, a.high_open};
+  } else {
+    r = {at_high, at_low, a.high_open, a.low_open};
+  }
+  // Crests (cos at 2kπ, sin at π/2 + 2kπ) and troughs strictly inside.
+  const double shift = cosine ? 0.0 : pi / 2;
+  for (double k = std::ceil((a.low - shift) / pi - 1e-9); k * pi + shift < a.high + 1e-9; ++k) {
+    const double x = k * pi + shift;
+    if (x <= a.low + 1e-9 || x >= a.high - 1e-9) {
+      continue;
+    }
+    if (static_cast<long>(k) % 2 == 0) {
+      r.high = 1;
+      r.high_open = false;
+    } else {
+      r.low = -1;
+      r.low_open = false;
+    }
+  }
+  return {r.low == 0 ? 0.0 : down(r.low), r.high == 0 ? 0.0 : up(r.high), r.low_open, r.high_open};
+}
+
 }  // namespace
 
 // ---- adding facts ------------------------------------------------------------------------------
@@ -269,10 +307,12 @@ void Facts::add_relation(const ex& e, Sign sign) {
   if (is_a<GiNaC::add>(expanded) && expanded.nops() == 2) {
     for (std::size_t k = 0; k < 2; ++k) {
       const ex variable_part = expanded.op(k);
-      const ex number = expanded.op(1 - k);
-      if (!is_a<GiNaC::numeric>(number)) {
+      // A number, or a constant such as π/2 (its double one step outward, below).
+      const ex number = GiNaC::evalf(expanded.op(1 - k));
+      if (!is_a<GiNaC::numeric>(number) || !GiNaC::ex_to<GiNaC::numeric>(number).is_real()) {
         continue;
       }
+      const bool exact = is_a<GiNaC::numeric>(expanded.op(1 - k));
       const double c = -GiNaC::ex_to<GiNaC::numeric>(number).to_double();
       ex symbol = variable_part;
       Sign s = sign;
@@ -284,11 +324,15 @@ void Facts::add_relation(const ex& e, Sign sign) {
       if (!is_a<GiNaC::symbol>(symbol)) {
         continue;
       }
-      const double bound = s == sign ? c : -c;
+      double bound = s == sign ? c : -c;
       const bool sharp = s == Sign::positive || s == Sign::negative;
       auto& [low, high] = bounds_[symbol];
       auto& [low_strict, high_strict] = strict_[symbol];
-      if (s == Sign::positive || s == Sign::nonnegative) {
+      const bool lower = s == Sign::positive || s == Sign::nonnegative;
+      if (!exact) {
+        bound = std::nextafter(bound, lower ? -infinity : infinity);  // θ < π/2: not tighter
+      }
+      if (lower) {
         if (!low || bound > *low || (bound == *low && sharp)) {
           low = bound;
           low_strict = sharp;
@@ -530,7 +574,7 @@ Sign Facts::of_range(const ex& e) const {
       return k >= 0 ? integer_power(base, k) : inverse(integer_power(base, -k));
     }
     if (function_named(x, "sin") || function_named(x, "cos")) {
-      return {-1, 1, false, false};
+      return wave(range(x.op(0)), function_named(x, "cos"));
     }
     if (function_named(x, "log")) {
       const Range a = range(x.op(0));
