@@ -290,6 +290,14 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
         std::vector<std::string>{"premise", "follows"});
   CHECK(verdicts("vector: r, n\n\nassume: m > 0, I > 0\n\n" + effective) ==
         std::vector<std::string>{"premise", "follows"});
+  // m_0 > m_f and m_f > 0 give m_0 > 0 (m_0 = (m_0 - m_f) + m_f), so the rocket's logarithm
+  // splits: undecided before, for want of m_0's sign. Without m_f > 0 it cannot split.
+  const std::string rocket =
+      "$$\\Delta v = u \\ln\\frac{m_0}{m_f}$$\n\n$$\\Delta v = u (\\ln m_0 - \\ln m_f)$$";
+  CHECK(verdicts("assume: m_0 > m_f, m_f > 0\n\n" + rocket) ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("assume: m_0 > m_f\n\n" + rocket) !=
+        std::vector<std::string>{"premise", "follows"});
   // The numeric method's points keep a strict fact clear of its boundary: with 0 < m_2 < m_1,
   // solving (m_1 - m_2)(u - w) = 0 for m_1 gave m_1 - m_2 = 1e-17, "a point where u = w fails",
   // and the step was undecided. Where the premise does not give it, u = w still fails.

@@ -421,7 +421,8 @@ Sign Facts::structural(const ex& e) const {
     return Sign::positive;
   }
   if (is_a<GiNaC::symbol>(e)) {
-    return of_symbol(e);
+    const Sign own = of_symbol(e);
+    return own != Sign::unknown ? own : through_relation(e);
   }
   if (!relations_.empty() && !is_a<GiNaC::function>(e) && e.nops() <= 16) {
     if (const Sign s = of_relation(e); s != Sign::unknown) {
@@ -488,6 +489,37 @@ Sign Facts::structural(const ex& e) const {
   if (function_named(e, "indexed_product")) {
     const Sign body = sign(e.op(0));
     return body == Sign::positive ? Sign::positive : Sign::unknown;
+  }
+  return Sign::unknown;
+}
+
+// A symbol's sign through a relation it stands in with coefficient ±1: m_0 > m_f and m_f > 0
+// give m_0 = (m_0 - m_f) + m_f > 0. One relation deep at a time, at most three deep in all (a
+// cycle of relations ends there).
+Sign Facts::through_relation(const ex& x) const {
+  thread_local int depth = 0;
+  if (depth >= 3) {
+    return Sign::unknown;
+  }
+  ++depth;
+  struct Leave {
+    ~Leave() { --depth; }
+  } leave;
+  for (const auto& [r, s] : relations_) {
+    if (!r.is_polynomial(x) || r.degree(x) != 1) {
+      continue;
+    }
+    const ex c = r.coeff(x, 1);
+    if (!c.is_equal(1) && !c.is_equal(-1)) {
+      continue;
+    }
+    // x = c r - c (r - c x), the second part free of x.
+    const Sign of_r = c.is_equal(1) ? s : flipped(s);
+    const ex rest = GiNaC::expand(x - c * r);
+    const Sign total = plus(of_r, sign(rest));
+    if (total != Sign::unknown) {
+      return total;
+    }
   }
   return Sign::unknown;
 }

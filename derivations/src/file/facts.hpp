@@ -80,6 +80,7 @@ class Facts {
   [[nodiscard]] Sign structural(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_relation(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_range(const GiNaC::ex& e) const;
+  [[nodiscard]] Sign through_relation(const GiNaC::ex& x) const;
 
   std::map<GiNaC::ex, Sign, GiNaC::ex_is_less> signs_;
   std::vector<std::pair<GiNaC::ex, Sign>> relations_;
