@@ -290,6 +290,17 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
         std::vector<std::string>{"premise", "follows"});
   CHECK(verdicts("vector: r, n\n\nassume: m > 0, I > 0\n\n" + effective) ==
         std::vector<std::string>{"premise", "follows"});
+  // Absolute values of sums: |v_f - v_i| meets |v_i - v_f|, and |J| with J = -m (1 + e) v is
+  // m (1 + e) |v| for m > 0, e ≥ 0 (both undecided before); the slip m (v_i - v_f) does not
+  // follow (v_i < v_f makes it negative).
+  const std::string speeds = "assume: m > 0\n\n$$P = m |v_f - v_i|$$\n\n";
+  CHECK(verdicts(speeds + "$$P = m |v_i - v_f|$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts(speeds + "$$P = m (v_i - v_f)$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
+  CHECK(verdicts(
+            "assume: m > 0, 0 \\le e \\le 1\n\n$$J = -m (1 + e) v$$\n\n$$|J| = m (1 + e) |v|$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
   // m_0 > m_f and m_f > 0 give m_0 > 0 (m_0 = (m_0 - m_f) + m_f), so the rocket's logarithm
   // splits: undecided before, for want of m_0's sign. Without m_f > 0 it cannot split.
   const std::string rocket =

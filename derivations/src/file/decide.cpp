@@ -291,6 +291,18 @@ ex magnitude(const ex& a, const Facts& facts) {
   if (is_a<GiNaC::power>(a) && a.op(1).info(GiNaC::info_flags::even)) {
     return a;
   }
+  if (is_a<GiNaC::add>(a) && expanded_terms(a) <= 50) {
+    // A sum's factors each come out (|-e m v - m v| is m (1 + e) |v| for m > 0, e ≥ 0), and of
+    // x and -x one stands for both (|v_f - v_i| meets |v_i - v_f|).
+    try {
+      if (const ex f = factored(a); is_a<GiNaC::mul>(f)) {
+        return magnitude(f, facts);
+      }
+    } catch (const std::exception&) {
+    }
+    const ex minus = GiNaC::expand(-a);
+    return GiNaC::abs(GiNaC::ex_is_less()(minus, a) ? minus : a);
+  }
   return GiNaC::abs(a);
 }
 
