@@ -150,6 +150,17 @@ TEST_CASE("Students' functions: inverse, hyperbolic, logarithms, arguments witho
   different("\\ln(e^{2})", "2", "assume: e > 0");
   same("\\exp(2)", "\\exp(1)^2");
   same("\\arctan 1", "\\frac{\\pi}{4}");
+  // Angles with π/2 in them, and halves beside wholes (undecided before): sin(π/2 - θ) = cos θ,
+  // 1 - cos θ = 2 sin²(θ/2), cos α + cos β = 2 cos((α+β)/2) cos((α-β)/2); the slips sin θ and
+  // sin((α-β)/2) do not follow.
+  same("\\sin\\left(\\frac{\\pi}{2} - \\theta\\right)", "\\cos\\theta");
+  different("\\sin\\left(\\frac{\\pi}{2} - \\theta\\right)", "\\sin\\theta");
+  same("\\cos(\\theta + \\pi)", "-\\cos\\theta");
+  same("1 - \\cos\\theta", "2 \\sin^2\\frac{\\theta}{2}");
+  same("\\cos\\alpha + \\cos\\beta",
+       "2\\cos\\frac{\\alpha+\\beta}{2}\\cos\\frac{\\alpha-\\beta}{2}");
+  different("\\cos\\alpha + \\cos\\beta",
+            "2\\cos\\frac{\\alpha+\\beta}{2}\\sin\\frac{\\alpha-\\beta}{2}");
   same("\\cosh^2 x - \\sinh^2 x", "1");
   same("3!", "6");
   refused("$$y = \\log x$$", 1, 7, "\\log");

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -1161,7 +1162,8 @@ struct TrigRewrite {
   std::vector<std::pair<ex, ex>> tangents;  // τ, and the angle it stands for
 };
 
-// a = Σ k_i M_i with whole k_i and monomials M_i of symbols; empty when a is not of that form.
+// a = Σ k_i M_i with rational k_i and monomials M_i of symbols, or M_i = π with 2 k_i whole
+// (π/2 - θ); empty when a is not of that form.
 std::optional<std::vector<std::pair<numeric, ex>>> angle_terms(const ex& a) {
   const ex expanded = GiNaC::expand(a);
   std::vector<std::pair<numeric, ex>> terms;
@@ -1173,8 +1175,9 @@ std::optional<std::vector<std::pair<numeric, ex>>> angle_terms(const ex& a) {
         k *= GiNaC::ex_to<numeric>(f);
         return true;
       }
-      if (is_a<GiNaC::symbol>(f) || (is_a<GiNaC::power>(f) && is_a<GiNaC::symbol>(f.op(0)) &&
-                                     f.op(1).info(GiNaC::info_flags::posint))) {
+      if (is_a<GiNaC::symbol>(f) || f.is_equal(GiNaC::Pi) ||
+          (is_a<GiNaC::power>(f) && is_a<GiNaC::symbol>(f.op(0)) &&
+           f.op(1).info(GiNaC::info_flags::posint))) {
         monomial *= f;
         return true;
       }
@@ -1188,7 +1191,9 @@ std::optional<std::vector<std::pair<numeric, ex>>> angle_terms(const ex& a) {
     } else {
       ok = factor(t);
     }
-    if (!ok || !k.is_integer() || monomial.is_equal(1)) {
+    const bool pi = monomial.is_equal(GiNaC::Pi);
+    if (!ok || !k.is_rational() || monomial.is_equal(1) || (monomial.has(GiNaC::Pi) && !pi) ||
+        (pi && !(2 * k).is_integer())) {
       return false;
     }
     terms.emplace_back(k, monomial);
@@ -1210,15 +1215,27 @@ class Trig {
  public:
   TrigRewrite rewrite(const std::vector<ex>& expressions) {
     TrigRewrite result;
+    // Each monomial's base angle: the monomial over the least common denominator of its
+    // multiples (θ_0 and θ_0/2 are 2 and 1 times θ_0/2), so that every angle is a whole multiple.
     for (const ex& e : expressions) {
       for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
-        if (!is_a<GiNaC::function>(*i) || i->nops() != 1) {
+        if (!is_trig(*i)) {
+          continue;
+        }
+        if (const auto terms = angle_terms(i->op(0))) {
+          for (const auto& [k, monomial] : *terms) {
+            numeric& denominator = denominators_.emplace(monomial, 1).first->second;
+            denominator = GiNaC::lcm(denominator, k.denom());
+          }
+        }
+      }
+    }
+    for (const ex& e : expressions) {
+      for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+        if (!is_trig(*i)) {
           continue;
         }
         const std::string name = GiNaC::ex_to<GiNaC::function>(*i).get_name();
-        if (name != "sin" && name != "cos" && name != "tan") {
-          continue;
-        }
         const auto terms = angle_terms(i->op(0));
         if (!terms || result.forward.count(*i) != 0) {
           continue;
@@ -1248,9 +1265,26 @@ class Trig {
     return of_monomial(monomial);
   }
 
-  // sin and cos of k·M, by the recurrences of whole multiples.
-  std::pair<ex, ex> of_multiple(const numeric& k, const ex& monomial) {
-    const auto [s1, c1] = of_monomial(monomial);
+  static bool is_trig(const ex& e) {
+    if (!is_a<GiNaC::function>(e) || e.nops() != 1) {
+      return false;
+    }
+    const std::string& name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    return name == "sin" || name == "cos" || name == "tan";
+  }
+
+  // sin and cos of k·M, by the recurrences of whole multiples of M's base angle; of k·π (2k
+  // whole) exactly.
+  std::pair<ex, ex> of_multiple(const numeric& given_k, const ex& monomial) {
+    if (monomial.is_equal(GiNaC::Pi)) {
+      const long quarter = GiNaC::mod(numeric(2) * given_k, numeric(4)).to_long();  // k π mod 2π
+      static const std::pair<int, int> values[4] = {{0, 1}, {1, 0}, {0, -1}, {-1, 0}};
+      return {values[quarter].first, values[quarter].second};
+    }
+    const auto found = denominators_.find(monomial);
+    const numeric denominator = found == denominators_.end() ? numeric(1) : found->second;
+    const numeric k = given_k * denominator;
+    const auto [s1, c1] = of_monomial(monomial / denominator);
     const long n = GiNaC::abs(k).to_long();
     ex s_previous = 0, c_previous = 1, s = s1, c = c1;
     if (n == 0) {
@@ -1279,7 +1313,8 @@ class Trig {
     return {s, c};
   }
 
-  std::vector<std::pair<ex, ex>> tangents_;  // angle monomial, τ
+  std::vector<std::pair<ex, ex>> tangents_;                // base angle, τ
+  std::map<ex, numeric, GiNaC::ex_is_less> denominators_;  // monomial, its base's divisor
 };
 
 }  // namespace
