@@ -238,6 +238,14 @@ TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
   CHECK(verdicts("function: x, E\n\n" + energy +
                  "$$\\dot E = m \\dot x \\ddot x + 2 k x \\dot x$$") ==
         std::vector<std::string>{"premise", "does-not-follow"});
+  // The derivative's sign slipped: ẋ = Aω cos ωt by hand, so -Aω cos ωt does not follow (it was
+  // undecided: with x written out by its rule, the premise was 0 = 0 and the numeric method found
+  // no symbol to solve it for).
+  const std::string wave = "function: x\n\n$$x(t) = A\\sin(\\omega t)$$\n\n";
+  CHECK(verdicts(wave + "$$\\dot x(t) = -A\\omega\\cos(\\omega t)$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
+  CHECK(verdicts(wave + "$$\\dot x(t) = A\\omega\\cos(\\omega t)$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
   // ∫_0^T a t dt = a T^2 / 2 (hand: the antiderivative a t^2 / 2 at T minus at 0).
   CHECK(verdicts("$$W = \\int_0^T a t\\,dt$$\n\n$$W = \\frac{a T^2}{2}$$") ==
         std::vector<std::string>{"premise", "follows"});
