@@ -238,6 +238,15 @@ TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
   CHECK(verdicts("function: x, E\n\n" + energy +
                  "$$\\dot E = m \\dot x \\ddot x + 2 k x \\dot x$$") ==
         std::vector<std::string>{"premise", "does-not-follow"});
+  // Across a pole between limits that are symbols, the facts decide: with m_0, m_f > 0 the base m
+  // of 1/m is positive at both, so ∫_{m_f}^{m_0} u/m dm = u (ln m_0 - ln m_f) (undecided before);
+  // without them the integral stays whole, and the step is not passed.
+  const std::string rocket =
+      "$$\\Delta v = \\int_{m_f}^{m_0} \\frac{u}{m}\\, dm$$\n\n$$\\Delta v = u "
+      "\\left(\\ln m_0 - \\ln m_f\\right)$$";
+  CHECK(verdicts("assume: m_0, m_f, u > 0\n\n" + rocket) ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("assume: u > 0\n\n" + rocket) != std::vector<std::string>{"premise", "follows"});
   // The derivative's sign slipped: ẋ = Aω cos ωt by hand, so -Aω cos ωt does not follow (it was
   // undecided: with x written out by its rule, the premise was 0 = 0 and the numeric method found
   // no symbol to solve it for).

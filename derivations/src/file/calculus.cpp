@@ -318,7 +318,7 @@ std::optional<double> real_value(const ex& e) {
 // the whole interval; for a whole exponent other than -1, of one sign there), and a fractional
 // one's is not negative at a limit given as a number. A pole between the limits, or between
 // limits that are not numbers, leaves the integral undone rather than evaluated across it.
-bool formulas_hold(const ex& g, const ex& x, const ex& a, const ex& b) {
+bool formulas_hold(const ex& g, const ex& x, const ex& a, const ex& b, const SignOf& sign) {
   for (auto i = g.preorder_begin(); i != g.preorder_end(); ++i) {
     if (!is_a<GiNaC::power>(*i) || !i->op(0).has(x)) {
       continue;
@@ -331,8 +331,17 @@ bool formulas_hold(const ex& g, const ex& x, const ex& a, const ex& b) {
     if (!linear_in(base, x)) {
       return false;
     }
-    const auto at_a = real_value(base.subs(x == a));
-    const auto at_b = real_value(base.subs(x == b));
+    // The base's value at a limit, or where only its sign is known, ±1 for that sign.
+    const auto at = [&](const ex& limit) -> std::optional<double> {
+      const ex value = base.subs(x == limit);
+      if (const auto v = real_value(value)) {
+        return v;
+      }
+      const int s = sign ? sign(value) : 0;
+      return s == 0 ? std::nullopt : std::optional<double>(s);
+    };
+    const auto at_a = at(a);
+    const auto at_b = at(b);
     if (!is_a<numeric>(exponent)) {
       return false;  // x^n: the formula x^{n+1} / (n + 1) fails at n = -1
     }
@@ -360,7 +369,7 @@ bool formulas_hold(const ex& g, const ex& x, const ex& a, const ex& b) {
 
 }  // namespace
 
-ex integrate(const ex& f, const ex& x, const ex& a, const ex& b) {
+ex integrate(const ex& f, const ex& x, const ex& a, const ex& b, const SignOf& sign) {
   if (!f.has(x)) {
     return f * (b - a);
   }
@@ -369,7 +378,7 @@ ex integrate(const ex& f, const ex& x, const ex& a, const ex& b) {
   for (const ex& term : terms(GiNaC::expand(f))) {
     const auto [constant, varying] = split_term(term, [&](const ex& e) { return e.has(x); });
     const auto a_of =
-        formulas_hold(varying, x, a, b) ? antiderivative(varying, x) : std::optional<ex>();
+        formulas_hold(varying, x, a, b, sign) ? antiderivative(varying, x) : std::optional<ex>();
     if (a_of) {
       total += constant * (a_of->subs(x == b) - a_of->subs(x == a));
     } else {
@@ -380,6 +389,26 @@ ex integrate(const ex& f, const ex& x, const ex& a, const ex& b) {
     total += GiNaC::integral(x, a, b, undone);
   }
   return total;
+}
+
+ex integrals_by_sign(const ex& e, const SignOf& sign) {
+  if (std::none_of(e.preorder_begin(), e.preorder_end(),
+                   [](const ex& x) { return is_a<GiNaC::integral>(x); })) {
+    return e;
+  }
+  struct Each : GiNaC::map_function {
+    const SignOf& sign;
+    explicit Each(const SignOf& s) : sign(s) {}
+    ex operator()(const ex& part) override {
+      const ex inner = part.map(*this);
+      if (is_a<GiNaC::integral>(inner)) {
+        // op(0) the variable, op(1) and op(2) the limits, op(3) the integrand.
+        return integrate(inner.op(3), inner.op(0), inner.op(1), inner.op(2), sign);
+      }
+      return inner;
+    }
+  } each(sign);
+  return each(e);
 }
 
 // ---- atoms -------------------------------------------------------------------------------------

@@ -46,9 +46,16 @@ DECLARE_FUNCTION_4P(indexed_product)
                                      const GiNaC::ex& lower, const GiNaC::ex& upper,
                                      const std::function<bool(const GiNaC::ex&)>& depends);
 
-/// ∫_a^b f dx where a formula is known, else the integral left undone (GiNaC::integral).
+/// The sign of an expression as far as it is known: 1, -1, or 0 when unknown.
+using SignOf = std::function<int(const GiNaC::ex&)>;
+
+/// ∫_a^b f dx where a formula is known, else the integral left undone (GiNaC::integral). A pole
+/// between limits that are not numbers is ruled out by @p sign when given (the base of 1/m
+/// positive at both limits m_f and m_0 > 0).
 [[nodiscard]] GiNaC::ex integrate(const GiNaC::ex& f, const GiNaC::ex& x, const GiNaC::ex& a,
-                                  const GiNaC::ex& b);
+                                  const GiNaC::ex& b, const SignOf& sign = {});
+/// @p e with each integral left undone done again where @p sign rules out a pole.
+[[nodiscard]] GiNaC::ex integrals_by_sign(const GiNaC::ex& e, const SignOf& sign);
 
 /// A declared function written out by an equation: F(v) = value (v its variable), from an
 /// equation that holds for every v (it names F at its variable: F(t) = m \frac{dv}{dt}).

@@ -141,6 +141,21 @@ Scalars by_rules(Scalars s, const std::vector<Rule>& rules) {
   return s;
 }
 
+// The scalars with each integral that was left undone at reading done where the facts rule out
+// a pole between its limits (∫_{m_f}^{m_0} u/m dm with m_0, m_f > 0 is u (ln m_0 - ln m_f)).
+Scalars integrals_by_facts(Scalars s, const Facts& facts) {
+  const SignOf sign = [&facts](const ex& e) {
+    const Sign of = facts.sign(e);
+    return of == Sign::positive ? 1 : of == Sign::negative ? -1 : 0;
+  };
+  for (std::vector<ex>* list : {&s.differences, &s.scales, &s.denominators}) {
+    for (ex& d : *list) {
+      d = integrals_by_sign(d, sign);
+    }
+  }
+  return s;
+}
+
 // e with tangents, cotangents and secants written through sines and cosines, over one
 // denominator, its numerator (3 \cos^2 \tan^2 - 4 is 3 \sin^2 - 4: its range shows its sign).
 ex in_sines(const ex& e) {
@@ -480,8 +495,8 @@ AtIndex Checker::at_index(std::vector<std::pair<ex, ex>>& renamed) {
 // failure among them is only reported when a formula for them shows it (instance_failure).
 Checker::Forward Checker::exact(const Scalars& given_before, const Scalars& given_step,
                                 const Facts& given_facts, const Budget& budget) {
-  Scalars before = given_before;
-  Scalars step = given_step;
+  Scalars before = integrals_by_facts(given_before, given_facts);
+  Scalars step = integrals_by_facts(given_step, given_facts);
   Facts facts = given_facts;
   sums_in_one_form(before, step, facts);
   Atoms atoms;
@@ -710,8 +725,8 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
 NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, const Forward& forward,
                                 const Facts& facts, std::size_t index, const Budget& budget) {
   const std::vector<Rule> rules = rules_of(before.differences);
-  Scalars b = by_rules(before, rules);
-  Scalars s = by_rules(step, rules);
+  Scalars b = by_rules(integrals_by_facts(before, facts), rules);
+  Scalars s = by_rules(integrals_by_facts(step, facts), rules);
   Facts f = facts;
   std::vector<ex> all = before.differences;
   all.insert(all.end(), step.differences.begin(), step.differences.end());
@@ -791,8 +806,8 @@ std::optional<Implication> Checker::converse(const Scalars& given_before, const 
   quick.attempts = 48;
   quick.candidates = 1;
   // The step is the equation before now: the functions it writes out are replaced.
-  Scalars one_before = given_before;
-  Scalars one_step = given_step;
+  Scalars one_before = integrals_by_facts(given_before, facts);
+  Scalars one_step = integrals_by_facts(given_step, facts);
   Facts one_facts = facts;
   sums_in_one_form(one_before, one_step, one_facts);
   const std::vector<Rule> rules = rules_of(one_step.differences);
