@@ -61,7 +61,12 @@ ex readable(const ex& e) {
     return e;  // too large to bring over one denominator: shown as it stands
   }
   const ex n = GiNaC::normal(e);
-  if (!factorable(n.numer()) || !factorable(n.denom())) {
+  // GiNaC's factoring of a polynomial in several symbols took more than a minute on a residual
+  // of 44 terms in six symbols (in one of several runs: its time follows the order GiNaC gives
+  // the symbols): what is shown is factored only when small.
+  constexpr double shown_factored = 30;
+  if (!factorable(n.numer()) || !factorable(n.denom()) ||
+      expanded_terms(n.numer()) > shown_factored) {
     return n;  // shown over one denominator, unfactored
   }
   try {
