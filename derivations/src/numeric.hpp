@@ -71,6 +71,12 @@ std::string brief(double value, int digits = 3);
 /// so they change from build to build (and from run to run with address-space randomisation).
 inline constexpr double rounding_level = 1e-15;
 
+/// A worst relative residual as a JSON report writes it: above 0 and below the rounding level,
+/// the level itself (an upper bound), since the digits there change from run to run.
+inline double reported_residual(double worst) {
+  return worst > 0 && worst < rounding_level ? rounding_level : worst;
+}
+
 /// A worst relative residual as notes print it: two significant digits, or "below 1e-15" at
 /// the level of rounding.
 std::string residual_text(double worst);

@@ -502,9 +502,12 @@ nlohmann::ordered_json checks_json(const std::vector<Result>& results) {
     }
     c["methods"] = methods;
     c["status"] = to_string(r.outcome.status);
-    c["max_relative_error"] = r.outcome.max_relative_error
-                                  ? ordered_json(*r.outcome.max_relative_error)
-                                  : ordered_json(nullptr);
+    // Below the rounding level the digits change from run to run (num::rounding_level): the
+    // level itself is written, an upper bound, as the text writes "<1e-15".
+    c["max_relative_error"] =
+        r.outcome.max_relative_error
+            ? ordered_json(num::reported_residual(*r.outcome.max_relative_error))
+            : ordered_json(nullptr);
     c["samples"] = r.outcome.samples ? ordered_json(*r.outcome.samples) : ordered_json(nullptr);
     if (!r.outcome.correction.empty()) {
       c["correction"] = r.outcome.correction;

@@ -295,7 +295,8 @@ std::string render_json(const DerivationReport& r) {
     }
     j["seconds"] = e.seconds;
     if (e.verdict != Verdict::premise && e.verdict != Verdict::dimensions) {
-      j["numeric"] = {{"points", e.numeric_points}, {"worst_relative_residual", e.numeric_worst}};
+      j["numeric"] = {{"points", e.numeric_points},
+                      {"worst_relative_residual", num::reported_residual(e.numeric_worst)}};
     }
     equations.push_back(std::move(j));
   }
