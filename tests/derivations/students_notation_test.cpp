@@ -247,6 +247,16 @@ TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
   CHECK(verdicts("assume: m_0, m_f, u > 0\n\n" + rocket) ==
         std::vector<std::string>{"premise", "follows"});
   CHECK(verdicts("assume: u > 0\n\n" + rocket) != std::vector<std::string>{"premise", "follows"});
+  // A function's value at a point (p(T), T not its variable) holds there, not at every t: read as
+  // a rule, p(T) = p_0 + J gave p(0) = p_0 + J (p(t) = p_0 + J t / T shows it wrong), and F(T) =
+  // F_m gave ∫_0^T F dt = F_m T (F = F_m t / T gives F_m T / 2). Neither may pass now.
+  const auto passes = [](const std::vector<std::string>& v) {
+    return v.back() == "follows" || v.back() == "follows-one-way" || v.back() == "follows-if";
+  };
+  CHECK_FALSE(passes(verdicts("function: p\n\n$$p(T) = p_0 + J$$\n\n$$p(0) = p_0 + J$$")));
+  CHECK_FALSE(
+      passes(verdicts("function: F\n\nassume: T > 0\n\ngiven:\n\n$$F(T) = F_m \\\\ J = "
+                      "\\int_0^T F(t)\\,dt$$\n\n$$J = F_m T$$")));
   // The derivative's sign slipped: ẋ = Aω cos ωt by hand, so -Aω cos ωt does not follow (it was
   // undecided: with x written out by its rule, the premise was 0 = 0 and the numeric method found
   // no symbol to solve it for).

@@ -595,7 +595,7 @@ bool may_give_rule(const ex& equation) {
 
 }  // namespace
 
-std::vector<Rule> rules_of(const std::vector<ex>& equations) {
+std::vector<Rule> rules_of(const std::vector<ex>& equations, const IsVariable& is_variable) {
   std::vector<Rule> rules;
   for (const ex& equation : equations) {
     if (!may_give_rule(equation)) {
@@ -619,6 +619,9 @@ std::vector<Rule> rules_of(const std::vector<ex>& equations) {
               [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& [key, atom] : candidates) {
       const unsigned serial = GiNaC::ex_to<GiNaC::function>(atom).get_serial();
+      if (!is_variable(serial, atom.op(0))) {
+        continue;  // p(T) = p_0 + J holds at T, not at every t
+      }
       // Linear in the atom with a number as the coefficient, and no other value of F.
       const GiNaC::symbol slot("slot");
       const ex replaced = e.subs(atom == slot);

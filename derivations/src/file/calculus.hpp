@@ -68,7 +68,10 @@ struct Rule {
 
 /// The rules the equations give: each equation linear in one function's value at its variable,
 /// with a number as the coefficient, defines that function.
-[[nodiscard]] std::vector<Rule> rules_of(const std::vector<GiNaC::ex>& equations);
+/// Whether a symbol is a declared variable of the function with this serial.
+using IsVariable = std::function<bool(unsigned serial, const GiNaC::ex& symbol)>;
+[[nodiscard]] std::vector<Rule> rules_of(const std::vector<GiNaC::ex>& equations,
+                                         const IsVariable& is_variable);
 
 /// @p e with every value and derivative of a function a rule defines replaced by the rule's
 /// value there, and its integrals done again.

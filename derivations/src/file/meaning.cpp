@@ -192,6 +192,21 @@ void Symbols::note_quantities(const Node& node) {
   }
 }
 
+bool Symbols::is_variable_of(unsigned serial, const GiNaC::ex& symbol) const {
+  for (const auto& [key, f] : functions_) {
+    if (f.serial != serial) {
+      continue;
+    }
+    for (const SymbolName& v : f.variables) {
+      const auto found = symbols_.find(resolve(v).latex());
+      if (found != symbols_.end() && found->second.is_equal(symbol)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 bool Symbols::is_quantity(const SymbolName& name) const {
   const std::string key = resolve(name).latex();
   if (quantities_.contains(key) || units_.contains(key) || is_vector(name) ||

@@ -129,6 +129,8 @@ class Symbols {
                         std::size_t offset);
   /// The function @p name is declared as, if it is one.
   [[nodiscard]] const FunctionDeclaration* function(const SymbolName& name) const;
+  /// Whether @p symbol is a declared variable of the function whose GiNaC serial is @p serial.
+  [[nodiscard]] bool is_variable_of(unsigned serial, const GiNaC::ex& symbol) const;
   /// The symbols that stand as the upper limit of a sum over an index (whole numbers at least
   /// the lower limit: the number of terms), with that lower limit.
   [[nodiscard]] const std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& counts() const {

@@ -507,7 +507,7 @@ Checker::Forward Checker::exact(const Scalars& given_before, const Scalars& give
   Atoms atoms;
   // A function an equation before writes out (F(t) = \frac{dp}{dt}) is replaced by what it is
   // equal to, inside integrals and derivatives too.
-  const std::vector<Rule> rules = rules_of(before.differences);
+  const std::vector<Rule> rules = rules_of(before.differences, is_variable());
   Scalars hidden_before = by_rules(before, rules);
   Scalars hidden_step = by_rules(step, rules);
   for (Scalars* s : {&hidden_before, &hidden_step}) {
@@ -612,7 +612,7 @@ std::vector<ex> by_powers(const ex& written, const std::vector<ex>& variables) {
 // turn: a failure under one of them is a real counterexample.
 Checker::Forward Checker::instance_failure(const Scalars& given_before, const Scalars& given_step,
                                            const Facts& facts, const Budget& budget) {
-  const std::vector<Rule> rules = rules_of(given_before.differences);
+  const std::vector<Rule> rules = rules_of(given_before.differences, is_variable());
   const Scalars before = by_rules(given_before, rules);
   const Scalars step = by_rules(given_step, rules);
   std::vector<ex> all = before.differences;
@@ -729,7 +729,7 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
 // where a denominator is. Functions and sums get the first instance's formulas.
 NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, const Forward& forward,
                                 const Facts& facts, std::size_t index, const Budget& budget) {
-  const std::vector<Rule> rules = rules_of(before.differences);
+  const std::vector<Rule> rules = rules_of(before.differences, is_variable());
   Scalars b = by_rules(integrals_by_facts(before, facts), rules);
   Scalars s = by_rules(integrals_by_facts(step, facts), rules);
   Facts f = facts;
@@ -815,7 +815,7 @@ std::optional<Implication> Checker::converse(const Scalars& given_before, const 
   Scalars one_step = integrals_by_facts(given_step, facts);
   Facts one_facts = facts;
   sums_in_one_form(one_before, one_step, one_facts);
-  const std::vector<Rule> rules = rules_of(one_step.differences);
+  const std::vector<Rule> rules = rules_of(one_step.differences, is_variable());
   const Scalars before = by_rules(one_before, rules);
   const Scalars step = by_rules(one_step, rules);
   Atoms atoms;

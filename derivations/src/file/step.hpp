@@ -94,6 +94,14 @@ class Checker {
   [[nodiscard]] GiNaC::ex instantiated(const GiNaC::ex& e, const Instance& instance,
                                        std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& renamed);
 
+  /// Whether a symbol is a declared variable of a function: only there does an equation that
+  /// writes the function's value hold at every value (a rule).
+  [[nodiscard]] IsVariable is_variable() const {
+    return [this](unsigned serial, const GiNaC::ex& symbol) {
+      return symbols_.is_variable_of(serial, symbol);
+    };
+  }
+
   Symbols& symbols_;
   const DerivationOptions& options_;
 };
