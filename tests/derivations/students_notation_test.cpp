@@ -194,6 +194,19 @@ TEST_CASE("Students' e and i: Euler's number upright, e to a power and a lone i 
   same("\\sum_{i=1}^{3} i", "6");
 }
 
+TEST_CASE("Students' definitions: a name defined once, never through itself",
+          "[derivations][students-notation]") {
+  // Lines are read with the definitions when their step is decided, so a second let: of J
+  // changed the line before: J = m(v - v') then let: J = m(v' - v) let the slip J = m(1 + e) v
+  // follow (it is -m(1 + e) v for a ball with v' = -e v).
+  refused("let: J = a\n\n$$x = J$$\n\nlet: J = b\n\n$$x = b$$", 5, 6, "not defined yet");
+  // a = b + c, then b = a - c: b stood for itself.
+  refused("let: a = b + c\nlet: b = a - c\n\n$$x = a$$", 2, 6, "through earlier definitions");
+  // A definition that uses an earlier one is read (b = 2c makes a = 3c).
+  CHECK(verdicts("let: a = b + c\nlet: b = 2 c\n\n$$x = a$$\n\n$$x = 3 c$$") ==
+        std::vector<std::string>{"premise", "follows"});
+}
+
 TEST_CASE("Students' units after numbers are refused", "[derivations][students-notation]") {
   // L = 2 m (a metre) read \mathrm{m} as the mass m: with I = m L^2 / 12, I = m^3 / 3 followed.
   refused(

@@ -407,10 +407,25 @@ void Symbols::define(const SymbolName& written, const Side& definition, std::siz
     declare_vector(name);
   }
   const Value target = symbol_value(name);
+  if (substitutions_.contains(target.x)) {
+    // The lines before read the name by its definition when a step is decided: a second one
+    // would change what they say (J = m(v - v') then J = m(v' - v) turned a slip into a step).
+    throw error(offset, "expected a name not defined yet: " + name.latex() +
+                            " is defined by an earlier let:, and a second definition would "
+                            "change what the lines before it say; give the new one another name");
+  }
   GiNaC::exmap added;
   added[target.x] = m.value.x.subs(substitutions_);
   if (target.vector) {
     added[target.y] = m.value.y.subs(substitutions_);
+  }
+  for (const auto& [symbol, value] : added) {
+    if (value.has(symbol)) {
+      // let: a = b + c, then let: b = a - c: b's definition is b itself, through a's.
+      throw error(offset, "expected a definition of " + name.latex() +
+                              " that does not use it, also through earlier definitions (" +
+                              name.latex() + " would stand for itself)");
+    }
   }
   // Earlier definitions that used this name now carry its value.
   for (auto& [symbol, value] : substitutions_) {
