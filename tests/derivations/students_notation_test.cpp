@@ -79,6 +79,9 @@ TEST_CASE("Students' arrows, annotations and separators inside a display",
   CHECK(verdicts("$$a = b \\text{ because the masses are equal}$$\n\n$$a - b = 0$$") ==
         std::vector<std::string>{"premise", "follows"});
   refused("$$a = \\text{the mass} b$$", 1, 7, "words");
+  // An arrow inside a given: block: the equation after it is a step by the arrow, a premise by
+  // given: (it was read as a premise, its slip unchecked).
+  refused("given:\n\n$$v' = -e v \\Rightarrow J = m v$$\n\n$$J = m v$$", 3, 25, "given: block");
   // A line that begins with '=' after a row that ends with an equation of its own: the chain p =
   // m v was meant, but the line went on from J/m, and the slip = J/m passed (p = m (J/m) = J).
   const std::string chain = "$$\\begin{aligned}\np &= m v && \\text{with } v = \\frac{J}{m} \\\\\n";

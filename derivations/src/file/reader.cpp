@@ -187,6 +187,14 @@ std::vector<Reader::IndexValues> Reader::index_copies(const Row& row) const {
 }
 
 void Reader::read_row(const Row& row, const BlockRole& how) {
+  if (how.given && (row.join == Join::arrow || row.join == Join::equivalence)) {
+    // given: v' = -e v \Rightarrow J = m(1 - e) v: the step after the arrow was read as a
+    // premise, unchecked.
+    throw source_.error(row.offset,
+                        "expected premises in a given: block, found an equation after an arrow "
+                        "(\\Rightarrow, \\implies, \\iff): the arrow makes it a step, given: "
+                        "a premise; write the step in a block after the given: one");
+  }
   if (row.continues && equations_.empty()) {
     throw source_.error(row.offset,
                         "expected an equation before this row that begins with "
