@@ -334,6 +334,15 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
   // a < b makes b - a positive.
   CHECK(verdicts("assume: a < b\n\n$$(b - a) x = 1$$\n\n$$x = \\frac{1}{b - a}$$") ==
         std::vector<std::string>{"premise", "follows"});
+  // The length of a unit vector, and of one turned a quarter: 1 by the equality n_x² + n_y² = 1
+  // (undecided before, with GiNaC's "rem: arguments must be polynomials" as the reason).
+  const std::string unit = "vector: n, t\n\nunit: n\n\n";
+  CHECK(verdicts(unit + "$$\\vec t = [-n_y, n_x]$$\n\n$$\\|\\vec t\\| = 1$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
+  CHECK(verdicts(unit + "$$\\vec t = [-n_y, n_x]$$\n\n$$\\|\\vec t\\| = 2$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
+  CHECK(verdicts(unit + "$$s = \\|\\vec n\\|$$\n\n$$s = 1$$") ==
+        std::vector<std::string>{"premise", "follows"});
   // Dividing by the effective mass's denominator with n a unit vector: the condition came out
   // reduced by n_x^2 = 1 - n_y^2, -(I + m (r_x n_y - r_y n_x)^2) in another form, and was shown
   // though I, m > 0 keep it from zero. Without unit: n it was already dropped.

@@ -433,6 +433,12 @@ ex by_facts(const ex& e, const Facts& facts) {
     }
     if (is_a<numeric>(exponent) && !GiNaC::ex_to<numeric>(exponent).is_integer() &&
         GiNaC::ex_to<numeric>(exponent).is_rational()) {
+      for (const ex& q : facts.equalities()) {
+        // √(n_x² + n_y²) of a unit vector n: the radicand is a number by the equality.
+        if (const ex rest = GiNaC::expand(base - q); is_a<numeric>(rest) && !base.is_equal(rest)) {
+          return by_facts(GiNaC::pow(rest, exponent), facts);
+        }
+      }
       if (is_a<numeric>(base) && GiNaC::ex_to<numeric>(base).is_rational() &&
           GiNaC::ex_to<numeric>(base).is_positive()) {
         return rational_root(GiNaC::ex_to<numeric>(base), GiNaC::ex_to<numeric>(exponent));

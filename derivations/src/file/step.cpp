@@ -203,8 +203,12 @@ ex reduced(const ex& e, const std::vector<ex>& equalities) {
           !numerator.is_polynomial(v) || !denominator.is_polynomial(v)) {
         continue;
       }
-      numerator = GiNaC::expand(GiNaC::rem(numerator, p, v));
-      denominator = GiNaC::expand(GiNaC::rem(denominator, p, v));
+      try {
+        numerator = GiNaC::expand(GiNaC::rem(numerator, p, v));
+        denominator = GiNaC::expand(GiNaC::rem(denominator, p, v));
+      } catch (const std::exception&) {
+        return e;  // not polynomials over the rationals (a root of n_x^2 + n_y^2): as it stands
+      }
       break;
     }
   }
