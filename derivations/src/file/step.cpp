@@ -771,17 +771,8 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
     f = facts.carried(renamed);
   }
   NumericOpinion numeric;
-  std::vector<ex> premises;
-  std::vector<ex> scales;
-  for (std::size_t k = 0; k < b.differences.size(); ++k) {
-    // A premise the rules have written out to 0 (x(t) = A sin ωt, with x replaced by its rule)
-    // says nothing, and no symbol of it could be solved for.
-    const ex& p = b.differences[k];
-    if (!p.is_zero() && !(symbols_of(p).empty() && GiNaC::expand(p).is_zero())) {
-      premises.push_back(p);
-      scales.push_back(k < b.scales.size() ? b.scales[k] : term_scale(p));
-    }
-  }
+  std::vector<ex> premises = b.differences;
+  std::vector<ex> scales = b.scales;
   for (const ex& q : f.equalities()) {
     premises.push_back(q);
     scales.push_back(term_scale(q));
