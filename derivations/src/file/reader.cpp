@@ -126,6 +126,14 @@ void Reader::read_block(const Block& block) {
   const BlockRole how = block_role(block);
   const std::size_t first_equation = equations_.size();
   for (const Row& row : file::read_block(source_, block.content_offset, block.content, limits_)) {
+    if (how.given && (row.join == Join::arrow || row.join == Join::equivalence)) {
+      // given: v' = -e v \Rightarrow J = m(1 - e) v: the step after the arrow was read as a
+      // premise, unchecked.
+      throw source_.error(row.offset,
+                          "expected premises in a given: block, found an equation after an arrow "
+                          "(\\Rightarrow, \\implies, \\iff): the arrow makes it a step, given: "
+                          "a premise; write the step in a block after the given: one");
+    }
     read_row(row, how);
   }
   also_.reset();
@@ -187,14 +195,6 @@ std::vector<Reader::IndexValues> Reader::index_copies(const Row& row) const {
 }
 
 void Reader::read_row(const Row& row, const BlockRole& how) {
-  if (how.given && (row.join == Join::arrow || row.join == Join::equivalence)) {
-    // given: v' = -e v \Rightarrow J = m(1 - e) v: the step after the arrow was read as a
-    // premise, unchecked.
-    throw source_.error(row.offset,
-                        "expected premises in a given: block, found an equation after an arrow "
-                        "(\\Rightarrow, \\implies, \\iff): the arrow makes it a step, given: "
-                        "a premise; write the step in a block after the given: one");
-  }
   if (row.continues && equations_.empty()) {
     throw source_.error(row.offset,
                         "expected an equation before this row that begins with "
