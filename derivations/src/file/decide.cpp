@@ -91,7 +91,38 @@ double expanded_terms(const ex& e) {
   return counted.keep(e, counted_terms(e));
 }
 
+namespace {
+
+// Whether GiNaC's factoring is bounded on @p e (see factorable: the time grows fast with the
+// variables, their order and the degree): at most 200 terms in at most 6 symbols, of a total
+// degree at most 24 in those it is a polynomial in.
+bool in_factoring_bounds(const ex& e) {
+  if (expanded_terms(e) > 200) {
+    return false;
+  }
+  const std::vector<ex> symbols = symbols_of(e);
+  if (symbols.size() > 6) {
+    return false;
+  }
+  int total = 0;
+  for (const ex& s : symbols) {
+    if (e.is_polynomial(s)) {
+      total += e.degree(s);
+    }
+  }
+  return total <= 24;
+}
+
+}  // namespace
+
 ex factored(const ex& e) {
+  if (expanded_terms(e) > 200) {
+    return e;
+  }
+  const ex parts = GiNaC::numer_denom(e);
+  if (!in_factoring_bounds(parts.op(0)) || !in_factoring_bounds(parts.op(1))) {
+    return e;  // beyond them, taken as it stands
+  }
   const auto tidy = [](const ex& f) {
     if (is_a<GiNaC::power>(f)) {
       return GiNaC::pow(GiNaC::expand(f.op(0)), f.op(1));
@@ -115,21 +146,9 @@ bool factorable(const ex& e) {
   // binomial in 13 symbols took from 0.03 s to 5 s by that order alone. Polynomials of
   // derivations factor in a few symbols once their monomial content is taken out (see
   // doubtful_factors); beyond these bounds a polynomial is taken as it stands.
-  if (expanded_terms(e) > 200) {
-    return false;
-  }
   const std::vector<ex> symbols = symbols_of(e);
-  if (symbols.size() > 6) {
-    return false;
-  }
-  int total = 0;
-  for (const ex& s : symbols) {
-    if (!e.is_polynomial(s)) {
-      return false;
-    }
-    total += e.degree(s);
-  }
-  return total <= 24;
+  return in_factoring_bounds(e) && std::all_of(symbols.begin(), symbols.end(),
+                                               [&](const ex& s) { return e.is_polynomial(s); });
 }
 
 std::vector<ex> doubtful_factors(const ex& e, const Facts& facts) {
