@@ -67,6 +67,19 @@ TEST_CASE("Students' arrows, annotations and separators inside a display",
   const auto one_way = d::check_derivation("$$a = b \\iff a^2 = b^2$$", "iff.md");
   CHECK(one_way.equations.at(1).verdict != d::Verdict::follows);
   CHECK(one_way.equations.at(1).verdict != d::Verdict::follows_one_way);
+  // A step that follows only under a condition is no equivalence either: x^2 = 9 gives x = 3
+  // where x + 3 ≠ 0, so x = -3 (9 = 9, and -3 ≠ 3) shows it failing. It was undecided: the
+  // converse, x = 3 ⊢ x^2 = 9, holds, and only the converse was searched for a point.
+  const auto only_if = d::check_derivation("$$x^2 = 9 \\iff x = 3$$", "iff.md");
+  const d::EquationResult& root = only_if.equations.at(1);
+  CHECK(root.verdict == d::Verdict::does_not_follow);
+  REQUIRE(root.counterexample.size() == 1);
+  CHECK(root.counterexample[0].x == -3.0);
+  CHECK_THAT(root.equivalence_note, Catch::Contains("only where $3 + x \\neq 0$"));
+  // The same with the facts of a collision: v' = -e v satisfies v'^2 = e^2 v^2 (e v ≠ 0).
+  const auto speed =
+      d::check_derivation("assume: v > 0, e > 0\n\n$$v'^2 = e^2 v^2 \\iff v' = e v$$", "iff.md");
+  CHECK(speed.equations.at(1).verdict == d::Verdict::does_not_follow);
   // \text between two equations is an annotation; a comma separates like \\.
   CHECK(verdicts("$$a = b \\quad\\text{and so}\\quad a - b = 0$$") ==
         std::vector<std::string>{"premise", "follows"});

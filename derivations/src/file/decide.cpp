@@ -525,7 +525,7 @@ struct Found {
   std::vector<ex> conditions;
   bool conditions_needed = true;
   ex residual;
-  std::optional<GiNaC::exmap> point;
+  std::optional<GiNaC::exmap> point;  // fails; holds_if: where a condition is 0, if found
   std::vector<std::string> how;
 };
 
@@ -545,6 +545,12 @@ std::string text(const ex& e) {
   const std::size_t last = latex.find_last_not_of(' ');
   latex = first == std::string::npos ? "" : latex.substr(first, last - first + 1);
   return "$" + latex + "$";
+}
+
+// "$f \neq 0$" in a sentence of the report.
+std::string unequal_to_zero(const ex& f) {
+  const std::string shown = text(f);
+  return shown.substr(0, shown.size() - 1) + " \\neq 0$";
 }
 
 class Decider {
@@ -883,8 +889,9 @@ class Decider {
       }
       combined.how.push_back(
           cases_text + ": the step holds where " +
-          (failing.size() == 1 ? text(failing[0] != 0) : "these factors are not zero") +
+          (failing.size() == 1 ? unequal_to_zero(failing[0]) : "these factors are not zero") +
           ", not where it is zero");
+      combined.point = first_failure->point;  // where it is zero and the step fails
       return combined;
     }
     if (first_failure) {
@@ -1433,6 +1440,7 @@ Implication implies(const Problem& given, const Facts& facts, const Budget& budg
           "angles that show it");
       found.residual = original.target;
     } else {
+      found.point.reset();  // in the tangents, not the angles
       // Conditions back in the angles: τ = tan(angle/2); those in one τ alone whose product is
       // 1 - τ² (or τ) are cos(angle) ≠ 0 (or sin(angle) ≠ 0), as the file would write them.
       for (const auto& [tau, angle] : rewrite.tangents) {

@@ -38,7 +38,9 @@ struct Implication {
   std::vector<GiNaC::ex> conditions;  ///< holds_if: each must not be zero
   bool conditions_needed = true;      ///< whether every condition was shown to be needed
   GiNaC::ex residual;                 ///< fails, unknown: the target once the premises are used
-  std::optional<GiNaC::exmap> point;  ///< fails: exact values of every symbol
+  /// fails: exact values of every symbol; holds_if, when one was found: values where a
+  /// condition is zero, the premises and the facts hold and the target does not
+  std::optional<GiNaC::exmap> point;
   std::string how;                    ///< a sentence for the report
 };
 

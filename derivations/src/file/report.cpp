@@ -144,6 +144,9 @@ std::string render_text(const DerivationReport& r, bool colour) {
         out << indent << "where " << e.condition << "   [" << e.condition_text << "]\n";
         break;
       case Verdict::does_not_follow:
+        if (!e.equivalence_note.empty()) {
+          out << indent << e.equivalence_note << "\n";
+        }
         out << indent << "from line" << (e.from.size() == 1 ? " " : "s ") << lines_text(e.from)
             << ": what is left of the step is\n"
             << indent << "  LaTeX:  " << e.residual << "\n"

@@ -42,11 +42,47 @@ void merge(Implication& total, const Implication& one) {
     total.outcome = O::holds_if;
     total.conditions.insert(total.conditions.end(), one.conditions.begin(), one.conditions.end());
     total.conditions_needed = total.conditions_needed && one.conditions_needed;
+    if (!total.point) {
+      total.point = one.point;
+    }
   }
   if (total.how.empty()) {
     total.how = one.how;
   } else if (!one.how.empty() && one.how != total.how) {
     total.how += "; " + one.how;
+  }
+}
+
+// Whether @p point shows the step failing: every value a number that the facts allow, the
+// equations before hold there exactly, nothing written is divided by zero, and the step does
+// not hold.
+bool shows_failure(const GiNaC::exmap& point, const Scalars& before, const Scalars& step,
+                   const Facts& facts) {
+  try {
+    for (const auto& [symbol, value] : point) {
+      if (!GiNaC::is_a<GiNaC::numeric>(value) ||
+          !facts.satisfied(symbol, GiNaC::ex_to<GiNaC::numeric>(value))) {
+        return false;
+      }
+    }
+    const auto at = [&](const ex& e) { return GiNaC::normal(e.subs(point)); };
+    const auto a_number = [&](const ex& e) {
+      const ex v = at(e);
+      return GiNaC::is_a<GiNaC::numeric>(v) && !v.is_zero();
+    };
+    if (!facts.satisfied(point) ||
+        !std::all_of(before.differences.begin(), before.differences.end(),
+                     [&](const ex& d) { return at(d).is_zero(); })) {
+      return false;
+    }
+    for (const std::vector<ex>* list : {&before.denominators, &step.denominators}) {
+      if (!std::all_of(list->begin(), list->end(), a_number)) {
+        return false;
+      }
+    }
+    return std::any_of(step.differences.begin(), step.differences.end(), a_number);
+  } catch (const std::exception&) {
+    return false;  // not numbers (an atom, a function): no verdict from it
   }
 }
 
@@ -373,15 +409,15 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
   } else {
     conclude(before, step, forward, opinion, e.facts, budget, r);
   }
-  if (e.equivalence &&
-      (r.verdict == Verdict::follows_one_way || r.verdict == Verdict::follows_if)) {
+  if (e.equivalence && r.verdict == Verdict::follows_if) {
+    equivalence_if(before, step, forward.implication, e.facts, r);
+  } else if (e.equivalence && r.verdict == Verdict::follows_one_way) {
     // Written as an equivalence (\iff): the converse must hold too.
     const std::optional<Implication> back = converse(before, step, e.facts, budget);
     r.verdict = Verdict::does_not_follow;
-    r.how =
-        "written as an equivalence (\\iff), but the equation before does not follow from "
-        "this one: " +
-        r.how;
+    r.equivalence_note =
+        "written as an equivalence (\\iff), but the equation before does not follow from this one";
+    r.how = r.equivalence_note + ": " + r.how;
     if (back && back->point) {
       residual(back->residual, r);
       exact_point(*back->point, r);
@@ -393,6 +429,38 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
     r.how = "the step's time budget of " + num::brief(options_.step_seconds, 3) +
             " s ran out (--step-seconds): " + r.how;
   }
+}
+
+// A step written as an equivalence (\iff) that follows only under a condition is no
+// equivalence: where the condition fails, a point of the equations before where the step does
+// not hold shows it. Without such a point the verdict is left open.
+void Checker::equivalence_if(const Scalars& before, const Scalars& step, const Implication& forward,
+                             const Facts& facts, EquationResult& r) const {
+  const std::string only_if =
+      "written as an equivalence (\\iff), but the step follows from the "
+      "equation before only where $" +
+      r.condition + "$";
+  if (forward.point && shows_failure(*forward.point, before, step, facts)) {
+    r.verdict = Verdict::does_not_follow;
+    r.how = only_if +
+            ": the point below satisfies the equation before and the facts exactly, "
+            "and not the step (exact: " +
+            forward.how + ")";
+    r.equivalence_note = only_if + ", not where it is zero";
+    for (const ex& d : step.differences) {
+      if (!GiNaC::normal(d.subs(*forward.point)).is_zero()) {
+        residual(d, r);  // the step as written: the equation before does not reduce it
+        break;
+      }
+    }
+    exact_point(*forward.point, r);
+  } else {
+    r.verdict = Verdict::undecided;
+    r.how = only_if +
+            ", and no point was found where the condition fails and the step with it: " + r.how;
+  }
+  r.condition.clear();
+  r.condition_text.clear();
 }
 
 // Sums over an index in one form: from 1 to the letter of the upper limit (\sum_{i=1}^{N-1} is
