@@ -565,10 +565,11 @@ ex instantiate(const ex& e, const Instance& instance, const AtIndex& at_index) {
 
 // ---- rules ------------------------------------------------------------------------------------
 
-std::vector<ex> function_variables(const ex& e) {
+std::vector<ex> function_variables(const ex& e, const IsVariable& is_variable) {
   std::vector<ex> found;
   for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
     if (is_abstract(*i) && i->nops() == 1 && is_a<GiNaC::symbol>(i->op(0)) &&
+        is_variable(GiNaC::ex_to<GiNaC::function>(*i).get_serial(), i->op(0)) &&
         std::none_of(found.begin(), found.end(),
                      [&](const ex& v) { return v.is_equal(i->op(0)); })) {
       found.push_back(i->op(0));

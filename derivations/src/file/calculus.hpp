@@ -66,10 +66,11 @@ struct Rule {
   GiNaC::ex value;
 };
 
-/// The rules the equations give: each equation linear in one function's value at its variable,
-/// with a number as the coefficient, defines that function.
 /// Whether a symbol is a declared variable of the function with this serial.
 using IsVariable = std::function<bool(unsigned serial, const GiNaC::ex& symbol)>;
+
+/// The rules the equations give: each equation linear in one function's value at its variable,
+/// with a number as the coefficient, defines that function.
 [[nodiscard]] std::vector<Rule> rules_of(const std::vector<GiNaC::ex>& equations,
                                          const IsVariable& is_variable);
 
@@ -77,9 +78,10 @@ using IsVariable = std::function<bool(unsigned serial, const GiNaC::ex& symbol)>
 /// value there, and its integrals done again.
 [[nodiscard]] GiNaC::ex rewritten(const GiNaC::ex& e, const std::vector<Rule>& rules);
 
-/// The variables at which @p e names a declared function (F(t): t), where it holds for every
-/// value of them.
-[[nodiscard]] std::vector<GiNaC::ex> function_variables(const GiNaC::ex& e);
+/// The variables at which @p e names a declared function (F(t): t, a declared variable of F),
+/// where it holds for every value of them. (p(T) names p at T alone.)
+[[nodiscard]] std::vector<GiNaC::ex> function_variables(const GiNaC::ex& e,
+                                                        const IsVariable& is_variable);
 
 /// Every atom of @p e (declared functions' values and derivatives, integrals left undone,
 /// indexed sums and products) replaced by a symbol of its own, one per distinct atom, and back.

@@ -705,7 +705,7 @@ Checker::Forward Checker::instance_failure(const Scalars& given_before, const Sc
     std::vector<ex> premises;
     for (const ex& p : before.differences) {
       const ex written = instantiated(p, instance, renamed);
-      const std::vector<ex> parts = by_powers(written, function_variables(p));
+      const std::vector<ex> parts = by_powers(written, function_variables(p, is_variable()));
       premises.insert(premises.end(), parts.begin(), parts.end());
     }
     const std::vector<ex> premise_denominators = apply(before.denominators);
@@ -817,7 +817,7 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
       // Under the formula, each power of a function's variable on its own (by_powers).
       const ex written =
           list.empty() ? b.differences[k] : instantiated(b.differences[k], list[0], renamed);
-      for (const ex& p : by_powers(written, function_variables(b.differences[k]))) {
+      for (const ex& p : by_powers(written, function_variables(b.differences[k], is_variable()))) {
         premises.push_back(p);
         scales.push_back(term_scale(p));
       }
