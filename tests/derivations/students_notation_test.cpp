@@ -460,3 +460,25 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
   CHECK(verdicts(spring + "$$v = x k^{0.5} m^{0.5}$$") ==
         std::vector<std::string>{"premise", "does-not-follow"});
 }
+
+TEST_CASE("Logarithms of quantities with a dimension cancel in a difference",
+          "[derivations][students-notation]") {
+  // ln h = ln(h / u) + ln u for a unit u of length: a difference of logarithms of lengths is a
+  // number (ln h_n - ln h_0 = ln(h_n / h_0)), a lone logarithm of a length is not. Each side's
+  // logarithms leave L times the sum of their signed coefficients; the sides must leave the same.
+  const std::string units =
+      "units: h_n [L], h_0 [L], e [1], n [1], t [T]\n\nassume: h_0 > 0, h_n > 0, e > 0\n\n"
+      "$$h_n = e^{2n} h_0$$\n\n";
+  // Left L - L = 0, right 0: read, and it follows (the logarithm of the premise).
+  CHECK(verdicts(units + "$$\\ln h_n - \\ln h_0 = 2 n \\ln e$$").back() == "follows-one-way");
+  // Left L, right L: the logarithms cancel across the sides.
+  CHECK(verdicts(units + "$$\\ln h_n = \\ln h_0 + 2 n \\ln e$$").back() == "follows-one-way");
+  // Left L - 2L = -L, right -L (a number coefficient counts).
+  CHECK(verdicts(units + "$$\\ln h_n - 2\\ln h_0 = 2 n \\ln e - \\ln h_0$$").back() ==
+        "follows-one-way");
+  // Left L, right 0; left T, right 0: the dimension is left over.
+  CHECK(verdicts(units + "$$\\ln h_n = 2 n \\ln e$$").back() == "dimensions");
+  CHECK(verdicts(units + "$$\\ln t = 2 n \\ln e$$").back() == "dimensions");
+  // A symbol times the logarithm of a length is no constant: still refused as it was.
+  CHECK(verdicts(units + "$$n \\ln h_n - n \\ln h_0 = 2 n^2 \\ln e$$").back() == "dimensions");
+}

@@ -63,8 +63,15 @@ class DimensionWalk {
   explicit DimensionWalk(Symbols& symbols) : s_(symbols) {}
 
   Symbols::DimensionResult run(const Node& node) {
-    auto d = walk(node);
-    return {issue_ ? std::nullopt : d, issue_};
+    Maybe d;
+    if (node.kind == NodeKind::sum) {
+      d = sum(node, true);
+    } else if (!logarithm(node, 1)) {
+      d = walk(node);
+    } else {
+      d = Dimension{};
+    }
+    return {issue_ ? std::nullopt : d, issue_, logarithms_, logarithm_at_};
   }
 
  private:
@@ -87,7 +94,7 @@ class DimensionWalk {
       case NodeKind::symbol:
         return s_.symbol_dimension(n.symbol);
       case NodeKind::sum:
-        return sum(n);
+        return sum(n, false);
       case NodeKind::product:
         return product(n);
       case NodeKind::call:
@@ -130,11 +137,52 @@ class DimensionWalk {
     }
   }
 
-  Maybe sum(const Node& n) {
+  // A term of a side that is a logarithm, or a number times one: ln X is ln(X / u) + ln u for
+  // a unit u of X, so the logarithm of a quantity with a dimension is a number plus a constant
+  // that the units choose; the constants of a side's logarithms are kept (their arguments'
+  // dimensions, with signs and coefficients) for the equation to cancel (ln h_n - ln h_0 =
+  // 2 n ln e), and the term counts as a number. Whether it is one: nothing recorded otherwise.
+  bool logarithm(const Node& term, const numeric& sign) {
+    numeric coefficient = sign;
+    const Node* log = &term;
+    const std::vector<std::pair<Node, char>> factors =
+        term.kind == NodeKind::product ? s_.factors(term) : std::vector<std::pair<Node, char>>{};
+    if (term.kind == NodeKind::product) {
+      log = nullptr;
+      for (const auto& [factor, op] : factors) {
+        const ex k = factor.kind == NodeKind::number ? s_.meaning(factor).value.x : ex(0);
+        if (op != '/' && factor.kind == NodeKind::function && factor.text == "ln" && !log) {
+          log = &factor;
+        } else if (GiNaC::is_a<numeric>(k) && !k.is_zero()) {
+          coefficient = op == '/' ? coefficient / GiNaC::ex_to<numeric>(k)
+                                  : coefficient * GiNaC::ex_to<numeric>(k);
+        } else {
+          return false;
+        }
+      }
+    }
+    if (log == nullptr || log->kind != NodeKind::function || log->text != "ln") {
+      return false;
+    }
+    const auto d = walk(log->children[0]);
+    if (issue_) {
+      return true;
+    }
+    if (d && !dimensionless(*d)) {
+      logarithms_ = logarithms_ + scaled(*d, coefficient);
+      if (!logarithm_at_) {
+        logarithm_at_ = log->children[0].offset;
+      }
+    }
+    return true;
+  }
+
+  Maybe sum(const Node& n, bool side) {
     Maybe known;
     std::size_t known_at = 0;
     for (std::size_t i = 0; i < n.children.size(); ++i) {
-      const auto d = walk(n.children[i]);
+      const bool log = side && logarithm(n.children[i], n.ops[i] == '-' ? -1 : 1);
+      const auto d = log ? Maybe(Dimension{}) : walk(n.children[i]);
       if (issue_) {
         return std::nullopt;
       }
@@ -268,6 +316,8 @@ class DimensionWalk {
 
   Symbols& s_;
   std::optional<DimensionIssue> issue_;
+  Dimension logarithms_;                     // what the side's logarithms leave (see logarithm)
+  std::optional<std::size_t> logarithm_at_;  // the argument of the first that leaves one
 };
 
 Symbols::DimensionResult Symbols::dimension(const Node& node) {

@@ -177,6 +177,10 @@ class Symbols {
   struct DimensionResult {
     std::optional<Dimension> dimension;
     std::optional<DimensionIssue> issue;
+    /// The dimensions of the arguments of the side's logarithms of quantities (ln X where X has
+    /// one), with their signs and coefficients: the equation's two sides must leave the same.
+    Dimension logarithms;
+    std::optional<std::size_t> logarithm_at;  ///< the argument of the first such logarithm
   };
   [[nodiscard]] DimensionResult dimension(const Node& node);
   /// Whether any units were declared.

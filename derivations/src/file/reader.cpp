@@ -357,6 +357,17 @@ void Reader::dimension(Equation& e, const Node& left, const Node& right) {
     e.dimension_issue = DimensionIssue{right.offset, *l.dimension, *r.dimension,
                                        "the left side has dimension " + l.dimension->text() +
                                            ", the right side " + r.dimension->text()};
+  } else if (!(l.logarithms == r.logarithms)) {
+    // ln h_n = ln h_0 + 2 n ln e: the logarithms of lengths cancel across the sides.
+    const Dimension left_over{l.logarithms.mass - r.logarithms.mass,
+                              l.logarithms.length - r.logarithms.length,
+                              l.logarithms.time - r.logarithms.time};
+    e.dimension_issue = DimensionIssue{
+        l.logarithm_at ? *l.logarithm_at : r.logarithm_at.value_or(left.offset), Dimension{},
+        left_over,
+        "the arguments of \\ln have dimensions that do not cancel (" + left_over.text() +
+            " is left): the logarithm of a quantity with a dimension stands only in a "
+            "difference of logarithms of the same dimension, ln(a/b)"};
   }
 }
 
