@@ -482,3 +482,17 @@ TEST_CASE("Logarithms of quantities with a dimension cancel in a difference",
   // A symbol times the logarithm of a length is no constant: still refused as it was.
   CHECK(verdicts(units + "$$n \\ln h_n - n \\ln h_0 = 2 n^2 \\ln e$$").back() == "dimensions");
 }
+
+TEST_CASE("Logarithms of numbers stay exact", "[derivations][students-notation]") {
+  // ln q of a rational was written through its primes' logarithms as floating-point numbers, so
+  // a decimal within about 1e-19 of it "followed" (log_2 8 = 3.00000000000000000001, ln 2 =
+  // 0.69314718055994530941) and log_10 1000 = 3 failed by 2e-19.
+  // log_2 8 = 3 ln 2 / ln 2 = 3 exactly; 3 + 10^-20 ≠ 3.
+  CHECK(verdicts("$$y = \\log_{2} 8$$\n\n$$y = 3.00000000000000000001$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
+  // log_10 1000 = 3 (ln 2 + ln 5) / (ln 2 + ln 5) = 3.
+  CHECK(verdicts("$$y = \\log_{10} 1000$$\n\n$$y = 3$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  // ln 2 is irrational: no decimal equals it, which the checker cannot show; it must not pass.
+  CHECK(verdicts("$$y = \\ln 2$$\n\n$$y = 0.69314718055994530941$$").back() != "follows");
+}

@@ -246,7 +246,7 @@ std::vector<std::pair<numeric, long>> prime_powers(const numeric& q) {
 ex rational_logarithm(const numeric& q) {
   ex sum = 0;
   for (const auto& [p, k] : prime_powers(q)) {
-    sum += k * GiNaC::log(p);
+    sum += k * GiNaC::log(ex(p));  // as ex: the logarithm of a numeric alone is a float
   }
   return sum;
 }
