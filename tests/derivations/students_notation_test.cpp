@@ -496,3 +496,32 @@ TEST_CASE("Logarithms of numbers stay exact", "[derivations][students-notation]"
   // ln 2 is irrational: no decimal equals it, which the checker cannot show; it must not pass.
   CHECK(verdicts("$$y = \\ln 2$$\n\n$$y = 0.69314718055994530941$$").back() != "follows");
 }
+
+TEST_CASE("Equations side by side, equation numbers and groups after a bare argument",
+          "[derivations][students-notation]") {
+  // align's columns in pairs: m_1 &= 2 & m_2 &= 3 is two equations, as a comma would separate
+  // them. The '&' was dropped, which read the chain m_1 = 2 m_2 = 3 (and then m_1 = 3 followed).
+  const std::string pairs = "given:\n\n\\begin{align*}\nm_1 &= 2 & m_2 &= 3\n\\end{align*}\n\n";
+  CHECK(verdicts(pairs + "$$m_1 = 3$$") ==
+        std::vector<std::string>{"premise", "premise", "does-not-follow"});
+  CHECK(verdicts(pairs + "$$m_1 + m_2 = 5$$") ==
+        std::vector<std::string>{"premise", "premise", "follows-one-way"});
+  // An '&' before a relation only aligns, and && before words is an annotation, as before.
+  // (The chain: p = m v, then m v = v m.)
+  CHECK(verdicts("\\begin{align*}\np &= m v && \\text{by definition} \\\\\n"
+                 "&= v m\n\\end{align*}\n") == std::vector<std::string>{"premise", "follows"});
+  // A hand-written equation number: (2) after \qquad read as a factor 2, and the slip 2J/m passed.
+  refused("$$v' = v - \\frac{J}{m} \\qquad (2)$$\n\n$$v' = v - \\frac{2J}{m}$$", 1, 31, "\\tag");
+  refused("$$v' = v - \\frac{J}{m} \\quad (2)$$", 1, 30, "\\tag");
+  // \quad is spacing elsewhere (part one): a \quad b is a b.
+  same("a \\quad b", "a b");
+  // A group right after a function's bare argument: \sin\theta (1 + 1) was sin 2θ, so
+  // x = 2 sin θ cos θ followed from it; \cos\theta(v_1 + v_2) was cos(θ (v_1 + v_2)).
+  refused("$$x = \\sin\\theta (1 + 1)$$", 1, 19, "run on into the group");  // at 1 + 1
+  refused("$$y = \\cos\\theta(v_1 + v_2)$$", 1, 18, "run on into the group");
+  refused("$$y = \\sin 2(\\theta + 1)$$", 1, 13, "run on into the group");
+  // With parentheses around the argument, or the factor first, it is read.
+  CHECK(
+      verdicts("$$y = \\cos(\\theta)(v_1 + v_2)$$\n\n$$y = v_1\\cos\\theta + v_2\\cos\\theta$$") ==
+      std::vector<std::string>{"premise", "follows"});
+}

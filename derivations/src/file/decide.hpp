@@ -41,7 +41,7 @@ struct Implication {
   /// fails: exact values of every symbol; holds_if, when one was found: values where a
   /// condition is zero, the premises and the facts hold and the target does not
   std::optional<GiNaC::exmap> point;
-  std::string how;                    ///< a sentence for the report
+  std::string how;  ///< a sentence for the report
 };
 
 /// The exact method's work limits: beyond them it answers "unknown", never a guess.

@@ -1190,6 +1190,10 @@ class CallResolver {
                                    " for the function, or write " + name.latex() + " \\cdot " +
                                    argument.symbol.latex() + " for the product");
     }
+    if (n.text == bare_call) {
+      // \cos\theta(v_1 + v_2) was cos(θ (v_1 + v_2)), \sin\theta (1 + 1) sin 2θ.
+      throw s_.error(n.children[1].offset, std::string(runs_into_group));
+    }
     // A product: the name times the parentheses (to the power, if one follows them).
     Node product = copy;
     product.kind = NodeKind::product;

@@ -195,6 +195,13 @@ Node Grammar::term(std::size_t depth) {
                       ", where the factor after may be meant outside; write \\cos(\\theta "
                       "d) for the one, (\\cos\\theta) d or d \\cos\\theta for the other");
     }
+    if (bare_argument_ > 0 &&
+        (is_char(next, '(') || is_char(next, '[') || is_command(next, "\\left") ||
+         (in(next, commands::sizes) && starts_atom(next)))) {
+      // \cos\theta(v_1 + v_2) was cos(θ (v_1 + v_2)), and \sin\theta (1 + 1) sin 2θ: the
+      // writer meant the group outside.
+      throw error(next, std::string(runs_into_group));
+    }
     if (big_operator(next)) {
       if (bare_argument_ > 0) {
         break;
@@ -220,6 +227,7 @@ Node Grammar::term(std::size_t depth) {
       product.children.push_back(factor(depth + 1));
       product.ops += code;
     } else if (starts_atom(next)) {
+      refuse_wide_space(next);
       if (next.kind == Tok::number && !product.children.empty() &&
           product.children.back().kind == NodeKind::number) {
         throw error(next, "expected an operator between two numbers (write \\cdot or \\times)");
@@ -238,6 +246,27 @@ Node Grammar::term(std::size_t depth) {
   }
   product.end = last_end_;
   return product;
+}
+
+// A number in parentheses after \quad or \qquad at the end of the equation: v = v_0 - J/m \qquad
+// (2) is the equation's number more often than a product (it read as 2 J/m, and a slip by a factor
+// 2 passed). Elsewhere \quad is spacing, as part one of the contract has it.
+void Grammar::refuse_wide_space(const Token& next) const {
+  bool wide = false;
+  for (std::size_t k = position_; k > 0 && tokens_[k - 1].kind == Tok::spacing; --k) {
+    wide = wide || tokens_[k - 1].text == "\\quad" || tokens_[k - 1].text == "\\qquad";
+  }
+  std::size_t after = position_ + 3;
+  while (token(after).kind == Tok::spacing) {
+    ++after;
+  }
+  if (wide && is_char(next, '(') && token(position_ + 1).kind == Tok::number &&
+      is_char(token(position_ + 2), ')') && token(after).kind == Tok::end) {
+    throw error(next,
+                "expected \\tag{…} for the equation's number: a number in parentheses after a "
+                "wide space at the end of an equation is its number more often than a factor; "
+                "write \\tag{2} for the number, \\cdot (2) for the product");
+  }
 }
 
 // a / b c: a over b times c, or a over b c? Refused unless it is a number over a number (1/2 m v^2)

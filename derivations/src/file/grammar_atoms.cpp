@@ -655,6 +655,9 @@ Node Grammar::call(std::size_t depth, Node name) {
     take();  // (
   }
   Node n = make(NodeKind::call, name.offset);
+  if (bare_argument_ > 0) {
+    n.text = bare_call;  // \sin\theta(1 + x): a product here would be ambiguous
+  }
   n.children.push_back(std::move(name));
   if (is_char(peek(), ')')) {
     throw error(peek(), "expected an expression inside the parentheses");

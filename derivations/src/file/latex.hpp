@@ -83,6 +83,14 @@ enum class NodeKind {
 inline constexpr std::string_view upright_d = "\\mathrm{d}";
 /// Node::text of the symbol e written upright (\mathrm{e}): Euler's number, not a letter.
 inline constexpr std::string_view upright_e = "\\mathrm{e}";
+/// The text of a call node that stands in a function's argument written without parentheses.
+inline constexpr std::string_view bare_call = "bare";
+/// Why a function's argument written without parentheses may not run on into a group:
+/// \cos\theta(v_1 + v_2) could be cos(θ (v_1 + v_2)) or cos θ times (v_1 + v_2).
+inline constexpr std::string_view runs_into_group =
+    "expected parentheses around the argument of a function: written without them, it would "
+    "run on into the group that follows, which may be meant outside; write \\cos(\\theta (a + "
+    "b)) for the one, \\cos\\theta \\cdot (a + b) or (a + b) \\cos\\theta for the other";
 
 /// A node of an expression tree, with the span of the file it was read from.
 struct Node {
@@ -90,7 +98,8 @@ struct Node {
   std::size_t offset = 0;  ///< where its first token stands in the file
   std::size_t end = 0;     ///< the byte after its last token
   /// number: its digits; function: its name; the symbol d written upright (\mathrm{d}, \text{d}):
-  /// upright_d, the d of a differential; the symbol e written so: upright_e, Euler's number
+  /// upright_d, the d of a differential; the symbol e written so: upright_e, Euler's number;
+  /// call: bare_call inside a function's argument written without parentheses
   std::string text;
   SymbolName symbol;  ///< symbol
   std::vector<Node> children;

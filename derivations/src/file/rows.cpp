@@ -4,6 +4,7 @@
 // and label taken, and its sides (between the '=') read by the grammar.
 #include <algorithm>
 #include <cctype>
+#include <set>
 
 #include "file/grammar.hpp"
 #include "file/latex.hpp"
@@ -393,9 +394,32 @@ std::vector<Token> strip_environments(const Source& source, std::vector<Token> t
 
 // rows := row {'\\' ['[' length ']'] row}; '&', \nonumber and \notag are dropped, \tag{k} and
 // \label{k} name their row.
+// Whether the '&' at i separates two equations side by side (x &= 2 & y &= 3, align's columns
+// in pairs) rather than marking where a row aligns (x &= 2): the row holds a relation before it,
+// since its start or the last such '&', and what follows is neither a relation nor the end of
+// the row nor an annotation (p &= m v && \text{…}).
+bool separates_equations(const std::vector<Token>& tokens, std::size_t i, bool relation_before) {
+  if (!relation_before) {
+    return false;
+  }
+  std::size_t k = i + 1;
+  while (k < tokens.size() && (tokens[k].kind == Tok::spacing || is_char(tokens[k], '&'))) {
+    ++k;
+  }
+  if (k >= tokens.size()) {
+    return false;
+  }
+  const Token& next = tokens[k];
+  static const std::set<std::string> row_ends{"\\\\",    "\\tag",  "\\label", "\\nonumber",
+                                              "\\notag", "\\text", "\\mbox",  "\\textrm"};
+  return next.kind != Tok::end && !relation_token(next) &&
+         !(next.kind == Tok::command && row_ends.contains(next.text));
+}
+
 std::vector<RowTokens> split_rows(const Source& source, const std::vector<Token>& tokens) {
   std::vector<RowTokens> rows(1);
   int braces = 0;
+  bool relation_before = false;  // since the row's start or its last '&' between equations
   for (std::size_t i = 0; i < tokens.size(); ++i) {
     const Token& t = tokens[i];
     if (t.kind == Tok::end) {
@@ -414,11 +438,20 @@ std::vector<RowTokens> split_rows(const Source& source, const std::vector<Token>
         }
       }
       rows.emplace_back();
+      relation_before = false;
       continue;
     }
     if (is_char(t, '&')) {
+      if (braces == 0 && separates_equations(tokens, i, relation_before)) {
+        Token comma = t;  // read as the comma between two equations is
+        comma.kind = Tok::character;
+        comma.text = ",";
+        rows.back().tokens.push_back(comma);
+        relation_before = false;
+      }
       continue;
     }
+    relation_before = relation_before || (braces == 0 && relation_token(t));
     if (is_command(t, "\\tag")) {
       const std::optional<std::string> label = braced_label(source, tokens, i, t);
       if (!label) {
