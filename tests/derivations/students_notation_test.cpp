@@ -525,3 +525,18 @@ TEST_CASE("Equations side by side, equation numbers and groups after a bare argu
       verdicts("$$y = \\cos(\\theta)(v_1 + v_2)$$\n\n$$y = v_1\\cos\\theta + v_2\\cos\\theta$$") ==
       std::vector<std::string>{"premise", "follows"});
 }
+
+TEST_CASE("An odd root is the real one", "[derivations][students-notation]") {
+  // ∛(x³) is x for every real x (x = -1: ∛(-1) = -1); it was taken as |x|, so z = |x| followed
+  // and z = x failed at x = -1.
+  CHECK(verdicts("$$z = \\sqrt[3]{x^3}$$\n\n$$z = |x|$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
+  CHECK(verdicts("$$z = \\sqrt[3]{x^3}$$\n\n$$z = x$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  // ∛(-27) = -3 (-3 · -3 · -3 = -27), and ∛(-8)² = 4; an even root of x² stays |x|.
+  CHECK(verdicts("$$z = \\sqrt[3]{-27}$$\n\n$$z = -3$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("$$z = \\left(\\sqrt[3]{-8}\\right)^2$$\n\n$$z = 4$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("$$z = \\sqrt{x^2}$$\n\n$$z = x$$").back() != "follows");
+}

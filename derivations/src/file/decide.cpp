@@ -406,7 +406,10 @@ ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts)
         GiNaC::mod(GiNaC::ex_to<numeric>(factor.op(1)), q).is_zero()) {
       const ex f = factor.op(0);
       const Sign s = facts.sign(f);
-      const ex magnitude = (s == Sign::positive || s == Sign::nonnegative)   ? f
+      // An odd root keeps the sign (the real root: (x^3)^(1/3) = x, which |x| was), an even one
+      // takes the magnitude.
+      const ex magnitude = q.is_odd()                                        ? f
+                           : (s == Sign::positive || s == Sign::nonnegative) ? f
                            : (s == Sign::negative || s == Sign::nonpositive) ? ex(-f)
                                                                              : GiNaC::abs(f);
       outside *= GiNaC::pow(magnitude, factor.op(1) * exponent);
@@ -461,6 +464,14 @@ ex by_facts(const ex& e, const Facts& facts) {
       if (is_a<numeric>(base) && GiNaC::ex_to<numeric>(base).is_rational() &&
           GiNaC::ex_to<numeric>(base).is_positive()) {
         return rational_root(GiNaC::ex_to<numeric>(base), GiNaC::ex_to<numeric>(exponent));
+      }
+      // An odd root of a negative rational is the real one, as a student means it:
+      // (-8)^(1/3) = -2, (-8)^(2/3) = 4.
+      const numeric r = GiNaC::ex_to<numeric>(exponent);
+      if (is_a<numeric>(base) && GiNaC::ex_to<numeric>(base).is_rational() &&
+          GiNaC::ex_to<numeric>(base).is_negative() && r.denom().is_odd()) {
+        const ex root = rational_root(-GiNaC::ex_to<numeric>(base), r);
+        return r.numer().is_odd() ? ex(-root) : root;
       }
       return root_taken(base, GiNaC::ex_to<numeric>(exponent), facts);
     }
