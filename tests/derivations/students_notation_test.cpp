@@ -540,3 +540,23 @@ TEST_CASE("An odd root is the real one", "[derivations][students-notation]") {
         std::vector<std::string>{"premise", "follows"});
   CHECK(verdicts("$$z = \\sqrt{x^2}$$\n\n$$z = x$$").back() != "follows");
 }
+
+TEST_CASE("A counterexample fails the step in exact arithmetic",
+          "[derivations][students-notation]") {
+  // The ballistic pendulum: u = (m + M) V / m and V = √(2 g h) (u > 0 makes V > 0), so the step
+  // holds. A point with g = 1/6, h = 3, m = 2, M = 3 left 5/2 - (5/12) √3 √2 √6, which is 0
+  // (√3 √2 √6 = 6) but was 1e-17 in GiNaC's floats, and the point was shown as a counterexample.
+  const auto report = d::check_derivation(
+      "assume: m, M, g, h, u > 0\n\ngiven:\n\n$$m u = (m + M) V \\\\ V^2 = 2 g h$$\n\n"
+      "$$u = \\frac{m+M}{m}\\sqrt{2gh}$$",
+      "pendulum.md");
+  REQUIRE(report.equations.size() == 3);
+  CHECK(report.equations[2].verdict != d::Verdict::does_not_follow);
+  // A slip there still fails: √(g h) for √(2 g h). By hand, m = M = 2, V = 1, g = 1/2, h = 1,
+  // u = 2 satisfy m u = (m + M) V (4 = 4) and V² = 2 g h (1 = 1), and (m + M)/m √(g h) = √2 ≠ 2.
+  const auto slip = d::check_derivation(
+      "assume: m, M, g, h, u, V > 0\n\ngiven:\n\n$$m u = (m + M) V \\\\ V^2 = 2 g h$$\n\n"
+      "$$u = \\frac{m+M}{m}\\sqrt{g h}$$",
+      "pendulum.md");
+  CHECK(slip.equations[2].verdict == d::Verdict::does_not_follow);
+}
