@@ -155,6 +155,16 @@ class Tokenizer {
             ++j;
           }
         }
+        if (j + 1 < text_.size() && (text_[j] == 'e' || text_[j] == 'E') &&
+            (digit_char(text_[j + 1]) || ((text_[j + 1] == '-' || text_[j + 1] == '+') &&
+                                          j + 2 < text_.size() && digit_char(text_[j + 2])))) {
+          throw source_.error(base_ + i,
+                              "expected a number without an exponent in e: " +
+                                  std::string(text_.substr(i, j + 2 - i)) +
+                                  "… could be a number in scientific notation or a product with "
+                                  "the symbol e; write 1.5 \\times 10^{3} for the number, 1.5\\, e "
+                                  "for the product");
+        }
         token.kind = Tok::number;
         token.text = std::string(text_.substr(i, j - i));
         i = j;
@@ -164,6 +174,10 @@ class Tokenizer {
           space = true;  // a no-break space
           continue;
         }
+      } else if (c == '~') {  // LaTeX's space that does not break a line
+        token.kind = Tok::spacing;
+        token.text = "~";
+        ++i;
       } else {
         token.kind = Tok::character;
         token.text = std::string(1, c);
