@@ -336,8 +336,27 @@ Row read_row(const Source& source, RowTokens& row_tokens, const Limits& limits) 
 std::vector<Token> strip_environments(const Source& source, std::vector<Token> tokens) {
   std::vector<Token> kept;
   std::vector<std::pair<std::string, std::size_t>> open;
+  std::set<std::size_t> box_ends;  // the '}' of each \boxed{…}
   for (std::size_t i = 0; i < tokens.size();) {
     const Token& t = tokens[i];
+    if (box_ends.contains(i)) {
+      ++i;
+      continue;
+    }
+    if (is_command(t, "\\boxed") && is_char(tokens[i + 1], '{')) {
+      // \boxed{v' = -e v}: the answer framed, read as if unframed (its braces would hide the
+      // relation from the row).
+      int depth = 0;
+      for (std::size_t k = i + 1; tokens[k].kind != Tok::end; ++k) {
+        depth += is_char(tokens[k], '{') ? 1 : is_char(tokens[k], '}') ? -1 : 0;
+        if (depth == 0) {
+          box_ends.insert(k);
+          break;
+        }
+      }
+      i += 2;
+      continue;
+    }
     if (is_command(t, "\\begin")) {
       const std::size_t at = t.offset;
       const std::string name = environment_name(source, tokens, i);
@@ -392,8 +411,6 @@ std::vector<Token> strip_environments(const Source& source, std::vector<Token> t
   return kept;
 }
 
-// rows := row {'\\' ['[' length ']'] row}; '&', \nonumber and \notag are dropped, \tag{k} and
-// \label{k} name their row.
 // Whether the '&' at i separates two equations side by side (x &= 2 & y &= 3, align's columns
 // in pairs) rather than marking where a row aligns (x &= 2): the row holds a relation before it,
 // since its start or the last such '&', and what follows is neither a relation nor the end of
@@ -416,6 +433,8 @@ bool separates_equations(const std::vector<Token>& tokens, std::size_t i, bool r
          !(next.kind == Tok::command && row_ends.contains(next.text));
 }
 
+// rows := row {'\\' ['[' length ']'] row}; '&', \nonumber and \notag are dropped, \tag{k} and
+// \label{k} name their row.
 std::vector<RowTokens> split_rows(const Source& source, const std::vector<Token>& tokens) {
   std::vector<RowTokens> rows(1);
   int braces = 0;
