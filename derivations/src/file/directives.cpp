@@ -26,6 +26,16 @@ std::vector<std::pair<std::size_t, std::string_view>> split_commas(std::string_v
     while (b > a && (text[b - 1] == ' ' || text[b - 1] == '\t')) {
       --b;
     }
+    if (b - a >= 2 && text[a] == '$' && text[b - 1] == '$') {  // assume: $m > 0$, $v > 0$
+      ++a;
+      --b;
+      while (a < b && (text[a] == ' ' || text[a] == '\t')) {
+        ++a;
+      }
+      while (b > a && (text[b - 1] == ' ' || text[b - 1] == '\t')) {
+        --b;
+      }
+    }
     pieces.emplace_back(offset + a, text.substr(a, b - a));
   };
   for (std::size_t i = 0; i < text.size(); ++i) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <optional>
 #include <string>
 
@@ -238,9 +239,11 @@ class Scanner {
         while (last > content && blank(text_[last - 1])) {
           --last;
         }
-        // Accepted beyond the contract: the directive's LaTeX wrapped in $…$.
+        // Accepted beyond the contract: the directive's LaTeX wrapped in $…$ (each item of a
+        // list may be wrapped too: split_commas takes those).
         if (last - content >= 2 && text_[content] == '$' && text_[last - 1] == '$' &&
-            text_[content + 1] != '$') {
+            text_[content + 1] != '$' &&
+            text_.substr(content + 1, last - content - 2).find('$') == std::string::npos) {
           ++content;
           --last;
           while (content < last && blank(text_[content])) {
@@ -255,7 +258,41 @@ class Scanner {
         return true;
       }
     }
+    refuse_capitalised(i, end);
     return false;
+  }
+
+  // "Assume: $m > 0$" is prose to the letter of the format, and the fact was dropped without a
+  // word. A directive word of the equations' own (assume, given, let, vector, function, unit,
+  // units) in another case, followed by ':' and LaTeX (or nothing, as given: takes), is refused;
+  // followed by words it stays prose ("Given: two balls of equal mass").
+  void refuse_capitalised(std::size_t i, std::size_t end) const {
+    static constexpr std::array<std::string_view, 7> words{"assume",   "given", "let",  "vector",
+                                                           "function", "unit",  "units"};
+    for (const std::string_view word : words) {
+      if (i + word.size() >= end || text_[i + word.size()] != ':') {
+        continue;
+      }
+      std::string written(text_.substr(i, word.size()));
+      std::string lower = written;
+      std::transform(lower.begin(), lower.end(), lower.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      if (lower != word || written == word) {
+        continue;
+      }
+      std::size_t content = i + word.size() + 1;
+      while (content < end && blank(text_[content])) {
+        ++content;
+      }
+      const std::string_view rest = std::string_view(text_).substr(content, end - content);
+      if (rest.empty() || rest.front() == '$' ||
+          rest.find_first_of("<>=\\") != std::string_view::npos) {
+        throw source_.error(i, "expected the directive " + std::string(word) +
+                                   ": in lower case, found " + written +
+                                   ": (as it is written, the line would be prose, and what it "
+                                   "says would not be read)");
+      }
+    }
   }
 
   // Prose from @p i to the end of its line: looks for $$, skipping code spans, escaped dollars
