@@ -560,3 +560,26 @@ TEST_CASE("A counterexample fails the step in exact arithmetic",
       "pendulum.md");
   CHECK(slip.equations[2].verdict == d::Verdict::does_not_follow);
 }
+
+TEST_CASE("Scientific notation, ~, \\boxed and directives as students write them",
+          "[derivations][students-notation]") {
+  // 1.5e3 was read as 1.5 · e · 3 (so E = 1500 failed with e = 1): two readings, refused.
+  refused("$$E = 1.5e3$$", 1, 7, "scientific notation");
+  refused("$$E = 2E-3$$", 1, 7, "scientific notation");
+  // 2e^2 and 3 e are the symbol e, as before.
+  same("2e^2", "2 e e");
+  // ~ is LaTeX's space: p~=~m v is p = m v (it was refused as "found '~'").
+  CHECK(verdicts("$$p~=~m v$$\n\n$$p = v m$$") == std::vector<std::string>{"premise", "follows"});
+  // \boxed{…} frames an answer: read as if unframed (it was "an expression without '='").
+  CHECK(verdicts("$$\\boxed{v' = -e v}$$\n\n$$v' + e v = 0$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  // Each fact of assume: in its own $…$ (v² = 4 m / m = 4 gives v = 2 only with v > 0).
+  CHECK(verdicts("assume: $m > 0$, $v > 0$\n\n$$m v^2 = 4 m$$\n\n$$v = 2$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  // Assume: in another case was prose, and its fact was dropped in silence: refused. Followed by
+  // words it is prose still.
+  refused("Assume: $m > 0$\n\n$$m v = m u$$\n\n$$v = u$$", 1, 1, "lower case");
+  refused("GIVEN:\n\n$$a = b$$", 1, 1, "lower case");
+  CHECK(verdicts("Given: two balls of equal mass.\n\n$$a = b$$\n\n$$a - b = 0$$") ==
+        std::vector<std::string>{"premise", "follows"});
+}
