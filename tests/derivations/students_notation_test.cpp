@@ -583,3 +583,18 @@ TEST_CASE("Scientific notation, ~, \\boxed and directives as students write them
   CHECK(verdicts("Given: two balls of equal mass.\n\n$$a = b$$\n\n$$a - b = 0$$") ==
         std::vector<std::string>{"premise", "follows"});
 }
+
+TEST_CASE("The numeric method measures a step against what rounding moves it by",
+          "[derivations][students-notation]") {
+  // Equal masses: m u = m v_1 + m v_2 and the energies give 2 v_1 v_2 = 0 (by hand: square the
+  // first, u² = v_1² + 2 v_1 v_2 + v_2², and subtract the second). The numeric method solved a
+  // point to v_1 = 1e-17, where v_1 v_2 measured against its own size was 1: "the two methods
+  // disagree", undecided.
+  CHECK(verdicts("assume: m > 0\n\ngiven:\n\n$$m u = m v_1 + m v_2 \\\\ \\frac12 m u^2 = \\frac12 "
+                 "m v_1^2 + \\frac12 m v_2^2$$\n\n$$v_1 v_2 = 0$$")
+            .back() == "follows-one-way");
+  // The slip v_1 v_2 = u is still found (v_1 = u, v_2 = 0: 0 ≠ u).
+  CHECK(verdicts("assume: m > 0\n\ngiven:\n\n$$m u = m v_1 + m v_2 \\\\ \\frac12 m u^2 = \\frac12 "
+                 "m v_1^2 + \\frac12 m v_2^2$$\n\n$$v_1 v_2 = u$$")
+            .back() == "does-not-follow");
+}
