@@ -598,3 +598,19 @@ TEST_CASE("The numeric method measures a step against what rounding moves it by"
                  "m v_1^2 + \\frac12 m v_2^2$$\n\n$$v_1 v_2 = u$$")
             .back() == "does-not-follow");
 }
+
+TEST_CASE("Speeds as magnitudes: |x| and x^2 of a symbol read as one quantity",
+          "[derivations][students-notation]") {
+  // |v'| = e |v| gives v'^2 = e^2 v^2 everywhere (square both sides: |x|² = x²); it was
+  // follows-if |v| ≠ 0, a condition the step does not need.
+  CHECK(verdicts("assume: e > 0\n\n$$|v'| = e |v|$$\n\n$$v'^2 = e^2 v^2$$").back() ==
+        "follows-one-way");
+  // The slip e for e^2 fails, with values of v and v' (e = 2, |v| = 1, |v'| = 2: 4 ≠ 2).
+  const auto slip =
+      d::check_derivation("assume: e > 0\n\n$$|v'| = e |v|$$\n\n$$v'^2 = e v^2$$", "speed.md");
+  CHECK(slip.equations.at(1).verdict == d::Verdict::does_not_follow);
+  CHECK(slip.equations.at(1).counterexample.size() == 3);
+  // Where x stands alone too, |x| is no quantity of its own: |x| = 3 and x = 3 is not decided
+  // here (and never passes).
+  CHECK(verdicts("$$|x| = 3$$\n\n$$x = 3$$").back() != "follows");
+}

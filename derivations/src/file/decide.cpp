@@ -1420,6 +1420,108 @@ std::vector<ex> in_the_angle(const std::vector<ex>& conditions, const ex& tau, c
 
 }  // namespace
 
+namespace {
+
+// ---- magnitudes --------------------------------------------------------------------------------
+// A symbol x that the problem writes only as |x| and in even powers (|v'| = e |v| then v'^2 =
+// e^2 v^2) is a problem in |x| alone: x^2 = |x|^2 for a real x, and any a ≥ 0 is |x| for x = a.
+// |x| becomes a symbol of its own, at least 0, which the search can solve for; a case |v| = 0 then
+// needs no condition |v| ≠ 0 that the step does not need.
+struct MagnitudeRewrite {
+  GiNaC::exmap forward;                  // |x| → its symbol
+  std::vector<std::pair<ex, ex>> pairs;  // (its symbol, x)
+};
+
+// @p e with |x| and the even powers of x written through @p magnitude.
+ex through_magnitude(const ex& e, const ex& x, const ex& magnitude) {
+  struct Each : GiNaC::map_function {
+    const ex& x;
+    const ex& magnitude;
+    Each(const ex& a, const ex& b) : x(a), magnitude(b) {}
+    ex operator()(const ex& part) override {
+      if (is_a<GiNaC::function>(part) && GiNaC::ex_to<GiNaC::function>(part).get_name() == "abs" &&
+          part.op(0).is_equal(x)) {
+        return magnitude;
+      }
+      if (is_a<GiNaC::power>(part) && part.op(0).is_equal(x) &&
+          part.op(1).info(GiNaC::info_flags::even)) {
+        return GiNaC::pow(magnitude, part.op(1));
+      }
+      return part.map(*this);
+    }
+  } each(x, magnitude);
+  return each(e);
+}
+
+MagnitudeRewrite magnitudes(Problem& problem, Facts& facts) {
+  std::vector<ex*> all{&problem.target};
+  for (std::vector<ex>* list :
+       {&problem.premises, &problem.premise_denominators, &problem.target_denominators}) {
+    for (ex& e : *list) {
+      all.push_back(&e);
+    }
+  }
+  std::vector<ex> inside;  // the symbols written as |x|
+  for (const ex* e : all) {
+    for (auto i = e->preorder_begin(); i != e->preorder_end(); ++i) {
+      if (is_a<GiNaC::function>(*i) && GiNaC::ex_to<GiNaC::function>(*i).get_name() == "abs" &&
+          is_a<GiNaC::symbol>(i->op(0)) &&
+          std::none_of(inside.begin(), inside.end(),
+                       [&](const ex& x) { return x.is_equal(i->op(0)); })) {
+        inside.push_back(i->op(0));
+      }
+    }
+  }
+  MagnitudeRewrite rewrite;
+  for (const ex& x : inside) {
+    const Sign sign = facts.sign(x);
+    if (sign != Sign::unknown && sign != Sign::nonzero) {
+      continue;  // by_facts wrote |x| out already where the facts give its sign
+    }
+    const GiNaC::symbol magnitude("|" + GiNaC::ex_to<GiNaC::symbol>(x).get_name() + "|");
+    std::vector<ex> written;
+    bool alone = true;
+    for (const ex* e : all) {
+      written.push_back(through_magnitude(*e, x, magnitude));
+      alone = alone && !written.back().has(x);
+    }
+    if (!alone) {
+      continue;  // x stands in an odd power too: |x| is no symbol of its own there
+    }
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      *all[k] = written[k];
+    }
+    facts.add(magnitude, sign == Sign::nonzero ? Sign::positive : Sign::nonnegative);
+    rewrite.forward[GiNaC::abs(x)] = magnitude;
+    rewrite.pairs.emplace_back(magnitude, x);
+  }
+  return rewrite;
+}
+
+// What the search found, back in the symbols: |x| for its symbol in the conditions and what is
+// left, x = |x|'s value at a counterexample (x ≥ 0 then, so its |x| and its even powers agree).
+void from_magnitudes(Found& found, const MagnitudeRewrite& rewrite) {
+  GiNaC::exmap back;
+  for (const auto& [magnitude, x] : rewrite.pairs) {
+    back[magnitude] = GiNaC::abs(x);
+  }
+  for (ex& c : found.conditions) {
+    c = c.subs(back);
+  }
+  found.residual = found.residual.subs(back);
+  if (found.point) {
+    for (const auto& [magnitude, x] : rewrite.pairs) {
+      if (const auto value = found.point->find(magnitude); value != found.point->end()) {
+        const ex v = value->second;
+        found.point->erase(value);
+        (*found.point)[x] = v;
+      }
+    }
+  }
+}
+
+}  // namespace
+
 Implication implies(const Problem& given, const Facts& facts, const Budget& budget) {
   Implication result;
   // Roots, powers and logarithms simplified where the facts allow it.
@@ -1450,7 +1552,9 @@ Implication implies(const Problem& given, const Facts& facts, const Budget& budg
     apply(problem.target_denominators);
     problem.target = problem.target.subs(rewrite.forward);
   }
-  Decider decider(problem, facts, budget);
+  Facts with_magnitudes = facts;
+  const MagnitudeRewrite magnitude = magnitudes(problem, with_magnitudes);
+  Decider decider(problem, with_magnitudes, budget);
   Frame start;
   start.premises = problem.premises;
   start.target = problem.target;
@@ -1463,6 +1567,7 @@ Implication implies(const Problem& given, const Facts& facts, const Budget& budg
     found.residual = problem.target;
     found.how.push_back(std::string("the exact method stopped: ") + e.what());
   }
+  from_magnitudes(found, magnitude);
   if (!rewrite.forward.empty()) {
     if (found.outcome == Implied::fails) {
       found.outcome = Implied::unknown;
