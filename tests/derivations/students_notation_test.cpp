@@ -614,3 +614,18 @@ TEST_CASE("Speeds as magnitudes: |x| and x^2 of a symbol read as one quantity",
   // here (and never passes).
   CHECK(verdicts("$$|x| = 3$$\n\n$$x = 3$$").back() != "follows");
 }
+
+TEST_CASE("Sines of many angles end within the step's time", "[derivations][students-notation]") {
+  // Written through tangents of half angles, sin(a + 2b + 3c + 4g + 5h + 6k) and sin((a + b)^5)
+  // (multiples 1, 5, 10, 10, 5, 1 once expanded) ran for minutes, past every budget; beyond 4
+  // angles or multiples adding up to 12 a sine is now taken as it stands. (On the old code this
+  // test does not end.)
+  CHECK(verdicts("$$y = \\sin(a + 2b + 3c + 4g + 5h + 6k)$$\n\n$$y = y$$").back() ==
+        "follows-one-way");
+  CHECK(verdicts("$$y = \\sin((a+b)^{5})$$\n\n$$y = 1$$").back() == "does-not-follow");
+  // The same sine written again holds before any rewriting (it was "too large to expand").
+  CHECK(verdicts("$$y = \\sin(a + 2b + 3c + 6g)$$\n\n$$y = \\sin(6g + 3c + 2b + a)$$").back() ==
+        "follows");
+  // Within the bounds the rewriting still decides identities: sin 3θ = 3 sin θ - 4 sin³ θ.
+  same("\\sin(3\\theta)", "3\\sin\\theta - 4\\sin^3\\theta");
+}
