@@ -4,9 +4,12 @@
 // for the paper's files (also:, index:, arrow:, differentials:, forces:, matrix:, column:).
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <map>
 
+#include "file/decide.hpp"
 #include "file/reader.hpp"
+#include "symbolic.hpp"
 
 namespace impulse::derivations::file {
 
@@ -454,10 +457,14 @@ void Reader::fact(std::size_t at, const Relation& r) {
   if (r.kind == Relation::Kind::in_range) {
     const ex x = value(r.left);
     if (r.low) {
-      facts_.add_relation(x - value(*r.low), r.low_closed ? Sign::nonnegative : Sign::positive);
+      const Sign sign = r.low_closed ? Sign::nonnegative : Sign::positive;
+      relation_agrees(at, x - value(*r.low), sign);
+      facts_.add_relation(x - value(*r.low), sign);
     }
     if (r.high) {
-      facts_.add_relation(value(*r.high) - x, r.high_closed ? Sign::nonnegative : Sign::positive);
+      const Sign sign = r.high_closed ? Sign::nonnegative : Sign::positive;
+      relation_agrees(at, value(*r.high) - x, sign);
+      facts_.add_relation(value(*r.high) - x, sign);
     }
     return;
   }
@@ -477,15 +484,52 @@ void Reader::fact(std::size_t at, const Relation& r) {
       const ex right = value(r.right);
       facts_.add_equality(v.x * v.x + v.y * v.y - right * right);
       facts_.add_relation(right, Sign::nonnegative);
+      equalities_agree(at);
       return;
     }
     facts_.add_equality(difference);
+    equalities_agree(at);
     return;
   }
   if (GiNaC::is_a<GiNaC::numeric>(difference)) {
     throw source_.error(at, "expected a fact about symbols, found one about numbers alone");
   }
+  relation_agrees(at, difference, sign_of(r.kind));
   facts_.add_relation(difference, sign_of(r.kind));
+}
+
+// A relation the facts before it already contradict (a, b > 0 then a + b < 0; 0 ≤ e ≤ 1 then
+// e > 2): no values satisfy them together, and every step would follow from them.
+void Reader::relation_agrees(std::size_t at, const ex& difference, Sign sign) const {
+  const Sign known = facts_.sign(difference);
+  const bool above = known == Sign::positive || known == Sign::nonnegative;
+  const bool below = known == Sign::negative || known == Sign::nonpositive;
+  const bool strict = known == Sign::positive || known == Sign::negative;
+  const bool contradicts =
+      (above && (sign == Sign::negative || (strict && sign == Sign::nonpositive))) ||
+      (below && (sign == Sign::positive || (strict && sign == Sign::nonnegative)));
+  if (contradicts) {
+    throw source_.error(
+        at, "expected facts that agree: " + relation_latex(sym::latex(difference), sign) +
+                " contradicts the facts before it, which give " +
+                relation_latex(sym::latex(difference), known) +
+                " (no values satisfy them together, and every step would "
+                "follow from them)");
+  }
+}
+
+// The facts' equalities have real values that satisfy them with the other facts: z^2 + 1 = 0,
+// x = 1 with x = 2, or n_x = 2 of a unit vector have none, and every step would follow.
+void Reader::equalities_agree(std::size_t at) const {
+  Budget quick;
+  quick.attempts = 0;
+  quick.deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
+  const Implication none = implies({facts_.equalities(), {}, 1, {}}, facts_, quick);
+  if (none.outcome == Implication::Outcome::holds) {
+    throw source_.error(at,
+                        "expected facts that agree: no real values satisfy this equality "
+                        "together with the facts before it (every step would follow from them)");
+  }
 }
 
 // unit: n, m — unit vectors (\|\vec n\| = 1).
@@ -501,6 +545,7 @@ void Reader::on_unit(const Directive& d) {
           at, "expected a vector in unit: (declare it with vector: " + name.latex() + " first)");
     }
     facts_.add_equality(v.x * v.x + v.y * v.y - 1);
+    equalities_agree(at);
   }
 }
 

@@ -115,6 +115,8 @@ class Reader {
   void on_block(const Directive& d);
   void fact(std::size_t at, const Relation& relation);
   void symbol_fact(std::size_t at, const SymbolName& name, Sign sign);
+  void relation_agrees(std::size_t at, const GiNaC::ex& difference, Sign sign) const;
+  void equalities_agree(std::size_t at) const;
   std::vector<std::size_t> named(const Directive& d);
 
   // ---- the paper's checks (groups.cpp) ----
