@@ -74,6 +74,8 @@ class Checker {
                          const Facts& facts, std::size_t index, const Budget& budget);
   std::optional<Implication> converse(const Scalars& before, const Scalars& step,
                                       const Facts& facts, const Budget& budget);
+  void premises_agree(const std::vector<Equation>& equations, std::size_t index,
+                      const Source& source);
   void equivalence_if(const Scalars& before, const Scalars& step, const Implication& forward,
                       const Facts& facts, EquationResult& r) const;
   void drop_given_conditions(Implication& forward, const Scalars& before, const Scalars& step,
