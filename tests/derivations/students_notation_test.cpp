@@ -629,3 +629,24 @@ TEST_CASE("Sines of many angles end within the step's time", "[derivations][stud
   // Within the bounds the rewriting still decides identities: sin 3θ = 3 sin θ - 4 sin³ θ.
   same("\\sin(3\\theta)", "3\\sin\\theta - 4\\sin^3\\theta");
 }
+
+TEST_CASE("Facts and premises that nothing satisfies are refused",
+          "[derivations][students-notation]") {
+  // With facts or premises that no real values satisfy, every step followed, y = 1 then y = 2
+  // included. By hand: z² + 1 > 0 for real z; x cannot be 1 and 2; a unit vector has n_x² ≤ 1;
+  // a + b > 0 for positive a and b; e ≤ 1 < 2.
+  const std::string wrong = "\n\n$$y = 1$$\n\n$$y = 2$$";
+  refused("assume: z^2 + 1 = 0" + wrong, 1, 9, "facts that agree");
+  refused("assume: x = 1, x = 2" + wrong, 1, 16, "facts that agree");
+  refused("vector: n\n\nunit: n\n\nassume: n_x = 2" + wrong, 5, 9, "facts that agree");
+  refused("assume: a > 0, b > 0, a + b < 0" + wrong, 1, 23, "facts that agree");
+  refused("assume: 0 \\le e \\le 1, e > 2" + wrong, 1, 24, "facts that agree");
+  // x² = -1 has no real solution; nor do x = 1 and x = 2 together.
+  refused("$$x^2 = -1$$" + wrong, 1, 3, "premises that some real values satisfy");
+  refused("given:\n\n$$x = 1 \\\\ x = 2$$" + wrong, 3, 12,
+          "premises that some real values satisfy");
+  // Facts and premises that agree are read as before (x⁴ = 1 and x² = 1 are the same for a real
+  // x: x⁴ - 1 = (x² - 1)(x² + 1)).
+  CHECK(verdicts("assume: a > 0, b > 0, a + b > 1\n\n$$x^2 = 1$$\n\n$$x^4 = 1$$").back() ==
+        "follows");
+}
