@@ -59,3 +59,31 @@ TEST_CASE("Tasks: a task file without a target is refused", "[derivations][tasks
   const d::Task task{"given:\n\n$$a = b$$\n", "task.md"};
   CHECK_THROWS_AS(d::check_derivation("$$a = b$$\n", "a.md", task), d::TaskError);
 }
+
+TEST_CASE("Tasks: a fact or definition of the submission's own is a premise the task does not give",
+          "[derivations][tasks]") {
+  // The bounce: v² = 2 g h, v' = e v, v'² = 2 g h' give h' = e² h. A submission that assumes
+  // e = 1 (or defines e := 1) reaches "h' = h"… and the target, e² h = h then, by a fact the task
+  // does not give; one that defines a name of its own (k := e²) does not assume anything.
+  const d::Task task{pins::read(tasks / "bounce-height" / "task.md"), "task.md"};
+  const std::string given =
+      "given:\n\n$$v^2 = 2 g h \\\\\nv' = e v \\\\\nv'^2 = 2 g h'$$\n\n"
+      "$$2 g h' = 2 e^2 g h$$\n\n$$h' = e^2 h$$\n";
+  const auto judged = [&](const std::string& facts) {
+    const d::DerivationReport report = d::check_derivation(facts + given, "own.md", task);
+    REQUIRE(report.task);
+    return *report.task;
+  };
+  const d::TaskResult same = judged("assume: g, h, v > 0, 0 < e \\le 1\n\n");
+  CHECK(same.target_reached);
+  const d::TaskResult fact = judged("assume: g, h, v > 0, 0 < e \\le 1, e = 1\n\n");
+  CHECK_FALSE(fact.target_reached);
+  CHECK(fact.reason == "extra-premise");
+  CHECK(lines_text(fact.extra_premises) == "5");  // the first equation where it is in force
+  const d::TaskResult sign = judged("assume: g, h, v > 0, 0 < e \\le 1, h' > 0\n\n");
+  CHECK(sign.reason == "extra-premise");  // the task gives no sign of h'
+  const d::TaskResult definition = judged("assume: g, h, v > 0, 0 < e \\le 1\n\nlet: e = 1\n\n");
+  CHECK(definition.reason == "extra-premise");
+  const d::TaskResult name = judged("assume: g, h, v > 0, 0 < e \\le 1\n\nlet: k = e^2\n\n");
+  CHECK(name.target_reached);
+}

@@ -6,8 +6,12 @@
 #include "file/task.hpp"
 
 #include <algorithm>
+#include <set>
+#include <string>
 
+#include "file/decide.hpp"
 #include "file/step.hpp"
+#include "symbolic.hpp"
 
 namespace impulse::derivations::file {
 
@@ -116,6 +120,57 @@ Equation defined(const Equation& e) {
   return out;
 }
 
+// Whether a sign the task's facts give (@p given) is at least @p needed.
+bool gives(Sign given, Sign needed) {
+  switch (needed) {
+    case Sign::positive:
+    case Sign::negative:
+      return given == needed;
+    case Sign::nonnegative:
+      return given == Sign::positive || given == Sign::nonnegative;
+    case Sign::nonpositive:
+      return given == Sign::negative || given == Sign::nonpositive;
+    case Sign::nonzero:
+      return given == Sign::positive || given == Sign::negative || given == Sign::nonzero;
+    default:
+      return true;
+  }
+}
+
+// What a submission assumes of its own at an equation, beyond the task: a fact the task's facts
+// do not give (assume: v > 0 where the task has none on v; assume: L = 2), or a definition of a
+// symbol the task uses (let: L = 2, let: A = 4/m), which puts a value in for one of the task's
+// quantities. A definition of a name of its own is an abbreviation, not a premise. Each is
+// written once into @p seen; true when the equation brings a new one.
+bool assumes_more(const Equation& e, const Facts& task, const std::set<ex, GiNaC::ex_is_less>& used,
+                  std::set<std::string>& seen) {
+  bool more = false;
+  const auto note = [&](const std::string& what) { more = seen.insert(what).second || more; };
+  for (const auto& [symbol, sign] : e.facts.all()) {
+    if (!gives(task.sign(symbol), sign)) {
+      note(relation_latex(sym::latex(symbol), sign));
+    }
+  }
+  for (const auto& [relation, sign] : e.facts.relations()) {
+    if (!gives(task.sign(relation), sign)) {
+      note(relation_latex(sym::latex(relation), sign));
+    }
+  }
+  for (const ex& q : e.facts.equalities()) {
+    const bool given = std::any_of(task.equalities().begin(), task.equalities().end(),
+                                   [&](const ex& t) { return GiNaC::normal(t - q).is_zero(); });
+    if (!given) {
+      note(sym::latex(q) + " = 0");
+    }
+  }
+  for (const auto& [symbol, value] : e.substitutions) {
+    if (used.contains(symbol)) {
+      note(sym::latex(symbol) + " := " + sym::latex(value));
+    }
+  }
+  return more;
+}
+
 bool passing(Verdict v) {
   return v == Verdict::follows || v == Verdict::follows_one_way || v == Verdict::follows_if ||
          v == Verdict::premise;
@@ -152,12 +207,31 @@ TaskResult judge_task(const Task& task, const std::vector<Equation>& equations, 
     for (const Equation& p : premises) {
       given.push_back(&p);
     }
+    // The symbols of the task's premises, target and facts, in the submission's.
+    std::set<ex, GiNaC::ex_is_less> used;
+    std::vector<ex> written;
+    for (const Equation* p : given) {
+      written.insert(written.end(),
+                     {p->lhs.value.x, p->lhs.value.y, p->rhs.value.x, p->rhs.value.y});
+    }
+    written.insert(written.end(), {target.lhs.value.x, target.lhs.value.y, target.rhs.value.x,
+                                   target.rhs.value.y});
+    for (const auto& [symbol, sign] : facts.all()) {
+      written.push_back(symbol);
+    }
+    for (const ex& x : symbols_of(written)) {
+      used.insert(x);
+    }
+    std::set<std::string> seen;
     const double seconds = options.step_seconds;
     bool assumed = false;
     bool broken = false;  // a step before the target that does not pass
     for (std::size_t i = 0; i < equations.size(); ++i) {
-      const Equation e = defined(equations[i]);
       const EquationResult& r = report.equations[i];
+      if (assumes_more(equations[i], facts, used, seen)) {
+        result.extra_premises.push_back(r.line);  // a fact or definition of its own, in force here
+      }
+      const Equation e = defined(equations[i]);
       if (e.premise) {
         // One of the task's premises; else the target stated as a premise (assumed, not
         // derived, though it follows); else it must follow from the task's premises.
