@@ -515,6 +515,10 @@ TEST_CASE("Equations side by side, equation numbers and groups after a bare argu
   refused("$$v' = v - \\frac{J}{m} \\quad (2)$$", 1, 30, "\\tag");
   // \quad is spacing elsewhere (part one): a \quad b is a b.
   same("a \\quad b", "a b");
+  // |a|b|c| pairs its bars as |a| b |c| or as |a |b| c| (which differ where b < 0): refused.
+  // |a| |b| and 2|a| b read as before.
+  refused("$$z = |a|b|c|$$", 1, 11, "pair as");
+  same("|a| |b|", "|a b|");
   // A group right after a function's bare argument: \sin\theta (1 + 1) was sin 2θ, so
   // x = 2 sin θ cos θ followed from it; \cos\theta(v_1 + v_2) was cos(θ (v_1 + v_2)).
   refused("$$x = \\sin\\theta (1 + 1)$$", 1, 19, "run on into the group");  // at 1 + 1

@@ -228,6 +228,15 @@ Node Grammar::term(std::size_t depth) {
       product.ops += code;
     } else if (starts_atom(next)) {
       refuse_wide_space(next);
+      if (is_char(next, '|') && product.children.size() >= 2 &&
+          product.children.back().kind != NodeKind::abs &&
+          std::any_of(product.children.begin(), product.children.end(),
+                      [](const Node& f) { return f.kind == NodeKind::abs; })) {
+        // |a|b|c|: |a| b |c|, or |a |b| c|?
+        throw error(next,
+                    "expected \\left| … \\right| or parentheses: the bars of |a|b|c| pair as "
+                    "|a| b |c| or as |a |b| c|");
+      }
       if (next.kind == Tok::number && !product.children.empty() &&
           product.children.back().kind == NodeKind::number) {
         throw error(next, "expected an operator between two numbers (write \\cdot or \\times)");
