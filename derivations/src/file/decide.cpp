@@ -1532,6 +1532,38 @@ void from_magnitudes(Found& found, const MagnitudeRewrite& rewrite) {
   }
 }
 
+// What the search found with sines and cosines written through tangents of half angles, back in
+// the angles: a failure only as a value of the tangents (no point in the angles: the numeric
+// method looks for one), the conditions in the angles.
+void from_tangents(Found& found, const TrigRewrite& rewrite, const ex& target) {
+  if (found.outcome == Implied::fails) {
+    found.outcome = Implied::unknown;
+    found.point.reset();
+    found.how.push_back(
+        "with sines and cosines written through tangents of half angles, the "
+        "step does not hold everywhere; the numeric method looks for the "
+        "angles that show it");
+    found.residual = target;
+  } else {
+    found.point.reset();  // in the tangents, not the angles
+    // Conditions back in the angles: τ = tan(angle/2); those in one τ alone whose product is
+    // 1 - τ² (or τ) are cos(angle) ≠ 0 (or sin(angle) ≠ 0), as the file would write them.
+    for (const auto& [tau, angle] : rewrite.tangents) {
+      found.conditions = in_the_angle(found.conditions, tau, angle);
+    }
+    GiNaC::exmap back;
+    for (const auto& [tau, angle] : rewrite.tangents) {
+      back[tau] = GiNaC::tan(angle / 2);
+    }
+    for (ex& c : found.conditions) {
+      c = c.subs(back);
+    }
+    found.how.insert(found.how.begin(),
+                     "sines and cosines written through tangents of half "
+                     "angles");
+  }
+}
+
 }  // namespace
 
 Implication implies(const Problem& given, const Facts& facts, const Budget& budget) {
@@ -1598,32 +1630,7 @@ Implication implies(const Problem& given, const Facts& facts, const Budget& budg
     found = search(problem, budget);
   }
   if (!rewrite.forward.empty() && !as_written) {
-    if (found.outcome == Implied::fails) {
-      found.outcome = Implied::unknown;
-      found.point.reset();
-      found.how.push_back(
-          "with sines and cosines written through tangents of half angles, the "
-          "step does not hold everywhere; the numeric method looks for the "
-          "angles that show it");
-      found.residual = original.target;
-    } else {
-      found.point.reset();  // in the tangents, not the angles
-      // Conditions back in the angles: τ = tan(angle/2); those in one τ alone whose product is
-      // 1 - τ² (or τ) are cos(angle) ≠ 0 (or sin(angle) ≠ 0), as the file would write them.
-      for (const auto& [tau, angle] : rewrite.tangents) {
-        found.conditions = in_the_angle(found.conditions, tau, angle);
-      }
-      GiNaC::exmap back;
-      for (const auto& [tau, angle] : rewrite.tangents) {
-        back[tau] = GiNaC::tan(angle / 2);
-      }
-      for (ex& c : found.conditions) {
-        c = c.subs(back);
-      }
-      found.how.insert(found.how.begin(),
-                       "sines and cosines written through tangents of half "
-                       "angles");
-    }
+    from_tangents(found, rewrite, original.target);
   }
   result.outcome = found.outcome;
   result.conditions = found.conditions;
