@@ -102,7 +102,7 @@ struct EquationResult {
   bool condition_needed = true;        ///< follows-if: the step was shown to fail without it
   std::string residual;                ///< does-not-follow: what is left of the step, LaTeX
   std::string residual_text;           ///< the same in plain text
-  /// does-not-follow, written as an equivalence (\iff): which way it fails, in a sentence
+  /// does-not-follow, written as an equivalence (\\iff): which way it fails, in a sentence
   std::string equivalence_note;
   std::vector<CounterexampleValue> counterexample;  ///< does-not-follow: values that break it
   bool counterexample_exact = false;  ///< the values are exact (checked with exact arithmetic)
