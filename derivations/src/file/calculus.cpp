@@ -482,6 +482,20 @@ std::vector<Instance> instances(const std::vector<ex>& expressions, std::size_t 
   for (const ex& e : expressions) {
     collect(e, functions, limits, names);
   }
+  // The functions and the limits by their names: their serials and GiNaC's order of symbols
+  // follow what the process made before (another file checked first registered p before F),
+  // and the formulas each gets must not.
+  std::vector<std::pair<std::string, unsigned>> by_name;
+  for (const unsigned serial : functions) {
+    by_name.emplace_back(names[serial], serial);
+  }
+  std::sort(by_name.begin(), by_name.end());
+  std::vector<std::pair<std::string, ex>> limits_by_name;
+  for (const ex& limit : limits) {
+    limits_by_name.emplace_back(text_of(limit), limit);
+  }
+  std::sort(limits_by_name.begin(), limits_by_name.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
   const ex u = instance_variable();
   const std::vector<ex> formulas{1, u, u * u, 1 + u, 2 - u, u * u * u - u, 1 + 2 * u + u * u};
   const std::vector<long> counts{2, 3, 1};
@@ -489,7 +503,7 @@ std::vector<Instance> instances(const std::vector<ex>& expressions, std::size_t 
   for (std::size_t k = 0; k < most; ++k) {
     Instance instance;
     std::size_t f = 0;
-    for (const unsigned serial : functions) {
+    for (const auto& [written, serial] : by_name) {
       const ex formula = formulas[(k + f) % formulas.size()];
       instance.formulas[serial] = formula;
       std::string name = names[serial];
@@ -500,7 +514,7 @@ std::vector<Instance> instances(const std::vector<ex>& expressions, std::size_t 
       ++f;
     }
     std::size_t l = 0;
-    for (const ex& limit : limits) {
+    for (const auto& [written, limit] : limits_by_name) {
       const long value = counts[(k + l) % counts.size()];
       instance.limits[limit] = value;
       instance.text +=
