@@ -1174,6 +1174,17 @@ class Decider {
     return best;
   }
 
+ public:
+  // Whether the point is a counterexample: see fails_at().
+  bool fails_at(const GiNaC::exmap& point) const {
+    try {
+      return satisfies(point) && nonzero_real(problem_.target.subs(point));
+    } catch (const std::exception&) {
+      return false;  // a division by zero at this point
+    }
+  }
+
+ private:
   // The point satisfies the facts, every premise exactly, and every equation is defined there.
   bool satisfies(const GiNaC::exmap& point) const {
     for (const auto& [symbol, value] : point) {
@@ -1432,6 +1443,11 @@ std::vector<ex> in_the_angle(const std::vector<ex>& conditions, const ex& tau, c
 
 }  // namespace
 
+bool fails_at(const Problem& problem, const Facts& facts, const GiNaC::exmap& point) {
+  const Budget unused;
+  return Decider(problem, facts, unused).fails_at(point);
+}
+
 namespace {
 
 // ---- magnitudes --------------------------------------------------------------------------------
@@ -1440,8 +1456,7 @@ namespace {
 // |x| becomes a symbol of its own, at least 0, which the search can solve for; a case |v| = 0 then
 // needs no condition |v| ≠ 0 that the step does not need.
 struct MagnitudeRewrite {
-  GiNaC::exmap forward;                  // |x| → its symbol
-  std::vector<std::pair<ex, ex>> pairs;  // (its symbol, x)
+  std::vector<std::pair<ex, ex>> pairs;  // (the symbol of |x|, x)
 };
 
 // @p e with |x| and the even powers of x written through @p magnitude.
@@ -1504,7 +1519,6 @@ MagnitudeRewrite magnitudes(Problem& problem, Facts& facts) {
       *all[k] = written[k];
     }
     facts.add(magnitude, sign == Sign::nonzero ? Sign::positive : Sign::nonnegative);
-    rewrite.forward[GiNaC::abs(x)] = magnitude;
     rewrite.pairs.emplace_back(magnitude, x);
   }
   return rewrite;

@@ -67,6 +67,11 @@ struct Budget {
 /// denominator would expand more than @p terms terms (then @p e is taken as it stands).
 [[nodiscard]] GiNaC::ex safe_numerator(const GiNaC::ex& e, double terms = 4000);
 
+/// Whether @p point shows @p problem's target failing, as a counterexample of implies() must:
+/// the facts and the premises hold there, nothing is divided by zero, and the target is
+/// certainly not zero (values taken exactly, or in 40 digits).
+[[nodiscard]] bool fails_at(const Problem& problem, const Facts& facts, const GiNaC::exmap& point);
+
 /// Decides whether @p problem's target follows from its premises under @p facts.
 [[nodiscard]] Implication implies(const Problem& problem, const Facts& facts,
                                   const Budget& budget = {});

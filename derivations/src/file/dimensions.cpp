@@ -10,14 +10,15 @@ namespace impulse::derivations::file {
 using GiNaC::ex;
 using GiNaC::numeric;
 
-namespace {
-
 Dimension operator+(const Dimension& a, const Dimension& b) {
   return {a.mass + b.mass, a.length + b.length, a.time + b.time};
 }
 Dimension operator-(const Dimension& a, const Dimension& b) {
   return {a.mass - b.mass, a.length - b.length, a.time - b.time};
 }
+
+namespace {
+
 Dimension scaled(const Dimension& a, const numeric& k) {
   return {a.mass * k, a.length * k, a.time * k};
 }

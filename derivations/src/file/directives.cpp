@@ -23,21 +23,19 @@ std::vector<std::pair<std::size_t, std::string_view>> split_commas(std::string_v
   const auto push = [&](std::size_t end) {
     std::size_t a = start;
     std::size_t b = end;
-    while (a < b && (text[a] == ' ' || text[a] == '\t')) {
-      ++a;
-    }
-    while (b > a && (text[b - 1] == ' ' || text[b - 1] == '\t')) {
-      --b;
-    }
-    if (b - a >= 2 && text[a] == '$' && text[b - 1] == '$') {  // assume: $m > 0$, $v > 0$
-      ++a;
-      --b;
+    const auto trim = [&] {
       while (a < b && (text[a] == ' ' || text[a] == '\t')) {
         ++a;
       }
       while (b > a && (text[b - 1] == ' ' || text[b - 1] == '\t')) {
         --b;
       }
+    };
+    trim();
+    if (b - a >= 2 && text[a] == '$' && text[b - 1] == '$') {  // assume: $m > 0$, $v > 0$
+      ++a;
+      --b;
+      trim();
     }
     pieces.emplace_back(offset + a, text.substr(a, b - a));
   };
@@ -456,15 +454,16 @@ void Reader::fact(std::size_t at, const Relation& r) {
   }
   if (r.kind == Relation::Kind::in_range) {
     const ex x = value(r.left);
+    const auto bound = [&](const ex& difference, bool closed) {
+      const Sign sign = closed ? Sign::nonnegative : Sign::positive;
+      relation_agrees(at, difference, sign);
+      facts_.add_relation(difference, sign);
+    };
     if (r.low) {
-      const Sign sign = r.low_closed ? Sign::nonnegative : Sign::positive;
-      relation_agrees(at, x - value(*r.low), sign);
-      facts_.add_relation(x - value(*r.low), sign);
+      bound(x - value(*r.low), r.low_closed);
     }
     if (r.high) {
-      const Sign sign = r.high_closed ? Sign::nonnegative : Sign::positive;
-      relation_agrees(at, value(*r.high) - x, sign);
-      facts_.add_relation(value(*r.high) - x, sign);
+      bound(value(*r.high) - x, r.high_closed);
     }
     return;
   }
@@ -502,13 +501,7 @@ void Reader::fact(std::size_t at, const Relation& r) {
 // e > 2): no values satisfy them together, and every step would follow from them.
 void Reader::relation_agrees(std::size_t at, const ex& difference, Sign sign) const {
   const Sign known = facts_.sign(difference);
-  const bool above = known == Sign::positive || known == Sign::nonnegative;
-  const bool below = known == Sign::negative || known == Sign::nonpositive;
-  const bool strict = known == Sign::positive || known == Sign::negative;
-  const bool contradicts =
-      (above && (sign == Sign::negative || (strict && sign == Sign::nonpositive))) ||
-      (below && (sign == Sign::positive || (strict && sign == Sign::nonnegative)));
-  if (contradicts) {
+  if (opposite(sign) != Sign::unknown && gives(known, opposite(sign))) {
     throw source_.error(
         at, "expected facts that agree: " + relation_latex(sym::latex(difference), sign) +
                 " contradicts the facts before it, which give " +

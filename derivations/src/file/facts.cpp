@@ -30,6 +30,38 @@ std::string relation_latex(const std::string& what, Sign sign) {
   return what;
 }
 
+bool gives(Sign known, Sign needed) {
+  switch (needed) {
+    case Sign::positive:
+    case Sign::negative:
+    case Sign::zero:
+      return known == needed;
+    case Sign::nonnegative:
+      return known == Sign::positive || known == Sign::nonnegative || known == Sign::zero;
+    case Sign::nonpositive:
+      return known == Sign::negative || known == Sign::nonpositive || known == Sign::zero;
+    case Sign::nonzero:
+      return known == Sign::positive || known == Sign::negative || known == Sign::nonzero;
+    default:
+      return true;
+  }
+}
+
+Sign opposite(Sign sign) {
+  switch (sign) {
+    case Sign::positive:
+      return Sign::nonpositive;
+    case Sign::nonpositive:
+      return Sign::positive;
+    case Sign::negative:
+      return Sign::nonnegative;
+    case Sign::nonnegative:
+      return Sign::negative;
+    default:
+      return Sign::unknown;
+  }
+}
+
 namespace {
 
 bool strict(Sign s) {

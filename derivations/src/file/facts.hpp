@@ -33,6 +33,12 @@ enum class Sign {
 /// The LaTeX relation of a sign fact about @p what ("m_1 > 0").
 [[nodiscard]] std::string relation_latex(const std::string& what, Sign sign);
 
+/// Whether a quantity of sign @p known has sign @p needed too (> 0 gives ≥ 0 and ≠ 0).
+[[nodiscard]] bool gives(Sign known, Sign needed);
+
+/// The sign a quantity has where it has not @p sign (> 0: ≤ 0); unknown for ≠ 0 and = 0.
+[[nodiscard]] Sign opposite(Sign sign);
+
 /// Facts on the signs of symbols and expressions, and equalities.
 class Facts {
  public:

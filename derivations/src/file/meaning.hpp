@@ -63,6 +63,9 @@ struct Dimension {
   /// "M L T^-1", or "1" when dimensionless.
   [[nodiscard]] std::string text() const;
 };
+/// The dimension of a product (a quotient) of quantities of dimensions @p a and @p b.
+[[nodiscard]] Dimension operator+(const Dimension& a, const Dimension& b);
+[[nodiscard]] Dimension operator-(const Dimension& a, const Dimension& b);
 
 /// Where an equation's terms disagree in dimension.
 struct DimensionIssue {

@@ -359,9 +359,7 @@ void Reader::dimension(Equation& e, const Node& left, const Node& right) {
                                            ", the right side " + r.dimension->text()};
   } else if (!(l.logarithms == r.logarithms)) {
     // ln h_n = ln h_0 + 2 n ln e: the logarithms of lengths cancel across the sides.
-    const Dimension left_over{l.logarithms.mass - r.logarithms.mass,
-                              l.logarithms.length - r.logarithms.length,
-                              l.logarithms.time - r.logarithms.time};
+    const Dimension left_over = l.logarithms - r.logarithms;
     e.dimension_issue = DimensionIssue{
         l.logarithm_at ? *l.logarithm_at : r.logarithm_at.value_or(left.offset), Dimension{},
         left_over,

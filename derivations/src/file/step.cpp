@@ -53,39 +53,6 @@ void merge(Implication& total, const Implication& one) {
   }
 }
 
-// Whether @p point shows the step failing: every value a number that the facts allow, the
-// equations before hold there exactly, nothing written is divided by zero, and the step does
-// not hold.
-bool shows_failure(const GiNaC::exmap& point, const Scalars& before, const Scalars& step,
-                   const Facts& facts) {
-  try {
-    for (const auto& [symbol, value] : point) {
-      if (!GiNaC::is_a<GiNaC::numeric>(value) ||
-          !facts.satisfied(symbol, GiNaC::ex_to<GiNaC::numeric>(value))) {
-        return false;
-      }
-    }
-    const auto at = [&](const ex& e) { return GiNaC::normal(e.subs(point)); };
-    const auto a_number = [&](const ex& e) {
-      const ex v = at(e);
-      return GiNaC::is_a<GiNaC::numeric>(v) && !v.is_zero();
-    };
-    if (!facts.satisfied(point) ||
-        !std::all_of(before.differences.begin(), before.differences.end(),
-                     [&](const ex& d) { return at(d).is_zero(); })) {
-      return false;
-    }
-    for (const std::vector<ex>* list : {&before.denominators, &step.denominators}) {
-      if (!std::all_of(list->begin(), list->end(), a_number)) {
-        return false;
-      }
-    }
-    return std::any_of(step.differences.begin(), step.differences.end(), a_number);
-  } catch (const std::exception&) {
-    return false;  // not numbers (an atom, a function): no verdict from it
-  }
-}
-
 std::string trimmed(std::string text) {
   const std::size_t first = text.find_first_not_of(' ');
   const std::size_t last = text.find_last_not_of(' ');
@@ -479,7 +446,13 @@ void Checker::equivalence_if(const Scalars& before, const Scalars& step, const I
       "written as an equivalence (\\iff), but the step follows from the "
       "equation before only where $" +
       r.condition + "$";
-  if (forward.point && shows_failure(*forward.point, before, step, facts)) {
+  const auto shown = [&](const GiNaC::exmap& point) {
+    return std::any_of(step.differences.begin(), step.differences.end(), [&](const ex& d) {
+      return fails_at({before.differences, before.denominators, d, step.denominators}, facts,
+                      point);
+    });
+  };
+  if (forward.point && shown(*forward.point)) {
     r.verdict = Verdict::does_not_follow;
     r.how = only_if +
             ": the point below satisfies the equation before and the facts exactly, "

@@ -120,23 +120,6 @@ Equation defined(const Equation& e) {
   return out;
 }
 
-// Whether a sign the task's facts give (@p given) is at least @p needed.
-bool gives(Sign given, Sign needed) {
-  switch (needed) {
-    case Sign::positive:
-    case Sign::negative:
-      return given == needed;
-    case Sign::nonnegative:
-      return given == Sign::positive || given == Sign::nonnegative;
-    case Sign::nonpositive:
-      return given == Sign::negative || given == Sign::nonpositive;
-    case Sign::nonzero:
-      return given == Sign::positive || given == Sign::negative || given == Sign::nonzero;
-    default:
-      return true;
-  }
-}
-
 // What a submission assumes of its own at an equation, beyond the task: a fact the task's facts
 // do not give (assume: v > 0 where the task has none on v; assume: L = 2), or a definition of a
 // symbol the task uses (let: L = 2, let: A = 4/m), which puts a value in for one of the task's
