@@ -38,6 +38,9 @@ const std::map<std::string, Expected> expected{
     {"duplicate-tag.md", {5, 3, "an equation above already carries"}},
     {"given-at-end.md", {5, 1, "expected a display block after given:"}},
     {"from-at-end.md", {5, 1, "expected a display equation after from:"}},
+    // The first $ (line 3, column 8): |x| = 3 on the line of given: was never read, and x = 3,
+    // the next block, was taken as the premise (every step followed).
+    {"given-on-its-line.md", {3, 8, "expected nothing after given:"}},
     {"let-self.md", {3, 11, "does not use x itself"}},  // the x of 2x
     {"contradictory-facts.md", {4, 9, "m < 0 contradicts m > 0"}},
     {"units-not-mlt.md", {3, 11, "found 'm'"}},

@@ -654,3 +654,20 @@ TEST_CASE("Facts and premises that nothing satisfies are refused",
   CHECK(verdicts("assume: a > 0, b > 0, a + b > 1\n\n$$x^2 = 1$$\n\n$$x^4 = 1$$").back() ==
         "follows");
 }
+
+TEST_CASE("A counterexample satisfies every fact, and facts hold no prose",
+          "[derivations][students-notation]") {
+  // a < b < c gives a < c, so d = |a - c| = c - a. The counterexample a = 1, c = -1 was printed:
+  // b was not in the step, and the facts on it were not checked (no b has 1 < b < -1). The
+  // checker cannot derive a < c, so the step is undecided, and never red.
+  const std::string chain = "assume: a < b < c\n\n$$d = |a - c|$$\n\n$$d = c - a$$";
+  CHECK(verdicts(chain).back() == "undecided");
+  // A step that fails has a counterexample that keeps the facts: d = a - c fails wherever
+  // a < c (d = c - a > 0 there, and a - c = -d).
+  CHECK(verdicts("assume: a < b < c\n\n$$d = |a - c|$$\n\n$$d = a - c$$").back() ==
+        "does-not-follow");
+  // assume: x > 1 (for safety): the words were letters multiplied, and x > 1 was lost.
+  refused("assume: x > 1 (for safety)\n\n$$a = \\sqrt{x^2}$$\n\n$$a = x$$", 1, 16, "without words");
+  // x^0 = 1 only where x ≠ 0 (0^0 is not defined).
+  CHECK(verdicts("$$a = 1$$\n\n$$a = x^{0}$$").back() == "follows-if");
+}

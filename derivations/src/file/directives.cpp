@@ -6,6 +6,7 @@
 #include <cctype>
 #include <chrono>
 #include <map>
+#include <optional>
 
 #include "file/decide.hpp"
 #include "file/reader.hpp"
@@ -89,6 +90,13 @@ void Reader::read_directive(const Directive& d) {
 }
 
 void Reader::on_given(const Directive& d) {
+  // given: $$|x| = 3$$ on one line was read as given: alone, the next block taken as the premises
+  // and |x| = 3 never read.
+  if (!d.content.empty()) {
+    throw source_.error(d.content_offset,
+                        "expected nothing after given: (the premises are the equations of the "
+                        "next display block, $$ … $$ on the lines below it)");
+  }
   given_ = d.offset;
 }
 
@@ -390,9 +398,42 @@ Sign sign_of(Relation::Kind kind) {
 
 // assume := fact {',' fact}; fact := symbol {',' symbol} relation expression
 //         | expression relation expression {relation expression} | expression '\in' interval
+namespace {
+
+// Where a word of prose stands in a directive's LaTeX, if one does: three letters or more between
+// spaces or parentheses, not a command's name nor a subscript (assume: x > 1 (for safety) read
+// "for safety" as a product of letters, and the fact x > 1 was lost).
+std::optional<std::size_t> word_in(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    if (!std::isalpha(static_cast<unsigned char>(text[i]))) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && std::isalpha(static_cast<unsigned char>(text[end]))) {
+      ++end;
+    }
+    const bool before = i == 0 || text[i - 1] == ' ' || text[i - 1] == '(';
+    const bool after = end == text.size() || text[end] == ' ' || text[end] == ')' ||
+                       text[end] == ',' || text[end] == '.';
+    if (end - i >= 3 && before && after) {
+      return i;
+    }
+    i = end;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 void Reader::on_assume(const Directive& d) {
   if (d.content.empty()) {
     throw source_.error(d.content_offset, "expected facts after assume: (e.g. m_1, m_2 > 0)");
+  }
+  if (const auto word = word_in(d.content)) {
+    throw source_.error(d.content_offset + *word,
+                        "expected facts without words: words belong on a line of their own, "
+                        "outside the directive (read as letters, they would be a product)");
   }
   std::vector<std::pair<std::size_t, SymbolName>> pending;
   for (const auto& [at, piece] : split_commas(d.content, d.content_offset)) {

@@ -642,7 +642,8 @@ class Evaluator {
                       "(this checker's limit)");
         }
       }
-      if (k.is_negative() && !base.vector) {
+      // x^0 is 1 only where x ≠ 0 (0^0 is not defined), as x^{-1} is defined there alone.
+      if ((k.is_negative() || k.is_zero()) && !base.vector) {
         divides_by(base.x, n.children[0]);
       }
     }

@@ -317,6 +317,27 @@ class Sampler {
     all.insert(all.end(), problem.premises.begin(), problem.premises.end());
     all.insert(all.end(), problem.denominators.begin(), problem.denominators.end());
     symbols_ = symbols_of(all);
+    // The symbols of facts that share one with these (b of a < b < c) are drawn too, so that a
+    // point satisfies those facts whole: a = 1, c = -1 passed for a counterexample of d = c - a
+    // from d = |a - c|.
+    const auto known = [&](const ex& x) {
+      return std::any_of(symbols_.begin(), symbols_.end(),
+                         [&](const ex& y) { return y.is_equal(x); });
+    };
+    for (bool grew = true; grew;) {
+      grew = false;
+      for (const auto& relation : facts.relations()) {
+        const std::vector<ex> in = symbols_of(relation.first);
+        if (std::any_of(in.begin(), in.end(), known)) {
+          for (const ex& x : in) {
+            if (!known(x)) {
+              symbols_.push_back(x);
+              grew = true;
+            }
+          }
+        }
+      }
+    }
     values_.assign(symbols_.size(), 0.0);
   }
 
