@@ -122,8 +122,13 @@ TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students
   // the work-energy theorem)? Refused at the ^; (\Delta v)^2 is the square.
   refused("$$W = \\tfrac12 m \\Delta v^2$$", 1, 26, "(\\Delta v)^");
   same("(\\Delta v)^2", "\\Delta v \\cdot \\Delta v");
-  same("\\hat n", "n");
-  same("\\mathbf n", "n");
+  // \hat n and n of an n not declared a vector are one number: is n the vector's magnitude?
+  // (\vec v = \vec u + \vec w then v = u + w followed.) Refused where the second form stands;
+  // declared a vector, both are the vector.
+  refused("$$\\hat n = c$$\n\n$$n = c$$", 3, 3, "written one way");
+  refused("$$\\vec v = \\vec u + \\vec w$$\n\n$$v = u + w$$", 3, 3, "written one way");
+  same("\\hat n", "n", "vector: n, c");
+  same("\\mathbf n", "n", "vector: n, c");
   different("\\bar x", "x");
   different("v_\\perp", "v_\\parallel");
   refused("$$\\Delta(m v) = J$$", 1, 9, "\\Delta");  // at its parenthesis
@@ -653,6 +658,73 @@ TEST_CASE("Facts and premises that nothing satisfies are refused",
   // x: x⁴ - 1 = (x² - 1)(x² + 1)).
   CHECK(verdicts("assume: a > 0, b > 0, a + b > 1\n\n$$x^2 = 1$$\n\n$$x^4 = 1$$").back() ==
         "follows");
+}
+
+TEST_CASE("Labels, mixed numbers, units and notations that could mean two things",
+          "[derivations][students-notation]") {
+  // Each read a way the writer did not mean, and a wrong step passed (what it read, by hand):
+  // - [2], (1b), \{2\} after \quad: the equation's label, read as a factor (a = 2b followed);
+  refused("$$a = b \\quad [2]$$\n\n$$a = 2b$$", 1, 15, "\\tag");
+  refused("$$x = y \\quad (1b)$$\n\n$$x = b y$$", 1, 15, "\\tag");
+  refused("$$a = b \\quad (2)$$", 1, 15, "\\tag");  // after a letter: it was a call b(2)
+  refused("$$a = b \\quad \\{2\\}$$", 1, 15, "\\tag");
+  refused("$$a = b \\quad \\left[3\\right]$$", 1, 15, "\\tag");
+  // - 2\frac{1}{2}: 2 times a half (a = 1 followed) where 2½ is meant;
+  refused("$$a = 2\\frac{1}{2}$$\n\n$$a = 1$$", 1, 8, "mixed number");
+  refused("$$a = 3\\tfrac14$$", 1, 8, "mixed number");
+  // - 1/2\pi: π/2 (f = π/2 followed) where 1/(2π) is meant; 1/2 m v^2 stays ½ m v²;
+  refused("$$f = 1/2\\pi$$\n\n$$f = \\frac{\\pi}{2}$$", 1, 10, "\\pi");
+  CHECK(verdicts("$$E = 1/2 m v^2$$\n\n$$2E = m v^2$$").back() == "follows");
+  // - L = 2\,\text{km}: the unit ignored, so L = 2\,\text{m} followed; SI units stay notes;
+  refused("$$L = 2\\,\\text{km}$$\n\n$$L = 2\\,\\text{m}$$", 1, 10, "SI units");
+  refused("$$v = 36\\,\\text{km/h}$$", 1, 11, "SI units");
+  CHECK(verdicts("$$m = 2\\,\\text{kg}$$\n\n$$2 m = 4$$").back() == "follows");
+  // - "otherwise", "for" between two premises: both taken as holding (u = 0 followed from
+  //   v = 0 otherwise v = 2u; t = 0 from F = 0 for t = 0); "and" joins two that hold;
+  refused("given:\n$$v = 0 \\quad\\text{otherwise}\\quad v = 2u$$\n$$u = 0$$", 2, 14,
+          "'otherwise'");
+  refused("given:\n$$F = 0 \\quad\\text{for}\\quad t = 0$$\n$$t = 0$$", 2, 14, "'for'");
+  CHECK(verdicts("given:\n$$v = 0 \\quad\\text{and}\\quad u = 2$$\n$$v + u = 2$$").back() ==
+        "follows-one-way");
+  // - a - b \Big|_0^h: the bar on b alone (½kx² - mgh followed where ½kh² - mgh is the value);
+  //   brackets, or a bar on every term (the paper's), are read;
+  refused("$$W = \\frac{1}{2} k x^2 - m g x \\Big|_{x=0}^{h}$$", 1, 32, "around a sum");
+  CHECK(verdicts("$$W = \\left[\\frac{1}{2} k x^2 - m g x\\right]_{x=0}^{h}$$\n\n"
+                 "$$W = \\frac{1}{2} k h^2 - m g h$$")
+            .back() == "follows");
+  CHECK(verdicts("$$W = x^2 \\Big|_{x=0}^{h} - x \\Big|_{x=0}^{h}$$\n\n$$W = h^2 - h$$").back() ==
+        "follows");
+  // - \frac{d}{dt} t x: d/dt of t alone, times x (d(tx)/dt = 4t³ from x = t³, but t³ followed);
+  const std::string x = "function: x\n\n$$x(t) = t^3$$\n\n";
+  refused(x + "$$\\frac{d}{dt} t x = t^3$$", 5, 18, "parentheses around what");
+  CHECK(verdicts(x + "$$\\frac{d}{dt}\\left(t x\\right) = 4 t^3$$").back() != "does-not-follow");
+  // - \frac{dx}{dt}(2): the derivative times 2 (6t² followed), or at 2?
+  refused(x + "$$\\frac{dx}{dt}(2) = 6t^2$$", 5, 17, "derivative at 2");
+  // - f^2(t): f(t)² t (t⁵ followed from f(t) = t²), f^{-1}(t) likewise;
+  const std::string f = "function: f\n\n$$f(t) = t^2$$\n\n";
+  refused(f + "$$f^2(t) = t^5$$", 5, 7, "(f(t))^2");
+  refused(f + "$$f^{-1}(t) = 1$$", 5, 10, "inverse function");
+  // - two integrals one after the other: the inner took ds (J = s T followed where T²/2);
+  refused("$$J = \\int_0^T \\int_0^s 1\\,dt\\,ds$$\n\n$$J = s T$$", 1, 16, "inner integral");
+  // - an equation's number in parentheses before the equation, or after it with a space, as the
+  //   paper prints (3.4): a factor 2 (J = 2 m (w - v) followed), or 3.4 on the first term;
+  refused("$$J = m (w - v) \\; (2)$$\n\n$$J = 2 m (w - v)$$", 1, 20, "\\tag");
+  refused("$$J = m (w - v) (2)$$", 1, 17, "\\tag");
+  refused("$$(3.4) E_k + E_o = E_l + E_p$$", 1, 3, "\\tag");
+  refused("$$(2)J = m w - m v$$", 1, 3, "\\tag");
+  refused("\\begin{align*}\n(1)\\quad & m v = (m + M) V \\\\\n(2)\\quad & V = 2\n\\end{align*}", 2,
+          1, "\\tag");
+  //   a number in parentheses within a sum, or alone on a side, is read as before;
+  CHECK(verdicts("$$x = 3 (2) + 1$$\n\n$$x = 7$$").back() == "follows");
+  CHECK(verdicts("$$(2) + x = 3$$\n\n$$x = 1$$").back() == "follows");
+  // - \epsilon and \varepsilon: two symbols as read (F = \varepsilon B failed at ε = -1, ϵ = 1);
+  refused("$$F = \\epsilon B$$\n\n$$F = \\varepsilon B$$", 3, 7, "one form of the letter");
+  // - m_1 (v_1')^2, with a space, is the product part two reads (it was refused as v_1' at a
+  //   function's value); without the space x(0) of an undeclared x stays refused.
+  CHECK(verdicts("$$E = m_1 (v_1)^2$$\n\n$$E = m_1 v_1^2$$").back() == "follows");
+  refused("$$x = v(0)$$", 1, 7, "a function's value");
+  // - given: with its premise on the same line: never read, the next block taken instead.
+  refused("$$y = 1$$\n\ngiven: $$|x| = 3$$\n\n$$x = 3$$", 3, 8, "nothing after given:");
 }
 
 TEST_CASE("A counterexample satisfies every fact, and facts hold no prose",

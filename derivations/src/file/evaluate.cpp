@@ -426,7 +426,51 @@ class Evaluator {
                   "a real quantity i (then say so with a fact, assume: i > 0, or name it "
                   "otherwise)");
     }
+    refuse_accent_and_bare(n);
+    refuse_two_forms(n);
     return s_.symbol_value(n.symbol);
+  }
+
+  // \epsilon and \varepsilon (\theta and \vartheta, \phi and \varphi, \rho and \varrho) in one
+  // file: two symbols as read, one letter as a student means it (F dt = \epsilon B then
+  // F dt = \varepsilon B failed at \epsilon = 1, \varepsilon = -1). Refused where the second
+  // form stands.
+  void refuse_two_forms(const Node& n) {
+    static const std::map<std::string, std::string, std::less<>> plain{
+        {"\\varepsilon", "\\epsilon"},
+        {"\\vartheta", "\\theta"},
+        {"\\varphi", "\\phi"},
+        {"\\varrho", "\\rho"},
+        {"\\varsigma", "\\sigma"}};
+    SymbolName letter = n.symbol;
+    if (const auto found = plain.find(letter.base); found != plain.end()) {
+      letter.base = found->second;
+    }
+    const auto [first, fresh] = s_.letter_forms_.try_emplace(letter.latex(), n.symbol.base);
+    if (!fresh && first->second != n.symbol.base) {
+      throw error(n.offset, "expected one form of the letter: " + first->second + " and " +
+                                n.symbol.base +
+                                " are two symbols as read, though they are one letter; write "
+                                "one of them throughout");
+    }
+  }
+
+  // \vec v and v of a v not declared a vector are one number here: is v the magnitude of \vec v?
+  // (\vec v = \vec u + \vec w then v = u + w followed.) Refused where the second form stands.
+  void refuse_accent_and_bare(const Node& n) {
+    const SymbolName name = s_.resolve(n.symbol);
+    if (name.arrow || s_.is_vector(name) || s_.component_of(name)) {
+      return;
+    }
+    const auto [first, fresh] = s_.accented_.try_emplace(name.latex(), n.symbol.accent);
+    if (!fresh && first->second != n.symbol.accent) {
+      throw error(n.offset,
+                  "expected " + name.latex() +
+                      " written one way: it stands with an accent (\\vec, \\hat, \\mathbf) "
+                      "and without, and is not declared a vector, so both are one number; if "
+                      "the bare letter is the vector's magnitude, declare vector: " +
+                      name.latex() + " and write \\|\\vec{" + name.latex() + "}\\| for it");
+    }
   }
 
   // \dot x and \ddot x of a declared function x: its derivatives in t; at @p at when given
@@ -516,10 +560,36 @@ class Evaluator {
     return total;
   }
 
+  // f^2(t) of a declared function f, and \frac{dx}{dt}(2): (f(t))² or f(f(t)), the derivative at 2
+  // or times 2? Read as products they were f(t)² t and 2 dx/dt, and f^2(t) = t^5 followed from
+  // f(t) = t^2.
+  void refuse_value_after(const Node& before, const Node& group) const {
+    if (!group.enclosed) {
+      return;
+    }
+    const bool power_of_function = before.kind == NodeKind::power &&
+                                   before.children[0].kind == NodeKind::symbol &&
+                                   s_.function(before.children[0].symbol) != nullptr;
+    if (power_of_function) {
+      throw error(group.offset,
+                  "expected parentheses around the function's value before its power: f^2(t) "
+                  "could be (f(t))^2 or f(f(t)), and f^{-1}(t) the inverse function; write "
+                  "\\left(f(t)\\right)^2");
+    }
+    if (before.kind == NodeKind::derivative) {
+      throw error(group.offset,
+                  "expected \\cdot or \\left. … \\right|_{t=2} after a derivative: "
+                  "\\frac{dx}{dt}(2) could be the derivative at 2 or the derivative times 2");
+    }
+  }
+
   Value product(const Node& n) {
     const auto factors = s_.factors(n);
     Value acc = eval(factors[0].first);
     for (std::size_t i = 1; i < factors.size(); ++i) {
+      if (factors[i].second == ' ') {
+        refuse_value_after(factors[i - 1].first, factors[i].first);
+      }
       const Value next = eval(factors[i].first);
       const char op = factors[i].second;
       const std::size_t at = factors[i].first.offset;
@@ -1173,9 +1243,10 @@ class CallResolver {
     const bool lone =
         single(argument) || (argument.kind == NodeKind::sum && argument.children.size() == 1 &&
                              single(argument.children[0]));
-    if (lone && !(argument.kind == NodeKind::symbol && is_bound(argument.symbol))) {
+    if (lone && !n.spaced && !(argument.kind == NodeKind::symbol && is_bound(argument.symbol))) {
       // x(0), v(t), \omega(T) of a name not declared a function: nobody writes a product so; the
       // value of a function is meant (x(t) = x_0 + v_0 t then x(0) = 0 followed, as x times 0).
+      // With a space, m_1 (v_1')^2, the product is meant, as part two of the contract reads it.
       const std::string inside = s_.written(argument);
       throw s_.error(n.offset, name.latex() + "(" + inside + "): " + name.latex() + " at " +
                                    inside + " (a function's value), or " + name.latex() +

@@ -121,6 +121,7 @@ Node Grammar::expression(std::size_t depth) {
     sign = op.kind == Tok::character ? op.text[0] : '+';  // the paper's ⊕ adds padded blocks
     sum.children.push_back(sum_term(depth + 1));
     sum.ops += sign;
+    refuse_bar_after_sum(sum);
   }
   if (is_command(peek(), "\\pm") || is_command(peek(), "\\mp")) {
     refused_command(peek());  // between terms too (v_0 \pm \sqrt{…}): two equations, not a '}'
@@ -244,6 +245,7 @@ Node Grammar::term(std::size_t depth) {
       const Token written = next;
       product.children.push_back(factor(depth + 1));
       product.ops += ' ';
+      refuse_mixed_number(product, written);
       refuse_ambiguous_division(product, written);
       refuse_unit(product, written);
     } else {
@@ -257,23 +259,44 @@ Node Grammar::term(std::size_t depth) {
   return product;
 }
 
-// A number in parentheses after \quad or \qquad at the end of the equation: v = v_0 - J/m \qquad
+// A label in brackets after \quad or \qquad at the end of the equation: v = v_0 - J/m \qquad
 // (2) is the equation's number more often than a product (it read as 2 J/m, and a slip by a factor
-// 2 passed). Elsewhere \quad is spacing, as part one of the contract has it.
+// 2 passed), and so are [2], \{2\}, \left[3\right] and (1b). Elsewhere \quad is spacing, as part
+// one of the contract has it.
 void Grammar::refuse_wide_space(const Token& next) const {
   bool wide = false;
   for (std::size_t k = position_; k > 0 && tokens_[k - 1].kind == Tok::spacing; --k) {
     wide = wide || tokens_[k - 1].text == "\\quad" || tokens_[k - 1].text == "\\qquad";
   }
-  std::size_t after = position_ + 3;
-  while (token(after).kind == Tok::spacing) {
-    ++after;
+  if (!wide) {
+    return;
   }
-  if (wide && is_char(next, '(') && token(position_ + 1).kind == Tok::number &&
-      is_char(token(position_ + 2), ')') && token(after).kind == Tok::end) {
+  std::size_t k = is_command(next, "\\left") ? position_ + 1 : position_;
+  const Token& open = token(k);
+  if (!is_char(open, '(') && !is_char(open, '[') && !is_command(open, "\\{") &&
+      !is_command(open, "\\lbrack")) {
+    return;
+  }
+  bool label = false;  // numbers and letters alone (2, 1b, 3.1)
+  for (++k; token(k).kind == Tok::number || token(k).kind == Tok::letter ||
+            token(k).kind == Tok::spacing || is_char(token(k), '.');
+       ++k) {
+    label = label || token(k).kind != Tok::spacing;
+  }
+  if (is_command(token(k), "\\right")) {
+    ++k;
+  }
+  const Token& close = token(k);
+  if (!label || !(is_char(close, ')') || is_char(close, ']') || is_command(close, "\\}") ||
+                  is_command(close, "\\rbrack"))) {
+    return;
+  }
+  for (++k; token(k).kind == Tok::spacing; ++k) {
+  }
+  if (token(k).kind == Tok::end) {
     throw error(next,
-                "expected \\tag{…} for the equation's number: a number in parentheses after a "
-                "wide space at the end of an equation is its number more often than a factor; "
+                "expected \\tag{…} for the equation's number: a label in brackets after a wide "
+                "space at the end of an equation is its number more often than a factor; "
                 "write \\tag{2} for the number, \\cdot (2) for the product");
   }
 }
@@ -290,12 +313,36 @@ void Grammar::refuse_ambiguous_division(const Node& product, const Token& writte
   const bool differential =
       after.kind == NodeKind::symbol &&
       (after.symbol.base == "dt" || after.symbol.differential || after.text == upright_d);
+  if (number(product.children[n - 3]) && number(product.children[n - 2]) &&
+      after.kind == NodeKind::pi) {
+    // f = 1/2\pi: one over 2π, as in f = ω/2π, or π/2, as 1/2 m v^2 is ½ m v²?
+    throw error(written,
+                "expected \\frac after a division before \\pi: 1/2\\pi could be one over 2π or "
+                "π over 2; write \\frac{1}{2\\pi} or \\frac{\\pi}{2}");
+  }
   if ((number(product.children[n - 3]) && number(product.children[n - 2])) || differential) {
     return;
   }
   throw error(written,
               "expected an operator or \\frac after a division: a/b c could be a over b, times c, "
               "or a over b c; write \\frac{a}{b} c or \\frac{a}{b c} (or a/(b c))");
+}
+
+// 2\frac{1}{2}: the mixed number 2½ as a student writes it, or 2 times ½ as part one reads
+// juxtaposition (a = 2\frac{1}{2} then a = 1 followed)? Refused when a number stands right before
+// a fraction of two numbers.
+void Grammar::refuse_mixed_number(const Node& product, const Token& written) const {
+  const std::size_t n = product.children.size();
+  if (n < 2 || product.children[n - 2].kind != NodeKind::number || product.ops[n - 1] != ' ') {
+    return;
+  }
+  const Node& after = product.children[n - 1];
+  if (after.kind == NodeKind::fraction && after.children[0].kind == NodeKind::number &&
+      after.children[1].kind == NodeKind::number) {
+    throw error(written,
+                "expected an operator between a number and a fraction: 2\\frac{1}{2} could be the "
+                "mixed number 2½ or 2 times ½; write \\frac{5}{2}, or 2 \\cdot \\frac{1}{2}");
+  }
 }
 
 // 2\,\mathrm{m}, 3\,\mathrm{kg}: a unit after a number, read as a symbol it would be a quantity
@@ -394,6 +441,28 @@ Node Grammar::postfix(std::size_t depth, Node base) {
 }
 
 // ---- evaluation bars ---------------------------------------------------------------------------
+
+// a - b \Big|_0^h: the bar stands on b alone as read, on the whole sum as a student writes it
+// (\frac{1}{2} k x^2 - m g x \Big|_0^h gave ½kx² - mgh). Refused in a term after one without a
+// bar of its own; a bar on every term (the paper's A \Big|_0^{dt} + B \Big|_0^{dt}) is read.
+void Grammar::refuse_bar_after_sum(const Node& sum) const {
+  const auto bar_of = [](const Node& term) -> const Node* {
+    const Node* last = &term;
+    while (last->kind == NodeKind::product && !last->children.empty()) {
+      last = &last->children.back();
+    }
+    return last->kind == NodeKind::bar && !last->enclosed ? last : nullptr;
+  };
+  const Node* bar = bar_of(sum.children.back());
+  if (bar == nullptr || std::all_of(sum.children.begin(), sum.children.end() - 1,
+                                    [&](const Node& term) { return bar_of(term) != nullptr; })) {
+    return;
+  }
+  throw error_at(bar->children[0].end,
+                 "expected \\left[ … \\right]_a^b (or \\left. … \\right|_a^b) around a sum "
+                 "before an evaluation bar: after a + b it stands on b alone as read, on the "
+                 "whole sum as meant");
+}
 
 bool Grammar::bar_ahead() {
   skip_spacing();

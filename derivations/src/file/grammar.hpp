@@ -79,6 +79,8 @@ class Grammar {
   Node expression(std::size_t depth);
   Node sum_term(std::size_t depth);
   void refuse_ambiguous_division(const Node& product, const Token& written) const;
+  void refuse_mixed_number(const Node& product, const Token& written) const;
+  void refuse_bar_after_sum(const Node& sum) const;
   void refuse_wide_space(const Token& next) const;
   void refuse_unit(const Node& product, const Token& written) const;
   Node term(std::size_t depth);

@@ -43,7 +43,12 @@ Node Grammar::atom(std::size_t depth) {
     }
     case Tok::letter: {
       Node symbol = symbol_atom(depth);
-      return call_ahead() ? call(depth, std::move(symbol)) : symbol;
+      if (!call_ahead()) {
+        return symbol;
+      }
+      skip_spacing();
+      refuse_wide_space(peek());  // a = b \quad (1b): the equation's label, not b of 1b
+      return call(depth, std::move(symbol));
     }
     case Tok::character:
       return bracket(depth);
@@ -86,7 +91,9 @@ Node Grammar::bracket(std::size_t depth) {
       --position_;  // read the subscript as a bar's: '|' stands for the closing bracket
       tokens_[position_].kind = Tok::character;
       tokens_[position_].text = "|";
-      return bar(depth, std::move(held));
+      Node evaluated = bar(depth, std::move(held));
+      evaluated.enclosed = true;
+      return evaluated;
     }
     return first;
   }
@@ -130,6 +137,7 @@ Node Grammar::group_inside(std::size_t depth, const Token& open, char close) {
   }
   Node inner = expression(depth + 1);
   expect_char(close, open, close == '}' ? "group {…}" : "parenthesis");
+  inner.enclosed = close == ')';
   return inner;
 }
 
@@ -242,7 +250,9 @@ Node Grammar::delimited(std::size_t depth) {
     --position_;  // the closing delimiter stands for the bar
     tokens_[position_].kind = Tok::character;
     tokens_[position_].text = "|";
-    return bar(depth, std::move(first));
+    Node evaluated = bar(depth, std::move(first));
+    evaluated.enclosed = true;
+    return evaluated;
   }
   if (closer.empty() && !is_char(close, '.')) {
     throw error(close, "expected \\right. to close \\left. (or an evaluation bar \\right|_a^b)");
@@ -252,6 +262,7 @@ Node Grammar::delimited(std::size_t depth) {
     n.children.push_back(std::move(first));
     return n;
   }
+  first.enclosed = closer == ")";
   return first;
 }
 
@@ -493,6 +504,15 @@ std::optional<Node> Grammar::as_derivative(const Node& top, const Node& bottom, 
                               "}\\left(m v\\right)");
     }
     operand = factor(depth + 1);
+    if (!operand->enclosed && starts_atom(peek()) && !is_char(peek(), '|')) {
+      // \frac{d}{dt} t x: of t alone, then times x, or of t x? (d(tx)/dt = t^3 followed from
+      // x = t^3, where d(tx)/dt = 4 t^3.)
+      throw error(peek(), "expected parentheses around what \\frac{d}{d" + variable.latex() +
+                              "} differentiates: followed by a product, it could be the first "
+                              "factor alone or the whole product; write \\frac{d}{d" +
+                              variable.latex() + "}\\left(t x\\right) or x \\frac{d t}{d" +
+                              variable.latex() + "}");
+    }
   }
   derivative.children.push_back(std::move(*operand));
   derivative.end = last_end_;
@@ -655,6 +675,7 @@ Node Grammar::call(std::size_t depth, Node name) {
     take();  // (
   }
   Node n = make(NodeKind::call, name.offset);
+  n.spaced = open.space_before;
   if (bare_argument_ > 0) {
     n.text = bare_call;  // \sin\theta(1 + x): a product here would be ambiguous
   }

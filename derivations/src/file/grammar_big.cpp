@@ -118,6 +118,14 @@ Node Grammar::integral(std::size_t depth, const Token& op) {
     throw error(peek(),
                 "expected the integrand after \\int (ending in its differential: dt, dx, …)");
   }
+  if (is_command(peek(), "\\int")) {
+    // \int_0^T \int_0^s 1\,dt\,ds: the inner integral took the last differential, ds, and the
+    // outer one none, which read s T for T²/2.
+    throw error(peek(),
+                "expected the inner integral in parentheses: \\int_0^T \\left(\\int_0^s f\\,dt"
+                "\\right) ds; written one after the other, which differential belongs to which "
+                "integral is not read");
+  }
   ++integrand_;
   n.children.push_back(term(depth + 1));
   --integrand_;

@@ -259,6 +259,8 @@ class Symbols {
   std::map<std::string, FunctionDeclaration> functions_;  // latex key → declaration
   std::vector<std::pair<GiNaC::ex, GiNaC::ex>> counts_;   // a sum's upper limit, its lower
   std::optional<SymbolName> integration_variable_;        // of the last integral read (for a bar)
+  std::map<std::string, bool> accented_;  // scalar latex keys → first written with an accent
+  std::map<std::string, std::string> letter_forms_;  // \epsilon_1 → the form first written
 };
 
 /// Reads the dimension of `units:` ("M L T^-1", "M L^{2}", "1").

@@ -4,7 +4,9 @@
 // and label taken, and its sides (between the '=') read by the grammar.
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <set>
+#include <string_view>
 
 #include "file/grammar.hpp"
 #include "file/latex.hpp"
@@ -120,9 +122,17 @@ bool words(const std::vector<Token>& tokens, std::size_t open, std::size_t end) 
   return tokens[end - 1].space_before;
 }
 
-// Whether a \text{…} (its '{' at open, end after its '}') holds the word "or" (or "either"): it
-// joins its equations as cases, one of which holds.
-bool disjunction(const std::vector<Token>& tokens, std::size_t open, std::size_t end) {
+// The word of a \text{…} (its '{' at open, end after its '}') that makes the equations it stands
+// between cases, one of which holds ("or", "otherwise"), or the next one a condition of the one
+// before ("if", "for", "when", "unless"), or denies it ("not"): read as two equations that both
+// hold, v = 0 \text{ otherwise } v = 2u gave u = 0. Empty when there is none.
+std::string disjunction(const std::vector<Token>& tokens, std::size_t open, std::size_t end) {
+  static const std::set<std::string, std::less<>> conditional{
+      "or",      "either",   "otherwise",    "else",     "unless",   "if",      "iff",    "only",
+      "when",    "whenever", "while",        "whereas",  "for",      "at",      "except", "not",
+      "nor",     "neither",  "respectively", "provided", "assuming", "suppose", "case",   "cases",
+      "instead", "until",    "before",       "after",    "oder",     "sonst",   "wenn",   "falls",
+      "ou",      "sinon",    "si",           "sino",     "cuando"};
   std::vector<std::string> words{""};
   for (std::size_t k = open + 1; k < end; ++k) {
     const Token& t = tokens[k];
@@ -135,8 +145,114 @@ bool disjunction(const std::vector<Token>& tokens, std::size_t open, std::size_t
       }
     }
   }
-  return std::any_of(words.begin(), words.end(),
-                     [](const std::string& w) { return w == "or" || w == "either"; });
+  const auto found = std::find_if(words.begin(), words.end(),
+                                  [](const std::string& w) { return conditional.contains(w); });
+  return found == words.end() ? std::string() : *found;
+}
+
+// The word of a \text{…} (its '{' at open, end after its '}') that is a unit outside SI's
+// coherent ones (km, h, g, cm), or empty. A unit after a number is an annotation, ignored: the
+// number must then be in SI units, or L = 2\,\text{km} and L = 2\,\text{m} were one equation.
+std::string non_si_unit(const std::vector<Token>& tokens, std::size_t open, std::size_t end) {
+  static const std::set<std::string, std::less<>> units{
+      "km", "cm", "mm", "um", "nm", "g",  "mg",  "t",   "h",   "hr",   "min", "ms",  "us",
+      "ns", "kN", "MN", "kJ", "MJ", "kW", "MW",  "mph", "kph", "kmh",  "deg", "L",   "mL",
+      "ft", "lb", "mi", "in", "yd", "eV", "keV", "MeV", "cal", "kcal", "bar", "atm", "rpm"};
+  std::vector<std::string> words{""};
+  for (std::size_t k = open + 1; k < end; ++k) {
+    const Token& t = tokens[k];
+    if (t.kind != Tok::letter || t.space_before) {
+      words.emplace_back();
+    }
+    if (t.kind == Tok::letter) {
+      words.back() += t.text;
+    }
+  }
+  const auto found = std::find_if(words.begin(), words.end(),
+                                  [](const std::string& w) { return units.contains(w); });
+  return found == words.end() ? std::string() : *found;
+}
+
+// Whether the last token of @p tokens that is not spacing is a number.
+bool after_number(const std::vector<Token>& tokens) {
+  for (std::size_t k = tokens.size(); k-- > 0;) {
+    if (tokens[k].kind != Tok::spacing) {
+      return tokens[k].kind == Tok::number;
+    }
+  }
+  return false;
+}
+
+// An equation's number written in parentheses: at the start of a row ((3.4) E_k + E_o = …, as the
+// paper prints its equations; (2)\quad & V = …) or after the equation with a space (J = m (v' -
+// v) \; (2)). Read as a factor, a slip by that factor passed. Refused: \tag{3.4} numbers an
+// equation. (A number after \quad at the end is the grammar's to refuse, with the same words.)
+void refuse_written_number(const Source& source, const std::vector<Token>& tokens) {
+  const std::size_t n = tokens.size();
+  const auto skip = [&](std::size_t k) {
+    while (k < n && (tokens[k].kind == Tok::spacing || is_char(tokens[k], '&'))) {
+      ++k;
+    }
+    return k;
+  };
+  // The token after a label's ')' when one opens at `open`: (2), (3.4), (1b).
+  const auto label_at = [&](std::size_t open) -> std::optional<std::size_t> {
+    if (open >= n || !is_char(tokens[open], '(')) {
+      return std::nullopt;
+    }
+    std::size_t k = skip(open + 1);
+    if (k >= n || tokens[k].kind != Tok::number) {
+      return std::nullopt;
+    }
+    ++k;
+    if (k < n && tokens[k].kind == Tok::letter && !tokens[k].space_before) {
+      ++k;
+    }
+    k = skip(k);
+    if (k >= n || !is_char(tokens[k], ')')) {
+      return std::nullopt;
+    }
+    return k + 1;
+  };
+  const auto operator_like = [](const Token& t) {
+    static const std::string_view before_term = "=+-/^_{([,&<>";
+    return (t.kind == Tok::character && t.text.size() == 1 &&
+            before_term.find(t.text[0]) != std::string_view::npos) ||
+           in(t, commands::relations) || is_command(t, "\\cdot") || is_command(t, "\\times") ||
+           is_command(t, "\\div");
+  };
+  const std::string message =
+      "expected \\tag{…} for the equation's number: a number in parentheses before an equation, "
+      "or after it with a space, is its number more often than a factor; write \\tag{2} for the "
+      "number, \\cdot (2) for the product";
+  const std::size_t first = skip(0);
+  if (const auto after = label_at(first)) {
+    const std::size_t next = skip(*after);
+    if (next < n && tokens[next].kind != Tok::end && !operator_like(tokens[next])) {
+      throw source.error(tokens[first].offset, message);
+    }
+  }
+  std::size_t last = n;
+  while (last > 0 && (tokens[last - 1].kind == Tok::spacing || tokens[last - 1].kind == Tok::end)) {
+    --last;
+  }
+  if (last == 0 || !is_char(tokens[last - 1], ')')) {
+    return;
+  }
+  for (std::size_t open = last - 1; open-- > 0 && last - open <= 6;) {
+    if (label_at(open) != last) {
+      continue;
+    }
+    std::size_t before = open;
+    while (before > 0 && tokens[before - 1].kind == Tok::spacing) {
+      --before;
+    }
+    const bool spaced = before < open || tokens[open].space_before;
+    if (before > 0 && spaced && !operator_like(tokens[before - 1])) {
+      throw source.error(tokens[open].offset, message);
+    }
+    return;
+  }
 }
 
 // row-steps := [arrow] equations {(arrow | annotation | ',') equations} [annotation]
@@ -145,6 +261,7 @@ bool disjunction(const std::vector<Token>& tokens, std::size_t open, std::size_t
 // annotation := text-command '{' words '}'   (between equations, or at the end of a row)
 // (a row cut here becomes several rows, each a step from the one before)
 std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
+  refuse_written_number(source, row.tokens);
   std::vector<RowTokens> pieces;
   RowTokens current;
   current.join = row.join;
@@ -205,12 +322,22 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
                                     tokens.end());
       if (holds_relation(current.tokens) && equation_follows(end, true)) {
         // an annotation between two equations, or at the end of the row
-        if (!blank_tokens(rest) && disjunction(tokens, open, end)) {
+        if (const std::string word = blank_tokens(rest) ? "" : disjunction(tokens, open, end);
+            !word.empty()) {
           throw source.error(t.offset,
-                             "expected an annotation that does not join two equations by 'or': "
-                             "each equation of a row is a step that must hold, not one of "
-                             "cases; write the cases as one equation (a product equal to zero) or "
-                             "each in a derivation of its own");
+                             "expected an annotation that does not join two equations by '" + word +
+                                 "': each equation of a row is a step that must hold, not one of "
+                                 "cases or a condition of another; write the cases as one "
+                                 "equation (a product equal to zero) or each in a derivation of "
+                                 "its own, and a condition with assume:");
+        }
+        if (const std::string unit =
+                after_number(current.tokens) ? non_si_unit(tokens, open, end) : "";
+            !unit.empty()) {
+          throw source.error(t.offset, "expected a number in SI units (m, kg, s) before " + t.text +
+                                           "{" + unit +
+                                           "}: a unit after a number is an annotation, which "
+                                           "this checker ignores; write the number in SI units");
         }
         next_piece(Join::row, first_offset(rest, t.offset));
         k = end - 1;
