@@ -44,7 +44,7 @@ const std::map<std::string, std::string, std::less<>>& titles() {
       {"friction.2", "Slip, stick and the end of compression"},
       {"friction.3", "Three laws of restitution: where each ends"},
       {"friction.4", "Does a law gain energy?"},
-      {"friction.5", "The rod of issue 17"},
+      {"friction.5", "A rod whose end slides on a rough floor"},
   };
   return t;
 }
