@@ -70,19 +70,22 @@ using Eigen::Index;
 // every node holds the better of its two children), so that the fastest is at the root and a
 // change of speeds costs a walk from their leaves to the root, each node above them settled once
 // (the contacts of two touching bodies share most of that walk). A contact not faster than the
-// threshold (no other can be chosen) takes part as slower than every other.
+// threshold (no other can be chosen) takes part as slower than every other, and so do the leaves
+// beyond the last contact.
 class Fastest {
  public:
-  Fastest(const Eigen::VectorXd& speeds, double threshold)
-      : threshold_(threshold), key_(static_cast<std::size_t>(speeds.size())) {
+  Fastest(const Eigen::VectorXd& speeds, double threshold) : threshold_(threshold) {
     while (leaves_ < speeds.size()) {
       leaves_ *= 2;
     }
-    node_.assign(2 * static_cast<std::size_t>(leaves_), none);
+    key_.assign(static_cast<std::size_t>(leaves_), slower);
+    node_.assign(2 * static_cast<std::size_t>(leaves_), 0);
     round_of_.assign(node_.size(), 0);
     path_.assign(static_cast<std::size_t>(leaves_), 0);
-    for (Index v = 0; v < speeds.size(); ++v) {
-      key_[static_cast<std::size_t>(v)] = key(speeds(v));
+    for (Index v = 0; v < leaves_; ++v) {
+      if (v < speeds.size()) {
+        key_[static_cast<std::size_t>(v)] = key(speeds(v));
+      }
       node_[static_cast<std::size_t>(leaves_ + v)] = v;
     }
     for (Index at = leaves_ - 1; at >= 1; --at) {
@@ -126,14 +129,13 @@ class Fastest {
   // no contact approaches.
   [[nodiscard]] std::optional<std::pair<Index, double>> top() const {
     const Index v = node_[1];
-    if (v == none || key_[static_cast<std::size_t>(v)] == slower) {
+    if (key_[static_cast<std::size_t>(v)] == slower) {
       return std::nullopt;
     }
     return std::pair{v, key_[static_cast<std::size_t>(v)]};
   }
 
  private:
-  static constexpr Index none = -1;
   static constexpr double slower = -std::numeric_limits<double>::infinity();
 
   // A speed as the tournament compares it: itself when faster than the threshold.
@@ -150,11 +152,9 @@ class Fastest {
   void settle(Index at) {
     const Index left = node_[static_cast<std::size_t>(2 * at)];
     const Index right = node_[static_cast<std::size_t>(2 * at + 1)];
-    node_[static_cast<std::size_t>(at)] =
-        right != none && (left == none || key_[static_cast<std::size_t>(right)] >
-                                              key_[static_cast<std::size_t>(left)])
-            ? right
-            : left;
+    const bool faster =
+        key_[static_cast<std::size_t>(right)] > key_[static_cast<std::size_t>(left)];
+    node_[static_cast<std::size_t>(at)] = faster ? right : left;
   }
 
   double threshold_;
@@ -171,9 +171,30 @@ class Fastest {
 
 }  // namespace serial_detail
 
-// The serial loop, once: the fastest-approaching contact collides (collide(v, state) changes the
-// state and returns the normal impulse, or nothing when a number overflowed), then the contacts
-// of its two bodies are measured again, until none approaches or the bound is reached.
+namespace {
+
+// The paper's single-contact formula at contact v: the 1×1 system of the two bodies' shares, and
+// its impulse applied to them; nothing when a number overflowed.
+std::optional<double> paper_collision(const multipoint::Configuration& configuration, Index v,
+                                      std::vector<Body>& state) {
+  const Contact& c = configuration.contacts()[static_cast<std::size_t>(v)];
+  const std::span<const Elasticity> elasticities = configuration.elasticities();
+  const ScalarSolution one = solve(
+      multipoint::share(state[c.bumper], Touch{v, c.normal, c.point}, elasticities[c.bumper]) +
+      multipoint::share(state[c.wedge], Touch{v, -c.normal, c.point}, elasticities[c.wedge]));
+  if (one.status != SolveStatus::success || !std::isfinite(one.Fdt)) {
+    return std::nullopt;
+  }
+  configuration.apply(state, v, one.Fdt);  // -n Fdt on the bumper, +n Fdt on the wedge
+  return one.Fdt;
+}
+
+}  // namespace
+
+// The serial loop, once: the fastest-approaching contact collides (collide(v, state), or the
+// paper's formula when there is none, changes the state and returns the normal impulse, or
+// nothing when a number overflowed), then the contacts of its two bodies are measured again,
+// until none approaches or the bound is reached.
 struct SerialCollisions::State {
   State(const multipoint::Configuration& c, const SerialOptions& options, Collide how)
       : configuration(c), collide(std::move(how)) {
@@ -182,6 +203,9 @@ struct SerialCollisions::State {
     const std::span<const Contact> contacts = configuration.contacts();
     const auto n = static_cast<Index>(contacts.size());
     r.after.assign(bodies.begin(), bodies.end());
+    for (const Body& body : bodies) {
+      motions.push_back(multipoint::motion(body));
+    }
     r.Fdt = Eigen::VectorXd::Zero(n);
     SerialDiagnostics& d = r.diagnostics;
     d.max_collisions = options.max_collisions > 0
@@ -227,19 +251,22 @@ struct SerialCollisions::State {
   bool collide_next() {
     const Index v = next->first;
     const Contact& c = configuration.contacts()[static_cast<std::size_t>(v)];
-    const std::optional<double> Fdt = collide(v, r.after);
+    const std::optional<double> Fdt =
+        collide ? collide(v, r.after) : paper_collision(configuration, v, r.after);
     if (!Fdt) {
       r.diagnostics.status = SerialStatus::non_finite;
       return false;
     }
     r.Fdt(v) += *Fdt;
     r.diagnostics.order.push_back(v);
+    motions[c.bumper] = multipoint::motion(r.after[c.bumper]);
+    motions[c.wedge] = multipoint::motion(r.after[c.wedge]);
     bool finite = true;
     fastest->begin();
     for (const std::size_t body : {c.bumper, c.wedge}) {
       for (const Touch& t : configuration.touches(body)) {
         if (fastest->unset(t.contact)) {  // (a contact between the two is in both lists)
-          const double changed = configuration.approach(r.after, t.contact);
+          const double changed = configuration.approach(motions, t.contact);
           finite = finite && std::isfinite(changed);
           fastest->set(t.contact, changed);
         }
@@ -255,28 +282,14 @@ struct SerialCollisions::State {
   const multipoint::Configuration& configuration;
   Collide collide;
   SerialResolution r;
+  // Each body's motion in r.after, which the approach speeds measure: a collision changes two.
+  std::vector<multipoint::Motion> motions;
   std::optional<serial_detail::Fastest> fastest;
   std::optional<std::pair<Index, double>> next;  // the contact to collide next, its speed
   bool ended = false;
 };
 
 namespace {
-
-// The paper's single-contact formula at contact v: the 1×1 system of the two bodies' shares.
-SerialCollisions::Collide paper_collision(const multipoint::Configuration& configuration) {
-  return [&configuration](Index v, std::vector<Body>& state) -> std::optional<double> {
-    const Contact& c = configuration.contacts()[static_cast<std::size_t>(v)];
-    const std::span<const Elasticity> elasticities = configuration.elasticities();
-    const ScalarSolution one = solve(
-        multipoint::share(state[c.bumper], Touch{v, c.normal, c.point}, elasticities[c.bumper]) +
-        multipoint::share(state[c.wedge], Touch{v, -c.normal, c.point}, elasticities[c.wedge]));
-    if (one.status != SolveStatus::success || !std::isfinite(one.Fdt)) {
-      return std::nullopt;
-    }
-    configuration.apply(state, v, one.Fdt);  // -n Fdt on the bumper, +n Fdt on the wedge
-    return one.Fdt;
-  };
-}
 
 // Every collision at once.
 SerialResolution run_serial(const multipoint::Configuration& configuration,
@@ -290,7 +303,7 @@ SerialResolution run_serial(const multipoint::Configuration& configuration,
 
 SerialCollisions::SerialCollisions(const multipoint::Configuration& configuration,
                                    const SerialOptions& options)
-    : SerialCollisions(configuration, options, paper_collision(configuration)) {}
+    : SerialCollisions(configuration, options, Collide{}) {}
 
 SerialCollisions::SerialCollisions(const multipoint::Configuration& configuration,
                                    const SerialOptions& options, Collide collide)
@@ -338,7 +351,7 @@ SerialResolution SerialCollisions::take() && {
 
 SerialResolution resolve_serial(const multipoint::Configuration& configuration,
                                 const SerialOptions& options) {
-  return run_serial(configuration, options, paper_collision(configuration));
+  return run_serial(configuration, options, SerialCollisions::Collide{});
 }
 
 SerialResolution resolve_serial(std::span<const Body> bodies,

@@ -65,22 +65,12 @@ ContactSystem assemble_checked(std::span<const Body> bodies,
                                const std::vector<std::vector<Touch>>& grouped, std::size_t contacts,
                                Storage storage);
 
-double approach_at(std::span<const Body> state, const Contact& c) {
-  return point_velocity(state[c.bumper], c.point).dot(c.normal) +
-         point_velocity(state[c.wedge], c.point).dot(-c.normal);
-}
-
 Eigen::VectorXd approach_checked(std::span<const Body> state, std::span<const Contact> contacts) {
   Eigen::VectorXd speeds(static_cast<Eigen::Index>(contacts.size()));
   for (std::size_t v = 0; v < contacts.size(); ++v) {
-    speeds(static_cast<Eigen::Index>(v)) = approach_at(state, contacts[v]);
+    speeds(static_cast<Eigen::Index>(v)) = detail::approach_at(state, contacts[v]);
   }
   return speeds;
-}
-
-void apply_at(std::vector<Body>& state, const Contact& c, Eigen::Index v, double magnitude) {
-  apply_impulse(state[c.bumper], Touch{v, c.normal, c.point}, magnitude);  // -n Fdt on the bumper
-  apply_impulse(state[c.wedge], Touch{v, -c.normal, c.point}, magnitude);  // +n Fdt on the wedge
 }
 
 std::vector<Body> after_checked(std::span<const Body> bodies, std::span<const Contact> contacts,
@@ -88,7 +78,7 @@ std::vector<Body> after_checked(std::span<const Body> bodies, std::span<const Co
   std::vector<Body> after(bodies.begin(), bodies.end());
   for (std::size_t v = 0; v < contacts.size(); ++v) {
     const auto index = static_cast<Eigen::Index>(v);
-    apply_at(after, contacts[v], index, Fdt(index));
+    detail::apply_at(after, contacts[v], index, Fdt(index));
   }
   return after;
 }
@@ -240,14 +230,6 @@ ContactSystem assemble_checked(std::span<const Body> bodies,
 }
 }  // namespace
 
-Eigen::Vector2d point_velocity(const Body& body, const Eigen::Vector2d& point) {
-  return std::visit(
-      Overloaded{[](const PointMass& b) { return material_2d::velocity(b); },
-                 [&](const RigidBody& b) { return rigid_2d::point_velocity(b, point); },
-                 [](const StaticBody&) -> Eigen::Vector2d { return Eigen::Vector2d::Zero(); }},
-      body);
-}
-
 Eigen::VectorXd approach(std::span<const Body> bodies, std::span<const Contact> contacts) {
   validate(bodies, contacts);
   return approach_checked(bodies, contacts);
@@ -258,27 +240,6 @@ std::vector<Body> apply_impulses(std::span<const Body> bodies, std::span<const C
   validate(bodies, contacts);
   require_one_per_contact(contacts, Fdt);
   return after_checked(bodies, contacts, Fdt);
-}
-
-ScalarContribution share(const Body& body, const Touch& touch, Elasticity elasticity) {
-  return std::visit(Overloaded{[&](const PointMass& b) {
-                                 return material_2d::detail::share(b, touch.normal, elasticity);
-                               },
-                               [&](const RigidBody& b) {
-                                 return rigid_2d::detail::share(b, touch.point, touch.normal,
-                                                                elasticity);
-                               },
-                               [](const StaticBody&) { return ScalarContribution{}; }},
-                    body);
-}
-
-void apply_impulse(Body& body, const Touch& touch, double Fdt) {
-  std::visit(Overloaded{[&](PointMass& b) { b = material_2d::apply_impulse(b, touch.normal, Fdt); },
-                        [&](RigidBody& b) {
-                          b = rigid_2d::apply_impulse(b, touch.point, touch.normal, Fdt);
-                        },
-                        [](StaticBody&) {}},
-             body);
 }
 
 double kinetic_energy(const Body& body) {
@@ -350,19 +311,9 @@ Eigen::VectorXd Configuration::approach(std::span<const Body> state) const {
   return approach_checked(state, contacts_);
 }
 
-double Configuration::approach(std::span<const Body> state, Eigen::Index v) const {
-  assert(state.size() == bodies_.size());
-  return approach_at(state, contacts_[static_cast<std::size_t>(v)]);
-}
-
 std::vector<Body> Configuration::after(const Eigen::Ref<const Eigen::VectorXd>& Fdt) const {
   require_one_per_contact(contacts_, Fdt);
   return after_checked(bodies_, contacts_, Fdt);
-}
-
-void Configuration::apply(std::vector<Body>& state, Eigen::Index v, double Fdt) const {
-  assert(state.size() == bodies_.size());
-  apply_at(state, contacts_[static_cast<std::size_t>(v)], v, Fdt);
 }
 
 }  // namespace impulse::multipoint

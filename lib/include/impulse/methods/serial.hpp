@@ -119,7 +119,7 @@ class SerialCollisions {
   explicit SerialCollisions(const multipoint::Configuration& configuration,
                             const SerialOptions& options = {});
   /// @brief The configuration's serial collisions, each by @p collide (the exact rule with
-  /// friction, say).
+  /// friction, say; an empty one is the paper's formula).
   /// @param configuration the bodies, elasticities and contacts
   /// @param options the bound and the tolerance (checked: InvalidInput)
   /// @param collide one collision

@@ -63,6 +63,15 @@ inline void validate(const RigidBody& body, const char* name = "body");
 [[nodiscard]] inline Eigen::Vector2d point_velocity(const RigidBody& body,
                                                     const Eigen::Vector2d& point);
 
+/// @brief Section 3.2 with the motion known (a body's ω and the velocity of its origin, kept to
+/// measure many of its points): @f$ \omega[-r_y, r_x] + \vec{v} @f$.
+/// @param omega the angular velocity L/I
+/// @param velocity the velocity of the origin, p/m
+/// @param r the point relative to the origin
+/// @return the point's velocity
+[[nodiscard]] inline Eigen::Vector2d point_velocity(double omega, const Eigen::Vector2d& velocity,
+                                                    const Eigen::Vector2d& r);
+
 /// @brief The point velocity cast on the body's outward normal, positive towards the other body.
 /// @param body the body
 /// @param point the contact point in world coordinates
@@ -174,9 +183,13 @@ inline double angular_momentum_about_origin(const RigidBody& body) {
   return body.L + det(body.position, body.p);
 }
 
+inline Eigen::Vector2d point_velocity(double omega, const Eigen::Vector2d& velocity,
+                                      const Eigen::Vector2d& r) {
+  return omega * quarter_turn(r) + velocity;  // section 3.2
+}
+
 inline Eigen::Vector2d point_velocity(const RigidBody& body, const Eigen::Vector2d& point) {
-  const Eigen::Vector2d r = point - body.position;
-  return angular_velocity(body) * quarter_turn(r) + velocity(body);  // section 3.2
+  return point_velocity(angular_velocity(body), velocity(body), point - body.position);
 }
 
 inline double normal_velocity(const RigidBody& body, const Eigen::Vector2d& point,
