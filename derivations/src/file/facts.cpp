@@ -701,90 +701,100 @@ bool Facts::satisfied(const ex& symbol, const GiNaC::numeric& value) const {
   return ok;
 }
 
-bool Facts::satisfied(const GiNaC::exmap& point) const {
-  const auto judged = [&](const ex& e, const GiNaC::exmap& at) -> std::optional<GiNaC::numeric> {
-    const ex value = GiNaC::evalf(e.subs(at));
-    if (!is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real()) {
-      return std::nullopt;
+namespace {
+
+// The value of @p e at @p at, when it is a real number there.
+std::optional<GiNaC::numeric> judged(const ex& e, const GiNaC::exmap& at) {
+  const ex value = GiNaC::evalf(e.subs(at));
+  if (!is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real()) {
+    return std::nullopt;
+  }
+  return GiNaC::ex_to<GiNaC::numeric>(value);
+}
+
+}  // namespace
+
+bool Facts::relations_hold(const GiNaC::exmap& at, bool all_judged) const {
+  for (const auto& [r, sign] : relations_) {
+    const auto v = judged(r, at);
+    if (!v) {
+      if (all_judged) {
+        return false;
+      }
+      continue;
     }
-    return GiNaC::ex_to<GiNaC::numeric>(value);
-  };
+    const bool ok = sign == Sign::positive      ? v->is_positive()
+                    : sign == Sign::negative    ? v->is_negative()
+                    : sign == Sign::nonnegative ? !v->is_negative()
+                    : sign == Sign::nonpositive ? !v->is_positive()
+                    : sign == Sign::nonzero     ? !v->is_zero()
+                                                : true;
+    if (!ok) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool Facts::extends(const GiNaC::exmap& point) const {
+  GiNaC::lst missing;
+  for (const auto& [r, sign] : relations_) {
+    if (judged(r, point)) {
+      continue;
+    }
+    for (GiNaC::const_preorder_iterator it = r.preorder_begin(); it != r.preorder_end(); ++it) {
+      if (is_a<GiNaC::symbol>(*it) && point.find(*it) == point.end() &&
+          std::find(missing.begin(), missing.end(), *it) == missing.end()) {
+        missing.append(*it);
+      }
+    }
+  }
+  if (missing.nops() == 0) {
+    return true;
+  }
+  if (missing.nops() > 2) {
+    return false;  // not searched: the point cannot be vouched for
+  }
+  // A few values each, between and beyond the usual magnitudes.
+  static const std::vector<GiNaC::numeric> tried{0,
+                                                 1,
+                                                 -1,
+                                                 2,
+                                                 -2,
+                                                 GiNaC::numeric(1, 2),
+                                                 GiNaC::numeric(-1, 2),
+                                                 5,
+                                                 -5,
+                                                 20,
+                                                 -20,
+                                                 GiNaC::numeric(1, 10),
+                                                 GiNaC::numeric(-1, 10),
+                                                 100,
+                                                 -100};
+  const std::size_t second = missing.nops() == 2 ? tried.size() : 1;
+  for (std::size_t i = 0; i < tried.size(); ++i) {
+    for (std::size_t j = 0; j < second; ++j) {
+      GiNaC::exmap at = point;
+      at[missing.op(0)] = tried[i];
+      bool own = satisfied(missing.op(0), tried[i]);
+      if (missing.nops() == 2) {
+        at[missing.op(1)] = tried[j];
+        own = own && satisfied(missing.op(1), tried[j]);
+      }
+      if (own && relations_hold(at, true)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+bool Facts::satisfied(const GiNaC::exmap& point) const {
   // Every relation holds at the point; a relation in symbols the point does not give (b of
   // a < b < c, where a counterexample names a and c) must hold for some values of them, with
   // their own facts: else a = 1, c = -1 passed for a counterexample.
-  const auto relations_hold = [&](const GiNaC::exmap& at, bool all_judged) {
-    for (const auto& [r, sign] : relations_) {
-      const auto v = judged(r, at);
-      if (!v) {
-        if (all_judged) {
-          return false;
-        }
-        continue;
-      }
-      const bool ok = sign == Sign::positive      ? v->is_positive()
-                      : sign == Sign::negative    ? v->is_negative()
-                      : sign == Sign::nonnegative ? !v->is_negative()
-                      : sign == Sign::nonpositive ? !v->is_positive()
-                      : sign == Sign::nonzero     ? !v->is_zero()
-                                                  : true;
-      if (!ok) {
-        return false;
-      }
-    }
-    return true;
-  };
-  if (!relations_hold(point, false)) {
+  if (!relations_hold(point, false) || !extends(point)) {
     return false;
-  }
-  GiNaC::lst missing;
-  for (const auto& [r, sign] : relations_) {
-    if (!judged(r, point)) {
-      for (GiNaC::const_preorder_iterator it = r.preorder_begin(); it != r.preorder_end(); ++it) {
-        if (is_a<GiNaC::symbol>(*it) && point.find(*it) == point.end() &&
-            std::find(missing.begin(), missing.end(), *it) == missing.end()) {
-          missing.append(*it);
-        }
-      }
-    }
-  }
-  if (missing.nops() > 0) {
-    // A few values each, for at most two symbols: between and beyond the usual magnitudes.
-    static const std::vector<GiNaC::numeric> tried{0,
-                                                   1,
-                                                   -1,
-                                                   2,
-                                                   -2,
-                                                   GiNaC::numeric(1, 2),
-                                                   -GiNaC::numeric(1, 2),
-                                                   5,
-                                                   -5,
-                                                   20,
-                                                   -20,
-                                                   GiNaC::numeric(1, 10),
-                                                   -GiNaC::numeric(1, 10),
-                                                   100,
-                                                   -100};
-    if (missing.nops() > 2) {
-      return false;  // not searched: the point cannot be vouched for
-    }
-    bool found = false;
-    for (std::size_t i = 0; i < tried.size() && !found; ++i) {
-      for (std::size_t j = 0; j < (missing.nops() == 2 ? tried.size() : 1) && !found; ++j) {
-        GiNaC::exmap at = point;
-        at[missing.op(0)] = tried[i];
-        if (missing.nops() == 2) {
-          at[missing.op(1)] = tried[j];
-        }
-        bool own = true;
-        for (std::size_t k = 0; k < missing.nops(); ++k) {
-          own = own && satisfied(missing.op(k), GiNaC::ex_to<GiNaC::numeric>(at[missing.op(k)]));
-        }
-        found = own && relations_hold(at, true);
-      }
-    }
-    if (!found) {
-      return false;
-    }
   }
   for (const ex& q : equalities_) {
     const ex value = GiNaC::normal(q.subs(point));

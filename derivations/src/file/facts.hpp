@@ -87,6 +87,12 @@ class Facts {
   [[nodiscard]] Sign of_relation(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_range(const GiNaC::ex& e) const;
   [[nodiscard]] Sign through_relation(const GiNaC::ex& x) const;
+  /// Whether every relation that can be judged at @p at holds (and, with @p all_judged, every
+  /// relation can be).
+  [[nodiscard]] bool relations_hold(const GiNaC::exmap& at, bool all_judged) const;
+  /// Whether values of the symbols of the relations that @p point does not give (at most two)
+  /// make every relation hold with it.
+  [[nodiscard]] bool extends(const GiNaC::exmap& point) const;
 
   std::map<GiNaC::ex, Sign, GiNaC::ex_is_less> signs_;
   std::vector<std::pair<GiNaC::ex, Sign>> relations_;
