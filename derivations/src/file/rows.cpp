@@ -122,17 +122,10 @@ bool words(const std::vector<Token>& tokens, std::size_t open, std::size_t end) 
   return tokens[end - 1].space_before;
 }
 
-// The word of a \text{…} (its '{' at open, end after its '}') that makes the equations it stands
-// between cases, one of which holds ("or", "otherwise"), or the next one a condition of the one
-// before ("if", "for", "when", "unless"), or denies it ("not"): read as two equations that both
-// hold, v = 0 \text{ otherwise } v = 2u gave u = 0. Empty when there is none.
-std::string disjunction(const std::vector<Token>& tokens, std::size_t open, std::size_t end) {
-  static const std::set<std::string, std::less<>> conditional{
-      "or",      "either",   "otherwise",    "else",     "unless",   "if",      "iff",    "only",
-      "when",    "whenever", "while",        "whereas",  "for",      "at",      "except", "not",
-      "nor",     "neither",  "respectively", "provided", "assuming", "suppose", "case",   "cases",
-      "instead", "until",    "before",       "after",    "oder",     "sonst",   "wenn",   "falls",
-      "ou",      "sinon",    "si",           "sino",     "cuando"};
+// The words of a \text{…} (its '{' at open, end after its '}'), as written, and the first of them
+// that @p set holds, or empty.
+std::string word_of(const std::vector<Token>& tokens, std::size_t open, std::size_t end,
+                    const std::set<std::string, std::less<>>& set, bool lower) {
   std::vector<std::string> words{""};
   for (std::size_t k = open + 1; k < end; ++k) {
     const Token& t = tokens[k];
@@ -141,36 +134,38 @@ std::string disjunction(const std::vector<Token>& tokens, std::size_t open, std:
     }
     if (t.kind == Tok::letter) {
       for (const char c : t.text) {
-        words.back() += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        words.back() += lower ? static_cast<char>(std::tolower(static_cast<unsigned char>(c))) : c;
       }
     }
   }
   const auto found = std::find_if(words.begin(), words.end(),
-                                  [](const std::string& w) { return conditional.contains(w); });
+                                  [&](const std::string& w) { return set.contains(w); });
   return found == words.end() ? std::string() : *found;
 }
 
-// The word of a \text{…} (its '{' at open, end after its '}') that is a unit outside SI's
-// coherent ones (km, h, g, cm), or empty. A unit after a number is an annotation, ignored: the
-// number must then be in SI units, or L = 2\,\text{km} and L = 2\,\text{m} were one equation.
+// The word of a \text{…} that makes the equations it stands between cases, one of which holds
+// ("or", "otherwise"), or the next one a condition of the one before ("if", "for", "when",
+// "unless"), or denies it ("not"): read as two equations that both hold, v = 0 \text{ otherwise }
+// v = 2u gave u = 0. Empty when there is none.
+std::string disjunction(const std::vector<Token>& tokens, std::size_t open, std::size_t end) {
+  static const std::set<std::string, std::less<>> conditional{
+      "or",      "either",   "otherwise",    "else",     "unless",   "if",      "iff",    "only",
+      "when",    "whenever", "while",        "whereas",  "for",      "at",      "except", "not",
+      "nor",     "neither",  "respectively", "provided", "assuming", "suppose", "case",   "cases",
+      "instead", "until",    "before",       "after",    "oder",     "sonst",   "wenn",   "falls",
+      "ou",      "sinon",    "si",           "sino",     "cuando"};
+  return word_of(tokens, open, end, conditional, true);
+}
+
+// The word of a \text{…} that is a unit outside SI's coherent ones (km, h, g, cm), or empty. A
+// unit after a number is an annotation, ignored: the number must then be in SI units, or
+// L = 2\,\text{km} and L = 2\,\text{m} were one equation.
 std::string non_si_unit(const std::vector<Token>& tokens, std::size_t open, std::size_t end) {
   static const std::set<std::string, std::less<>> units{
       "km", "cm", "mm", "um", "nm", "g",  "mg",  "t",   "h",   "hr",   "min", "ms",  "us",
       "ns", "kN", "MN", "kJ", "MJ", "kW", "MW",  "mph", "kph", "kmh",  "deg", "L",   "mL",
       "ft", "lb", "mi", "in", "yd", "eV", "keV", "MeV", "cal", "kcal", "bar", "atm", "rpm"};
-  std::vector<std::string> words{""};
-  for (std::size_t k = open + 1; k < end; ++k) {
-    const Token& t = tokens[k];
-    if (t.kind != Tok::letter || t.space_before) {
-      words.emplace_back();
-    }
-    if (t.kind == Tok::letter) {
-      words.back() += t.text;
-    }
-  }
-  const auto found = std::find_if(words.begin(), words.end(),
-                                  [](const std::string& w) { return units.contains(w); });
-  return found == words.end() ? std::string() : *found;
+  return word_of(tokens, open, end, units, false);
 }
 
 // Whether the last token of @p tokens that is not spacing is a number.
