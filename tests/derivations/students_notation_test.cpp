@@ -743,3 +743,13 @@ TEST_CASE("A counterexample satisfies every fact, and facts hold no prose",
   // x^0 = 1 only where x ≠ 0 (0^0 is not defined).
   CHECK(verdicts("$$a = 1$$\n\n$$a = x^{0}$$").back() == "follows-if");
 }
+
+TEST_CASE("The ballistic pendulum's speed from its height", "[derivations][students-notation]") {
+  // V² = 2 g l (1 - cos θ) and V > 0 give V = √(2 g l (1 - cos θ)): the root of the square of a
+  // positive V. It was undecided: solved for g and over one denominator, the root held
+  // √(τ²/(1 + τ²)) √(1 + τ²) - |τ| (τ the tangent of θ/2), which the facts were not applied to
+  // again. A slip (the 2 dropped) still fails.
+  const std::string premise = "assume: V, g, l > 0\n\n$$V^2 = 2 g l (1 - \\cos\\theta)$$\n\n";
+  CHECK(verdicts(premise + "$$V = \\sqrt{2 g l (1 - \\cos\\theta)}$$").back() == "follows");
+  CHECK(verdicts(premise + "$$V = \\sqrt{g l (1 - \\cos\\theta)}$$").back() == "does-not-follow");
+}

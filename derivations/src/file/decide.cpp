@@ -586,7 +586,12 @@ class Decider {
     if (expanded_terms(frame.target) > budget_.terms) {
       return unknown(frame, "the step is too large to expand exactly");
     }
-    const ex target = numerator(frame.target);
+    ex target = numerator(frame.target);
+    if (!target.is_zero() && needs_facts(target)) {
+      // Over one denominator the roots may hold new products (√(2 g (1 - (1 - τ²)/(1 + τ²)))
+      // became √(τ²/(1 + τ²))): the facts once more.
+      target = numerator(by_facts(target, facts_));
+    }
     if (target.is_zero()) {
       Found found;
       found.outcome = Implied::holds;
