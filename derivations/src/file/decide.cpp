@@ -544,6 +544,17 @@ ex numerator(const ex& e) {
   return safe_numerator(e);
 }
 
+// Whether a root (a power to a fraction) stands in @p e.
+bool has_root(const ex& e) {
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (is_a<GiNaC::power>(*it) && is_a<numeric>(it->op(1)) &&
+        !GiNaC::ex_to<numeric>(it->op(1)).is_integer()) {
+      return true;
+    }
+  }
+  return false;
+}
+
 bool same_up_to_constant(const ex& a, const ex& b) {
   const ex ratio = GiNaC::normal(a / b);
   return is_a<numeric>(ratio);
@@ -587,7 +598,7 @@ class Decider {
       return unknown(frame, "the step is too large to expand exactly");
     }
     ex target = numerator(frame.target);
-    if (!target.is_zero() && needs_facts(target)) {
+    if (!target.is_zero() && has_root(target) && needs_facts(target)) {
       // Over one denominator the roots may hold new products (√(2 g (1 - (1 - τ²)/(1 + τ²)))
       // became √(τ²/(1 + τ²))): the facts once more.
       target = numerator(by_facts(target, facts_));
