@@ -296,7 +296,16 @@ TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
   CHECK(verdicts("function: p\n\n$$p(T) - p(0) = J$$\n\n$$p(T) = p(0) + J$$") ==
         std::vector<std::string>{"premise", "follows"});
   CHECK(verdicts("function: p\n\n$$p(T) - p(0) = J$$\n\n$$p(T) = p(0) - J$$") == fails);
-  CHECK(verdicts("function: F\n\n$$F(T) = \\frac{2J}{T}$$\n\n$$F(T) = \\frac{J}{T}$$") == fails);
+  CHECK(verdicts("function: F(t)\n\n$$F(T) = \\frac{2J}{T}$$\n\n$$F(T) = \\frac{J}{T}$$") == fails);
+  // Declared without its variable (function: F, a function of t), F(x) = 3x in given: is F's
+  // rule for every x to one reader and its value at one x to another: read as the value, the
+  // step F(1) = 3 failed (x = 1/3, F = 1 everywhere), though the writer meant the rule. Refused,
+  // at the equation's first character; declared, each reading is checked as declared.
+  refused("function: F\n\ngiven:\n\n$$F(x) = 3x$$\n\n$$F(1) = 3$$", 5, 3, "function: F(x)");
+  refused("function: F\n\n$$F(T) = \\frac{2J}{T}$$", 3, 3, "its value at one T");
+  CHECK(verdicts("function: F(x)\n\ngiven:\n\n$$F(x) = 3x$$\n\n$$F(1) = 3$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
+  CHECK(verdicts("function: F(t)\n\ngiven:\n\n$$F(x) = 3x$$\n\n$$F(1) = 3$$") == fails);
   // ∫_0^T a t dt = a T^2 / 2 (hand: the antiderivative a t^2 / 2 at T minus at 0).
   CHECK(verdicts("$$W = \\int_0^T a t\\,dt$$\n\n$$W = \\frac{a T^2}{2}$$") ==
         std::vector<std::string>{"premise", "follows"});
@@ -704,6 +713,17 @@ TEST_CASE("Labels, mixed numbers, units and notations that could mean two things
   const std::string f = "function: f\n\n$$f(t) = t^2$$\n\n";
   refused(f + "$$f^2(t) = t^5$$", 5, 7, "(f(t))^2");
   refused(f + "$$f^{-1}(t) = 1$$", 5, 10, "inverse function");
+  // - f[2] of a declared f: f(t) times 2 (2t² followed), or f at 2? Brackets after a derivative
+  //   likewise;
+  refused(f + "$$f[2] = 2 t^2$$", 5, 5, "parentheses for f's value");
+  refused(x + "$$\\frac{dx}{dt}[2] = 6t^2$$", 5, 17, "derivative at 2");
+  // - d(x^2) over dt was d times x² over a symbol dt: the true step d(x²)/dt = 6t⁵ was red (hand:
+  //   d(x²)/dt = 2 x ẋ = 2 t³ · 3t²); now the derivative of x², as d x^2 is, and a slip in it
+  //   (x ẋ = 3t⁵, the 2 dropped) still fails;
+  CHECK(verdicts(x + "$$\\frac{d(x^2)}{dt} = x \\frac{d(x)}{dt}$$").back() == "does-not-follow");
+  CHECK(verdicts(x + "$$\\frac{d(x^2)}{dt} = 6t^5$$").back() != "does-not-follow");
+  CHECK(verdicts(x + "$$\\frac{d(t x)}{dt} = 4t^3$$").back() != "does-not-follow");
+  CHECK(verdicts(x + "$$\\frac{d(t x)}{dt} = t^3$$").back() == "does-not-follow");
   // - two integrals one after the other: the inner took ds (J = s T followed where T²/2);
   refused("$$J = \\int_0^T \\int_0^s 1\\,dt\\,ds$$\n\n$$J = s T$$", 1, 16, "inner integral");
   // - an equation's number in parentheses before the equation, or after it with a space, as the

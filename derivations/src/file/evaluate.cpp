@@ -581,6 +581,14 @@ class Evaluator {
                   "expected \\cdot or \\left. … \\right|_{t=2} after a derivative: "
                   "\\frac{dx}{dt}(2) could be the derivative at 2 or the derivative times 2");
     }
+    if (before.kind == NodeKind::symbol && s_.function(before.symbol) != nullptr) {
+      // f[2] of a declared f: read as f(t) times 2, f(t) = t^2 gave f[2] = 2 t^2.
+      const std::string f = before.symbol.latex();
+      throw error(group.offset,
+                  "expected parentheses for " + f + "'s value, or \\cdot for a product: " + f +
+                      " before brackets could be its value at what they hold or " + f +
+                      "(t) times it; write " + f + "(2) or " + f + "(t) \\cdot 2");
+    }
   }
 
   Value product(const Node& n) {

@@ -95,6 +95,7 @@ Node Grammar::bracket(std::size_t depth) {
       evaluated.enclosed = true;
       return evaluated;
     }
+    first.enclosed = true;
     return first;
   }
   if (is_char(open, '|')) {
@@ -262,7 +263,7 @@ Node Grammar::delimited(std::size_t depth) {
     n.children.push_back(std::move(first));
     return n;
   }
-  first.enclosed = closer == ")";
+  first.enclosed = closer == ")" || closer == "]";
   return first;
 }
 
@@ -421,8 +422,9 @@ Node Grammar::fraction(std::size_t depth) {
 }
 
 // derivative := frac-cmd '{' d ['^' n] [operand] '}' '{' d variable ['^' n] '}' [factor]
-// (d is the letter d or \mathrm{d}; dt is d and t; without an operand in the numerator, the
-// factor after the fraction is differentiated: \frac{d}{dt}(…)). A fraction whose denominator is
+// (d is the letter d or \mathrm{d}; dt is d and t; the operand may stand in parentheses, d(x^2);
+// without an operand in the numerator, the factor after the fraction is differentiated:
+// \frac{d}{dt}(…)). A fraction whose denominator is
 // not d and a variable is a fraction.
 std::optional<Node> Grammar::as_derivative(const Node& top, const Node& bottom, std::size_t offset,
                                            std::size_t depth) {
@@ -487,6 +489,13 @@ std::optional<Node> Grammar::as_derivative(const Node& top, const Node& bottom, 
     rest.ops[0] = ' ';
     rest.offset = rest.children[0].offset;
     operand = rest.children.size() == 1 ? std::move(rest.children[0]) : std::move(rest);
+  } else if (top.kind == NodeKind::call && top.children.size() == 2 &&
+             is_plain_d(top.children[0])) {
+    // d(x^2) over dt: the derivative of x^2 (read as d times x^2 over a differential dt, the
+    // step d(x^2)/dt = x d(x)/dt followed from x = t^3, where the left side is 6 t^5).
+    top_order = 1;
+    operand = top.children[1];
+    operand->enclosed = true;
   } else {
     // d over a differential, the numerator no differential: a plain fraction (F\,dt over dt)
     return std::nullopt;

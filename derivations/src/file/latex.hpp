@@ -104,7 +104,7 @@ struct Node {
   SymbolName symbol;  ///< symbol
   std::vector<Node> children;
   std::string ops;  ///< sum and product: one operator character per child
-  /// Written in delimiters of its own: a group ( … ), or an evaluation bar on brackets
+  /// Written in delimiters of its own: a group ( … ) or [ … ], or an evaluation bar on brackets
   /// (\\left[ … \\right]_a^b, \\left. … \\right|_a^b)
   bool enclosed = false;
   /// A call written with a space before its parenthesis (m_1 (v_1')^2): a product when the name is

@@ -193,18 +193,23 @@ void Symbols::note_quantities(const Node& node) {
 }
 
 bool Symbols::is_variable_of(unsigned serial, const GiNaC::ex& symbol) const {
+  const FunctionDeclaration* f = function_of(serial);
+  if (f == nullptr) {
+    return false;
+  }
+  return std::any_of(f->variables.begin(), f->variables.end(), [&](const SymbolName& v) {
+    const auto found = symbols_.find(resolve(v).latex());
+    return found != symbols_.end() && found->second.is_equal(symbol);
+  });
+}
+
+const FunctionDeclaration* Symbols::function_of(unsigned serial) const {
   for (const auto& [key, f] : functions_) {
-    if (f.serial != serial) {
-      continue;
-    }
-    for (const SymbolName& v : f.variables) {
-      const auto found = symbols_.find(resolve(v).latex());
-      if (found != symbols_.end() && found->second.is_equal(symbol)) {
-        return true;
-      }
+    if (f.serial == serial) {
+      return &f;
     }
   }
-  return false;
+  return nullptr;
 }
 
 bool Symbols::is_quantity(const SymbolName& name) const {
@@ -459,7 +464,8 @@ void Symbols::declare_function(const SymbolName& written, std::vector<SymbolName
     throw error(offset,
                 "expected " + name.latex() + " to be declared a function before a let: defines it");
   }
-  if (variables.empty()) {
+  const bool written_variables = !variables.empty();
+  if (!written_variables) {
     variables.push_back(SymbolName{"t", "", 0, false});
   }
   for (const SymbolName& v : variables) {
@@ -470,6 +476,7 @@ void Symbols::declare_function(const SymbolName& written, std::vector<SymbolName
   FunctionDeclaration f;
   f.name = name;
   f.variables = std::move(variables);
+  f.variable_written = written_variables;
   f.serial =
       abstract_function(name.plain(), name.latex(), static_cast<unsigned>(f.variables.size()));
   functions_[name.latex()] = std::move(f);

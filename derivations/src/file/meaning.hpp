@@ -50,6 +50,7 @@ struct FunctionDeclaration {
   SymbolName name;
   std::vector<SymbolName> variables;  ///< t unless the file writes others: function: u(x, t)
   unsigned serial = 0;                ///< the GiNaC function that stands for it
+  bool variable_written = false;      ///< false: `function: F`, whose variable is t by default
 };
 
 /// A dimension M^a L^b T^c with rational exponents.
@@ -134,6 +135,8 @@ class Symbols {
   [[nodiscard]] const FunctionDeclaration* function(const SymbolName& name) const;
   /// Whether @p symbol is a declared variable of the function whose GiNaC serial is @p serial.
   [[nodiscard]] bool is_variable_of(unsigned serial, const GiNaC::ex& symbol) const;
+  /// The declaration of the function GiNaC knows by @p serial, if the file declared it.
+  [[nodiscard]] const FunctionDeclaration* function_of(unsigned serial) const;
   /// The symbols that stand as the upper limit of a sum over an index (whole numbers at least
   /// the lower limit: the number of terms), with that lower limit.
   [[nodiscard]] const std::vector<std::pair<GiNaC::ex, GiNaC::ex>>& counts() const {

@@ -4,11 +4,50 @@
 // equations it must follow from, the facts and definitions in force, and its dimensions.
 #include "file/reader.hpp"
 
+#include "file/calculus.hpp"
+
 #include <algorithm>
 
 namespace impulse::derivations::file {
 
 using GiNaC::ex;
+
+namespace {
+
+// `function: F` makes F a function of t, and a premise F(x) = 3x, written with F's value on one
+// side and x free on the other, is F's rule for every x to one reader and its value at one x to
+// another (F(T) = 2J/T). Two readings: refused, naming the declaration that says which. A value
+// at a point whose other side holds the point only in an integral's limit (p(T) = p_0 +
+// \int_0^T F dt), or not at all (p(T) = p_0 + J), is read as the value there.
+void refuse_rule_at_another_variable(const Symbols& symbols, const Source& source,
+                                     std::size_t offset, const ex& one, const ex& other) {
+  if (!is_abstract(one) || one.nops() != 1 || !GiNaC::is_a<GiNaC::symbol>(one.op(0))) {
+    return;
+  }
+  const unsigned serial = GiNaC::ex_to<GiNaC::function>(one).get_serial();
+  const FunctionDeclaration* f = symbols.function_of(serial);
+  const ex point = one.op(0);
+  if (f == nullptr || f->variable_written || symbols.is_variable_of(serial, point) ||
+      !other.has(point)) {
+    return;
+  }
+  for (auto i = other.preorder_begin(); i != other.preorder_end(); ++i) {
+    if (GiNaC::is_a<GiNaC::integral>(*i)) {
+      return;
+    }
+  }
+  const SymbolInfo* x = symbols.info(point);
+  const std::string name = f->name.latex();
+  const std::string at = x != nullptr ? x->name.latex() : "its argument";
+  throw source.error(offset, "expected " + name + "'s variable declared: `function: " + name +
+                                 "` makes " + name + " a function of t, and " + name + "(" + at +
+                                 ") = ... is either its rule for every " + at +
+                                 " (declare `function: " + name + "(" + at +
+                                 ")`) or its value at one " + at + " (declare `function: " + name +
+                                 "(t)`)");
+}
+
+}  // namespace
 
 Reader::Reader(const Source& source, const Limits& limits)
     : source_(source), limits_(limits), symbols_(source, limits) {}
@@ -279,6 +318,10 @@ void Reader::read_row(const Row& row, const BlockRole& how) {
                                  groups_.back().models.empty();
       const bool premise = (given && !untested_link) || (equations_.empty() && role == Role::plain);
       e.premise = premise;
+      if (premise && !e.lhs.value.vector && !e.lhs.value.block()) {
+        refuse_rule_at_another_variable(symbols_, source_, e.offset, e.lhs.value.x, e.rhs.value.x);
+        refuse_rule_at_another_variable(symbols_, source_, e.offset, e.rhs.value.x, e.lhs.value.x);
+      }
       if (!premise) {
         e.premises = first_link ? first_premises : std::vector<std::size_t>{equations_.size() - 1};
         if (also_) {
