@@ -228,7 +228,6 @@ Node Grammar::term(std::size_t depth) {
       product.children.push_back(factor(depth + 1));
       product.ops += code;
     } else if (starts_atom(next)) {
-      refuse_wide_space(next);
       if (is_char(next, '|') && product.children.size() >= 2 &&
           product.children.back().kind != NodeKind::abs &&
           std::any_of(product.children.begin(), product.children.end(),
@@ -257,48 +256,6 @@ Node Grammar::term(std::size_t depth) {
   }
   product.end = last_end_;
   return product;
-}
-
-// A label in brackets after \quad or \qquad at the end of the equation: v = v_0 - J/m \qquad
-// (2) is the equation's number more often than a product (it read as 2 J/m, and a slip by a factor
-// 2 passed), and so are [2], \{2\}, \left[3\right] and (1b). Elsewhere \quad is spacing, as part
-// one of the contract has it.
-void Grammar::refuse_wide_space(const Token& next) const {
-  bool wide = false;
-  for (std::size_t k = position_; k > 0 && tokens_[k - 1].kind == Tok::spacing; --k) {
-    wide = wide || tokens_[k - 1].text == "\\quad" || tokens_[k - 1].text == "\\qquad";
-  }
-  if (!wide) {
-    return;
-  }
-  std::size_t k = is_command(next, "\\left") ? position_ + 1 : position_;
-  const Token& open = token(k);
-  if (!is_char(open, '(') && !is_char(open, '[') && !is_command(open, "\\{") &&
-      !is_command(open, "\\lbrack")) {
-    return;
-  }
-  bool label = false;  // numbers and letters alone (2, 1b, 3.1)
-  for (++k; token(k).kind == Tok::number || token(k).kind == Tok::letter ||
-            token(k).kind == Tok::spacing || is_char(token(k), '.');
-       ++k) {
-    label = label || token(k).kind != Tok::spacing;
-  }
-  if (is_command(token(k), "\\right")) {
-    ++k;
-  }
-  const Token& close = token(k);
-  if (!label || !(is_char(close, ')') || is_char(close, ']') || is_command(close, "\\}") ||
-                  is_command(close, "\\rbrack"))) {
-    return;
-  }
-  for (++k; token(k).kind == Tok::spacing; ++k) {
-  }
-  if (token(k).kind == Tok::end) {
-    throw error(next,
-                "expected \\tag{…} for the equation's number: a label in brackets after a wide "
-                "space at the end of an equation is its number more often than a factor; "
-                "write \\tag{2} for the number, \\cdot (2) for the product");
-  }
 }
 
 // a / b c: a over b times c, or a over b c? Refused unless it is a number over a number (1/2 m v^2)

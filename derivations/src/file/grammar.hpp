@@ -81,7 +81,6 @@ class Grammar {
   void refuse_ambiguous_division(const Node& product, const Token& written) const;
   void refuse_mixed_number(const Node& product, const Token& written) const;
   void refuse_bar_after_sum(const Node& sum) const;
-  void refuse_wide_space(const Token& next) const;
   void refuse_unit(const Node& product, const Token& written) const;
   Node term(std::size_t depth);
   Node factor(std::size_t depth);

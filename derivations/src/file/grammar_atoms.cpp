@@ -47,7 +47,6 @@ Node Grammar::atom(std::size_t depth) {
         return symbol;
       }
       skip_spacing();
-      refuse_wide_space(peek());  // a = b \quad (1b): the equation's label, not b of 1b
       return call(depth, std::move(symbol));
     }
     case Tok::character:

@@ -178,10 +178,13 @@ bool after_number(const std::vector<Token>& tokens) {
   return false;
 }
 
-// An equation's number written in parentheses: at the start of a row ((3.4) E_k + E_o = …, as the
-// paper prints its equations; (2)\quad & V = …) or after the equation with a space (J = m (v' -
-// v) \; (2)). Read as a factor, a slip by that factor passed. Refused: \tag{3.4} numbers an
-// equation. (A number after \quad at the end is the grammar's to refuse, with the same words.)
+// An equation's label in brackets, read as a factor, let a slip by that factor pass (J = m (w -
+// v) \; (2) gave J = 2 m (w - v)). Refused, as \tag{…} numbers an equation:
+// - at the start of a row: (3.4) E_k + E_o = …, as the paper prints its equations; (2)\quad & V;
+// - at the end after a space: (2), (3.4), (1b);
+// - at the end after \quad or \qquad, where any bracket holding numbers and letters is a label:
+//   [2], \{2\}, \left[3\right], (1b), and (2) after a letter (b(2) would be a call).
+// Elsewhere \quad is spacing, as part one of the contract has it.
 void refuse_written_number(const Source& source, const std::vector<Token>& tokens) {
   const std::size_t n = tokens.size();
   const auto skip = [&](std::size_t k) {
@@ -190,12 +193,34 @@ void refuse_written_number(const Source& source, const std::vector<Token>& token
     }
     return k;
   };
-  // The token after a label's ')' when one opens at `open`: (2), (3.4), (1b).
-  const auto label_at = [&](std::size_t open) -> std::optional<std::size_t> {
-    if (open >= n || !is_char(tokens[open], '(')) {
+  // The token after a label's closing bracket when one opens at `open`: (2), (3.4), (1b); after a
+  // wide space, any bracket (\left[ … \right] too) around numbers, letters and points.
+  const auto label_at = [&](std::size_t open, bool wide) -> std::optional<std::size_t> {
+    std::size_t k = open;
+    if (wide && k < n && is_command(tokens[k], "\\left")) {
+      ++k;
+    }
+    if (k >= n || !(is_char(tokens[k], '(') ||
+                    (wide && (is_char(tokens[k], '[') || is_command(tokens[k], "\\{") ||
+                              is_command(tokens[k], "\\lbrack"))))) {
       return std::nullopt;
     }
-    std::size_t k = skip(open + 1);
+    if (wide) {
+      bool label = false;
+      for (++k; k < n && (tokens[k].kind == Tok::number || tokens[k].kind == Tok::letter ||
+                          tokens[k].kind == Tok::spacing || is_char(tokens[k], '.'));
+           ++k) {
+        label = label || tokens[k].kind != Tok::spacing;
+      }
+      if (k < n && is_command(tokens[k], "\\right")) {
+        ++k;
+      }
+      const bool closed =
+          k < n && (is_char(tokens[k], ')') || is_char(tokens[k], ']') ||
+                    is_command(tokens[k], "\\}") || is_command(tokens[k], "\\rbrack"));
+      return label && closed ? std::optional<std::size_t>(k + 1) : std::nullopt;
+    }
+    k = skip(k + 1);
     if (k >= n || tokens[k].kind != Tok::number) {
       return std::nullopt;
     }
@@ -217,11 +242,11 @@ void refuse_written_number(const Source& source, const std::vector<Token>& token
            is_command(t, "\\div");
   };
   const std::string message =
-      "expected \\tag{…} for the equation's number: a number in parentheses before an equation, "
-      "or after it with a space, is its number more often than a factor; write \\tag{2} for the "
+      "expected \\tag{…} for the equation's number: a label in brackets before an equation, or "
+      "after it with a space, is its number more often than a factor; write \\tag{2} for the "
       "number, \\cdot (2) for the product";
   const std::size_t first = skip(0);
-  if (const auto after = label_at(first)) {
+  if (const auto after = label_at(first, false)) {
     const std::size_t next = skip(*after);
     if (next < n && tokens[next].kind != Tok::end && !operator_like(tokens[next])) {
       throw source.error(tokens[first].offset, message);
@@ -231,19 +256,21 @@ void refuse_written_number(const Source& source, const std::vector<Token>& token
   while (last > 0 && (tokens[last - 1].kind == Tok::spacing || tokens[last - 1].kind == Tok::end)) {
     --last;
   }
-  if (last == 0 || !is_char(tokens[last - 1], ')')) {
+  if (last == 0 || tokens[last - 1].kind == Tok::spacing) {
     return;
   }
-  for (std::size_t open = last - 1; open-- > 0 && last - open <= 6;) {
-    if (label_at(open) != last) {
-      continue;
-    }
+  for (std::size_t open = last - 1; open-- > 0 && last - open <= 8;) {
     std::size_t before = open;
+    bool wide = false;
     while (before > 0 && tokens[before - 1].kind == Tok::spacing) {
+      wide = wide || tokens[before - 1].text == "\\quad" || tokens[before - 1].text == "\\qquad";
       --before;
     }
     const bool spaced = before < open || tokens[open].space_before;
-    if (before > 0 && spaced && !operator_like(tokens[before - 1])) {
+    if (!spaced || label_at(open, wide) != last) {
+      continue;
+    }
+    if (before > 0 && !operator_like(tokens[before - 1])) {
       throw source.error(tokens[open].offset, message);
     }
     return;
@@ -256,7 +283,6 @@ void refuse_written_number(const Source& source, const std::vector<Token>& token
 // annotation := text-command '{' words '}'   (between equations, or at the end of a row)
 // (a row cut here becomes several rows, each a step from the one before)
 std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
-  refuse_written_number(source, row.tokens);
   std::vector<RowTokens> pieces;
   RowTokens current;
   current.join = row.join;
@@ -368,6 +394,9 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
     pieces.push_back(std::move(current));
   } else if (pieces.empty()) {
     throw source.error(row.offset, "expected an equation in the row, found only annotations");
+  }
+  for (const RowTokens& piece : pieces) {
+    refuse_written_number(source, piece.tokens);
   }
   // The tag and label name the row's last equation.
   pieces.back().tag = row.tag;
