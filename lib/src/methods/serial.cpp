@@ -420,11 +420,12 @@ Outcome serial_outcome(SerialResolution s, const Paper& paper, const Options& op
       o.summary.append(k == 0 ? " " : ", ").append(std::to_string(d.order[k]));
     }
   }
-  o.diagnostics = {{"collisions", static_cast<std::int64_t>(d.order.size())},
-                   {"passes", d.passes},
-                   {"order", std::vector<std::int64_t>(d.order.begin(), d.order.end())},
-                   {"max_collisions", d.max_collisions},
-                   {"finished", d.status == SerialStatus::finished}};
+  // Moved in one by one: a list's fields are copied, and the order may hold a million entries.
+  o.diagnostics.push_back({"collisions", static_cast<std::int64_t>(d.order.size())});
+  o.diagnostics.push_back({"passes", d.passes});
+  o.diagnostics.push_back({"order", std::vector<std::int64_t>(d.order.begin(), d.order.end())});
+  o.diagnostics.push_back({"max_collisions", d.max_collisions});
+  o.diagnostics.push_back({"finished", d.status == SerialStatus::finished});
   o.solution = std::move(s.diagnostics);
   return o;
 }
