@@ -33,7 +33,7 @@ const std::map<std::string, Expected> expected{
     {"no-equation.md", {4, 1, "expected a display equation"}},  // the end of the file
     {"expression-alone.md", {3, 3, "found an expression without '='"}},
     {"vector-equals-scalar.md", {5, 12, "expected a vector on this side"}},  // the m
-    {"unknown-environment.md", {3, 3, "found {pmatrix}"}},
+    {"unknown-environment.md", {3, 3, "found {pmatrix}: a matrix is declared"}},
     {"environment-not-ended.md", {3, 3, "expected \\end{aligned}"}},
     {"duplicate-tag.md", {5, 3, "an equation above already carries"}},
     {"given-at-end.md", {5, 1, "expected a display block after given:"}},

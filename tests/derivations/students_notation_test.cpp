@@ -424,6 +424,16 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
       d::check_derivation("assume: 0 \\le \\theta \\le \\pi/2\n\n" + cancel, "cos.md");
   REQUIRE(closed.equations.at(1).verdict == d::Verdict::follows_if);
   CHECK(closed.equations.at(1).condition_text == "cos(theta) != 0");
+  // Both ends give 0 and one is closed: sin θ = 0 at θ = 0 on 0 ≤ θ < π, cos θ = 0 at -π/2 on
+  // -π/2 ≤ θ < π/2, so a division by either needs the condition (it followed with none: the open
+  // end's openness was taken, and at θ = 0, u = 0 the step J = m u / sin θ is 0/0).
+  const std::string by_sin = "$$J \\sin\\theta = m u$$\n\n$$J = \\frac{m u}{\\sin\\theta}$$";
+  CHECK(verdicts("assume: 0 \\le \\theta < \\pi\n\n" + by_sin) ==
+        std::vector<std::string>{"premise", "follows-if"});
+  CHECK(verdicts("assume: 0 < \\theta < \\pi\n\n" + by_sin) ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("assume: -\\frac{\\pi}{2} \\le \\theta < \\frac{\\pi}{2}\n\n" + cancel) ==
+        std::vector<std::string>{"premise", "follows-if"});
   // Roots of numbers meet as their prime factors' powers: √(10/7) √(7/10) = 1, so v = √(10 g h/7)
   // follows from g h = 7 v^2 / 10 for v, g, h > 0 (undecided before, "what is left:
   // -√(10/7) √(7/10) v + v"); the slip √(7 g h/10) does not.
@@ -772,4 +782,51 @@ TEST_CASE("The ballistic pendulum's speed from its height", "[derivations][stude
   const std::string premise = "assume: V, g, l > 0\n\n$$V^2 = 2 g l (1 - \\cos\\theta)$$\n\n";
   CHECK(verdicts(premise + "$$V = \\sqrt{2 g l (1 - \\cos\\theta)}$$").back() == "follows");
   CHECK(verdicts(premise + "$$V = \\sqrt{g l (1 - \\cos\\theta)}$$").back() == "does-not-follow");
+}
+
+TEST_CASE("Units, one-digit arguments and a function's reach, as a fourth probe found them",
+          "[derivations][students-notation]") {
+  // Each was read one way in silence, and a false step followed (the first of each pair):
+  // - a word in \text after a number that is no SI unit, or one letter in \text elsewhere, was a
+  //   note and dropped: a = 2\,\text{mass} gave a = 2, p = m\,\text{v} gave p = m, and
+  //   3\,\mu\text{s} gave 3μ;
+  refused("$$a = 2\\,\\text{mass}$$\n\n$$a = 2$$", 1, 10, "\\text{mass}");
+  refused("$$p = 100\\,\\text{kPa}$$", 1, 12, "\\text{kPa}");
+  refused("$$p = m\\,\\text{v}$$\n\n$$p = m$$", 1, 10, "write v without \\text");
+  refused("$$t = 3\\,\\mu\\text{s}$$", 1, 13, "\\text{s}");
+  // - a micro prefix, a unit in brackets and a unit as a fraction were symbols: 2\,\mu\mathrm{m}
+  //   was 2 μ m (m the mass), 2\,[\mathrm{m}] was 2m;
+  refused("$$x = 2\\,\\mu\\mathrm{m}$$", 1, 13, "prefix");
+  refused("$$L = 2\\,[\\mathrm{m}]$$\n\n$$\\frac{L}{2} = m$$", 1, 10, "in brackets");
+  refused("$$v = 36\\,\\frac{\\text{km}}{\\text{h}}$$", 1, 11, "a fraction of \\text");
+  // what stays a unit, or a note: SI units after a number, and words set apart by \quad.
+  CHECK(verdicts("$$m = 2\\,\\text{kg}$$\n\n$$m = 2$$").back() == "follows");
+  CHECK(verdicts("$$J = 2\\,\\text{N s}$$\n\n$$J = 2$$").back() == "follows");
+  CHECK(verdicts("$$J = 2\\,\\text{Ns}$$\n\n$$J = 2$$").back() == "follows");
+  CHECK(verdicts("$$v = 3\\,\\text{m/s}$$\n\n$$v = 3$$").back() == "follows");
+  CHECK(verdicts("$$v = 0 \\quad \\text{initially}$$\n\n$$2 v = 0$$").back() == "follows");
+  // - LaTeX's one digit as an argument, the rest of the number a factor: \sqrt 12 is √1·2 (a = 2
+  //   followed), \frac 1 10 is (1/1)·0, \frac123 is (1/2)·3, \sqrt[3]27 is ∛2·7; \frac12 stays a
+  //   half, and \dfrac 12 3 (a half times 3, or twelve thirds?) is refused;
+  refused("$$a = \\sqrt 12$$\n\n$$a = 2$$", 1, 14, "braces around the arguments of \\sqrt");
+  refused("$$a = \\frac 1 10$$\n\n$$a = 0$$", 1, 16, "braces around the arguments of \\frac");
+  refused("$$a = \\frac123$$", 1, 14, "braces");
+  refused("$$a = \\sqrt[3]27$$", 1, 16, "braces");
+  refused("$$a = \\dfrac 12 3$$", 1, 17, "operator between");
+  same("\\frac12", "\\frac{1}{2}");
+  // - a function's argument without parentheses ran on into a root, bars or a number:
+  //   k \cos\theta \sqrt{m} was k cos(θ √m), which is what a false step wrote out;
+  refused("$$F = k \\cos\\theta \\sqrt{m}$$\n\n$$F = k \\cos\\left(\\theta \\sqrt{m}\\right)$$", 1,
+          20, "\\sqrt");
+  refused("$$a = \\sin\\theta |v|$$", 1, 18, "'|'");
+  refused("$$a = \\sin x 2$$", 1, 14, "run on");
+  same("\\sin 2\\theta", "\\sin(2\\theta)");
+  same("\\sin \\omega t", "\\sin(\\omega t)");
+  // - x^{(1)} was x to the first (a = x followed): a label or a derivative, more often;
+  refused("$$a = x^{(1)}$$\n\n$$a = x$$", 1, 10, "without parentheses");
+  // - {-2}^2 shows as -2², read as (-2)² = 4: a = 4 followed where the eye reads -4;
+  refused("$$a = {-2}^2$$\n\n$$a = 4$$", 1, 11, "negative base");
+  CHECK(verdicts("$$a = (-2)^2$$\n\n$$a = 4$$").back() == "follows");
+  // - 50% is a comment to TeX, which hid the rest: a = 50% b gave a = 50.
+  refused("$$a = 50% b$$\n\n$$a = 50$$", 1, 9, "percentage");
 }

@@ -231,7 +231,8 @@ bool function_named(const ex& e, const char* name) {
 
 // sin or cos over a range of their argument narrower than a turn: the values at its ends, and ±1
 // where a crest or trough lies inside. A value at an end within 1e-15 of 0 is 0 (cos of the
-// double nearest π/2 is 6e-17), with that end's openness: on 0 < θ < π/2, cos θ > 0.
+// double nearest π/2 is 6e-17), with that end's openness: on 0 < θ < π/2, cos θ > 0; a value both
+// ends give is open only when both are.
 Range wave(const Range& a, bool cosine) {
   constexpr double pi = 3.14159265358979323846;
   if (!std::isfinite(a.low) || !std::isfinite(a.high) || a.high - a.low >= 2 * pi) {
@@ -244,10 +245,15 @@ Range wave(const Range& a, bool cosine) {
   const double at_low = f(a.low);
   const double at_high = f(a.high);
   Range r;
-  if (at_low < at_high || (at_low == at_high && a.low_open)) {
+  if (at_low < at_high) {
     r = {at_low, at_high, a.low_open, a.high_open};
-  } else {
+  } else if (at_high < at_low) {
     r = {at_high, at_low, a.high_open, a.low_open};
+  } else {
+    // The same value at both ends is reached unless both are open: on 0 <= θ < π, sin θ = 0 at
+    // θ = 0 (taking the open end's openness made sin θ > 0, and a division by it passed).
+    const bool open = a.low_open && a.high_open;
+    r = {at_low, at_high, open, open};
   }
   // Crests (cos at 2kπ, sin at π/2 + 2kπ) and troughs strictly inside.
   const double shift = cosine ? 0.0 : pi / 2;

@@ -203,6 +203,15 @@ Node Grammar::term(std::size_t depth) {
       // writer meant the group outside.
       throw error(next, std::string(runs_into_group));
     }
+    if (bare_argument_ > 0 && runs_into_factor(next)) {
+      throw error(next,
+                  "expected parentheses around the argument of a function: written "
+                  "without them, it would run on into " +
+                      describe(next) +
+                      ", which may be meant outside; write \\cos(\\theta \\sqrt{m}) for "
+                      "the one, (\\cos\\theta) \\sqrt{m} or \\sqrt{m} \\cos\\theta for "
+                      "the other");
+    }
     if (big_operator(next)) {
       if (bare_argument_ > 0) {
         break;
@@ -238,9 +247,12 @@ Node Grammar::term(std::size_t depth) {
                     "|a| b |c| or as |a |b| c|");
       }
       if (next.kind == Tok::number && !product.children.empty() &&
-          product.children.back().kind == NodeKind::number) {
+          (product.children.back().kind == NodeKind::number ||
+           product.children.back().kind == NodeKind::fraction)) {
+        // \dfrac 12 3: a half times 3, or twelve thirds?
         throw error(next, "expected an operator between two numbers (write \\cdot or \\times)");
       }
+      refuse_bracketed_unit(product, next);
       const Token written = next;
       product.children.push_back(factor(depth + 1));
       product.ops += ' ';
@@ -309,6 +321,14 @@ void Grammar::refuse_unit(const Node& product, const Token& written) const {
       "m",   "s",  "kg", "g", "N", "J", "W",  "Pa", "Hz", "rad", "cm",  "mm",  "km", "h",
       "min", "ms", "K",  "V", "A", "C", "eV", "kN", "kJ", "kW",  "mph", "deg", "L",  "mL"};
   const std::size_t n = product.children.size();
+  if (n >= 3 && product.children[n - 3].kind == NodeKind::number && written.kind == Tok::command &&
+      commands::names.contains(written.text) && product.children[n - 2].kind == NodeKind::symbol &&
+      product.children[n - 2].symbol.base == "\\mu") {
+    // 2\,\mu\mathrm{m}: two micrometres, read as 2 μ m (m the mass).
+    throw error(written, "expected a number in SI units: \\mu before " + written.text +
+                             "{…} after a number is a prefix (micro), which this checker does "
+                             "not read; write 2e-6 for 2 \\mu m");
+  }
   if (n < 2 || product.children[n - 2].kind != NodeKind::number || written.kind != Tok::command ||
       !commands::names.contains(written.text)) {
     return;
@@ -324,6 +344,51 @@ void Grammar::refuse_unit(const Node& product, const Token& written) const {
                   "} after a number is a unit, which this checker does not read (read as a "
                   "symbol, it would be a quantity: \\mathrm{m} the mass m); write the "
                   "equation in numbers alone, with units: for the symbols' dimensions");
+}
+
+// L = 2\,[\mathrm{m}]: a unit in brackets after a number, as some books write it, read as a
+// factor (the mass m).
+void Grammar::refuse_bracketed_unit(const Node& product, const Token& next) const {
+  if (product.children.empty() || product.children.back().kind != NodeKind::number) {
+    return;
+  }
+  if (next.kind == Tok::command && commands::fractions.contains(next.text) &&
+      is_char(token(position_ + 1), '{') && token(position_ + 2).kind == Tok::command &&
+      commands::names.contains(token(position_ + 2).text)) {
+    // 36\,\frac{\text{km}}{\text{h}}: a unit as a fraction, read as the symbols km over h.
+    throw error(next, "expected a number in SI units without a unit: a fraction of " +
+                          token(position_ + 2).text +
+                          "{…} after a number is a unit, which this checker does not read; "
+                          "write the number in SI units, with units: for the symbols' "
+                          "dimensions");
+  }
+  if (!(is_char(next, '[') || is_char(next, '('))) {
+    return;
+  }
+  std::size_t k = position_ + 1;
+  while (token(k).kind == Tok::spacing) {
+    ++k;
+  }
+  const Token& name = token(k);
+  if (name.kind != Tok::command || !commands::names.contains(name.text) ||
+      !is_char(token(k + 1), '{')) {
+    return;
+  }
+  // The bracket holds the upright name alone: [\mathrm{m}], (\text{kg}).
+  for (k += 2; token(k).kind == Tok::letter || token(k).kind == Tok::spacing; ++k) {
+  }
+  if (!is_char(token(k), '}')) {
+    return;
+  }
+  for (++k; token(k).kind == Tok::spacing; ++k) {
+  }
+  if (is_char(token(k), is_char(next, '[') ? ']' : ')')) {
+    throw error(next, "expected a number without a unit: " + name.text +
+                          "{…} in brackets after a number is a unit, which this checker does "
+                          "not read (read as a factor, \\mathrm{m} would be the mass m); write "
+                          "the equation in numbers alone, with units: for the symbols' "
+                          "dimensions");
+  }
 }
 
 // factor := ('+' | '-') factor | atom postfix
@@ -359,7 +424,24 @@ Node Grammar::postfix(std::size_t depth, Node base) {
                                   "^… could be the change of the power too; for that one, write "
                                   "the difference (v_f^2 - v_i^2) or name it");
     }
+    if (is_char(before, '}') && base.kind == NodeKind::sum && base.ops == "-" &&
+        base.children.size() == 1) {
+      throw error(peek_raw(),
+                  "expected parentheses around a negative base: {-2}^2 shows as "
+                  "-2^2, which reads as -(2^2), though the braces make it (-2)^2; "
+                  "write (-2)^2 or -2^2");
+    }
     const Token caret = take();
+    if (is_char(token(position_), '{') && is_char(token(position_ + 1), '(') &&
+        (token(position_ + 2).kind == Tok::number || token(position_ + 2).kind == Tok::letter) &&
+        is_char(token(position_ + 3), ')') && is_char(token(position_ + 4), '}')) {
+      // x^{(2)}: the second derivative, or a label (the second of a series), more often than
+      // the square (x^{(1)} = x followed).
+      throw error(token(position_ + 1),
+                  "expected an exponent without parentheses: x^{(2)} is the second derivative "
+                  "or a label more often than a power; write x^2 for the power, \\ddot x or x_2 "
+                  "for the others");
+    }
     Node exponent = script(depth + 1, caret);
     if (is_char(peek_raw(), '_') && base.kind == NodeKind::symbol &&
         base.symbol.subscript.empty()) {
@@ -497,12 +579,39 @@ Node Grammar::single_digit(const Token& t, bool script) {
     digits.text = digits.text.substr(1);
     digits.offset += 1;
     digits.space_before = false;
+    split_digits_at_ = digits.offset;
     if (digits.text[0] == '.') {
       throw error(digits, "expected a digit after the exponent's digit, found '.'");
     }
   }
   last_end_ = n.end;
   return n;
+}
+
+// \frac 1 10, \frac123, \sqrt 12, \sqrt[3]27: LaTeX takes one digit of a number as the argument,
+// and the rest of the number follows as a factor ((1/1)·0, (1/2)·3, √1·2), where the writer meant
+// 1/10 and √12 (\frac12, whose second digit is the second argument, is a half). Refused, as x^10
+// is.
+void Grammar::refuse_digits_left(const Token& command) const {
+  const Token& next = token(position_);
+  if (next.kind == Tok::number && next.offset == split_digits_at_) {
+    throw error(next, "expected braces around the arguments of " + command.text +
+                          ": LaTeX takes one digit of a number as an argument, and the rest of "
+                          "it follows as a factor (\\frac 1 10 is 1/1 times 0, \\sqrt 12 is "
+                          "the root of 1 times 2); write \\frac{1}{10}, \\sqrt{12}");
+  }
+}
+
+// Inside a function's argument written without parentheses (\cos\theta …), a factor that begins
+// another kind of term: a root, bars, a fraction, braces, a number, an upright name. \cos\theta
+// \sqrt{m} was cos(θ √m) where k \cos\theta \sqrt{m} means cos θ times √m.
+bool Grammar::runs_into_factor(const Token& next) const {
+  return next.kind == Tok::number || is_char(next, '|') ||
+         (next.kind == Tok::command &&
+          (next.text == "\\sqrt" || next.text == "\\lvert" || next.text == "\\vert" ||
+           next.text == "\\|" || next.text == "\\lVert" || next.text == "\\Vert" ||
+           next.text == "\\{" || commands::fractions.contains(next.text) ||
+           commands::names.contains(next.text)));
 }
 
 bool Grammar::starts_atom(const Token& t) const {

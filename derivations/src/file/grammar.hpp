@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -82,6 +83,9 @@ class Grammar {
   void refuse_mixed_number(const Node& product, const Token& written) const;
   void refuse_bar_after_sum(const Node& sum) const;
   void refuse_unit(const Node& product, const Token& written) const;
+  void refuse_bracketed_unit(const Node& product, const Token& next) const;
+  void refuse_digits_left(const Token& command) const;
+  [[nodiscard]] bool runs_into_factor(const Token& next) const;
   Node term(std::size_t depth);
   Node factor(std::size_t depth);
   Node postfix(std::size_t depth, Node base);
@@ -140,7 +144,9 @@ class Grammar {
   int norm_depth_ = 0;     // inside \|…\|: a '\|' closes
   int sized_depth_ = 0;    // inside \bigl( … \bigr): a sized closing delimiter closes
   int bare_argument_ = 0;  // inside a function's argument written without parentheses
-  int integrand_ = 0;      // inside an integrand: a differential ends a bare argument
+  // Where the rest of a number starts whose first digit single_digit took as an argument.
+  std::size_t split_digits_at_ = std::numeric_limits<std::size_t>::max();
+  int integrand_ = 0;  // inside an integrand: a differential ends a bare argument
 };
 
 }  // namespace impulse::derivations::file

@@ -411,6 +411,7 @@ Node Grammar::fraction(std::size_t depth) {
   const Token frac = take();
   Node numerator = argument(depth + 1, frac);
   Node denominator = argument(depth + 1, frac);
+  refuse_digits_left(frac);
   if (auto derivative = as_derivative(numerator, denominator, frac.offset, depth)) {
     return std::move(*derivative);
   }
@@ -537,6 +538,7 @@ Node Grammar::root(std::size_t depth) {
     expect_char(']', open, "root index");
   }
   Node radicand = argument(depth + 1, sqrt);
+  refuse_digits_left(sqrt);
   Node n = make(NodeKind::root, sqrt.offset);
   n.children.push_back(std::move(radicand));
   if (index) {

@@ -178,6 +178,61 @@ bool after_number(const std::vector<Token>& tokens) {
   return false;
 }
 
+// Whether the last token of @p tokens that is not spacing is a number with nothing wider than a
+// thin space after it (\, \; \ ~): what follows it so is its unit.
+bool close_after_number(const std::vector<Token>& tokens) {
+  for (std::size_t k = tokens.size(); k-- > 0;) {
+    if (tokens[k].kind != Tok::spacing) {
+      return tokens[k].kind == Tok::number;
+    }
+    if (tokens[k].text == "\\quad" || tokens[k].text == "\\qquad") {
+      return false;
+    }
+  }
+  return false;
+}
+
+// The words of a \text{…} between open (its '{') and end (after its '}'): runs of letters.
+std::vector<std::string> text_words(const std::vector<Token>& tokens, std::size_t open,
+                                    std::size_t end) {
+  std::vector<std::string> found;
+  bool in_word = false;
+  for (std::size_t k = open + 1; k + 1 < end; ++k) {
+    const Token& t = tokens[k];
+    if (t.kind == Tok::letter) {
+      if (!in_word || t.space_before) {
+        found.emplace_back();
+      }
+      found.back() += t.text;
+    }
+    in_word = t.kind == Tok::letter;
+  }
+  return found;
+}
+
+// A \text{…} that a row drops as an annotation, though it may be a quantity: one word right after a
+// number that is no SI unit (a = 2\,\text{mass}, 2\,\text{kPa}: read as a = 2), or one letter
+// anywhere else (p = m\,\text{v}, 3\,\mu\text{s}: read as p = m, 3μ). Empty when it is an
+// annotation.
+std::string dropped_quantity(const std::vector<Token>& before, const std::vector<Token>& tokens,
+                             std::size_t open, std::size_t end) {
+  // The coherent SI units and their products as one word (N s, the impulse's).
+  static const std::set<std::string, std::less<>> si{
+      "m",  "kg", "s", "N", "J",  "W",  "Pa", "Hz", "rad", "sr", "A",  "K",  "mol",
+      "cd", "C",  "V", "T", "Wb", "Ns", "Nm", "Js", "kgm", "Ws", "As", "Hz", "Ohm"};
+  const std::vector<std::string> words = text_words(tokens, open, end);
+  std::size_t marks = 0;  // what the braces hold besides spacing
+  for (std::size_t k = open + 1; k + 1 < end; ++k) {
+    marks += tokens[k].kind == Tok::spacing ? 0U : 1U;
+  }
+  if (close_after_number(before)) {
+    const bool units = std::all_of(words.begin(), words.end(),
+                                   [](const std::string& w) { return si.contains(w); });
+    return words.size() == 1 && !units ? words[0] : std::string();
+  }
+  return words.size() == 1 && words[0].size() == 1 && marks == 1 ? words[0] : std::string();
+}
+
 // An equation's label in brackets, read as a factor, let a slip by that factor pass (J = m (w -
 // v) \; (2) gave J = 2 m (w - v)). Refused, as \tag{…} numbers an equation:
 // - at the start of a row: (3.4) E_k + E_o = …, as the paper prints its equations; (2)\quad & V;
@@ -360,6 +415,18 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
                                            "}: a unit after a number is an annotation, which "
                                            "this checker ignores; write the number in SI units");
         }
+        if (const std::string word = dropped_quantity(current.tokens, tokens, open, end);
+            !word.empty()) {
+          throw source.error(t.offset,
+                             "expected a unit in SI (m, kg, s, N, J, W, Pa, Hz, rad) or words of "
+                             "an annotation, found " +
+                                 t.text + "{" + word +
+                                 "}: dropped as a note, it would be no part of the equation; "
+                                 "write " +
+                                 word + " without " + t.text +
+                                 " for a quantity, the number in SI units for a unit, and set a "
+                                 "note apart with \\quad");
+        }
         next_piece(Join::row, first_offset(rest, t.offset));
         k = end - 1;
         continue;
@@ -512,10 +579,15 @@ std::vector<Token> strip_environments(const Source& source, std::vector<Token> t
       const std::size_t at = t.offset;
       const std::string name = environment_name(source, tokens, i);
       if (!commands::environments.contains(name)) {
+        const bool matrix = name.size() > 6 && name.ends_with("matrix");
         throw source.error(at,
                            "expected an environment that arranges equations (aligned, "
                            "align*, split, gathered, cases, equation), found {" +
-                               name + "}");
+                               name + "}" +
+                               (matrix ? std::string(": a matrix is declared by its entries, "
+                                                     "matrix: \\mathbf{A} = a_{qs} and column: "
+                                                     "\\vec{B} = b_q over declared indices")
+                                       : std::string()));
       }
       // Optional arguments: aligned[t], alignat{2}.
       if (is_char(tokens[i], '[')) {

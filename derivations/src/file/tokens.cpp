@@ -105,6 +105,12 @@ class Tokenizer {
         ++i;
         continue;
       }
+      if (c == '%' && i > 0 && text_[i - 1] >= '0' && text_[i - 1] <= '9') {
+        // 50% m g: a percentage to the writer, a comment to TeX (which hides m g).
+        throw source_.error(base_ + i,
+                            "expected a number for a percentage: % after a number starts a TeX "
+                            "comment, which hides the rest of the line; write 0.5 for 50%");
+      }
       if (c == '%') {  // a LaTeX comment runs to the end of the line
         while (i < text_.size() && text_[i] != '\n') {
           ++i;
