@@ -19,8 +19,8 @@ namespace {
 // another (F(T) = 2J/T). Two readings: refused, naming the declaration that says which. A value
 // at a point whose other side holds the point only in an integral's limit (p(T) = p_0 +
 // \int_0^T F dt), or not at all (p(T) = p_0 + J), is read as the value there.
-void refuse_rule_at_another_variable(const Symbols& symbols, const Source& source,
-                                     std::size_t offset, const ex& one, const ex& other) {
+void refuse_rule_at(const Symbols& symbols, const Source& source, std::size_t offset, const ex& one,
+                    const ex& other) {
   if (!is_abstract(one) || one.nops() != 1 || !GiNaC::is_a<GiNaC::symbol>(one.op(0))) {
     return;
   }
@@ -45,6 +45,25 @@ void refuse_rule_at_another_variable(const Symbols& symbols, const Source& sourc
                                  " (declare `function: " + name + "(" + at +
                                  ")`) or its value at one " + at + " (declare `function: " + name +
                                  "(t)`)");
+}
+
+// Either side of a scalar premise.
+void refuse_rule_at_another_variable(const Symbols& symbols, const Source& source,
+                                     const Equation& e) {
+  refuse_rule_at(symbols, source, e.offset, e.lhs.value.x, e.rhs.value.x);
+  refuse_rule_at(symbols, source, e.offset, e.rhs.value.x, e.lhs.value.x);
+}
+
+// The two sides of an equation are of one shape: scalars, vectors, columns or matrices alike.
+void refuse_other_shape(const Source& source, const Equation& e, std::size_t offset) {
+  const auto shape = [](const Value& v) {
+    return v.block() ? (v.cols > 1 ? "a matrix" : "a column") : v.vector ? "a vector" : "a scalar";
+  };
+  if (e.lhs.value.vector != e.rhs.value.vector || e.lhs.value.rows != e.rhs.value.rows ||
+      e.lhs.value.cols != e.rhs.value.cols) {
+    throw source.error(offset, std::string("expected ") + shape(e.lhs.value) +
+                                   " on this side, as on the other, found " + shape(e.rhs.value));
+  }
 }
 
 }  // namespace
@@ -295,17 +314,7 @@ void Reader::read_row(const Row& row, const BlockRole& how) {
         }
       }
       e.rhs = symbols_.meaning(right);
-      const auto shape = [](const Value& v) {
-        return v.block()  ? (v.cols > 1 ? "a matrix" : "a column")
-               : v.vector ? "a vector"
-                          : "a scalar";
-      };
-      if (e.lhs.value.vector != e.rhs.value.vector || e.lhs.value.rows != e.rhs.value.rows ||
-          e.lhs.value.cols != e.rhs.value.cols) {
-        throw source_.error(row.sides[k].offset, std::string("expected ") + shape(e.lhs.value) +
-                                                     " on this side, as on the other, found " +
-                                                     shape(e.rhs.value));
-      }
+      refuse_other_shape(source_, e, row.sides[k].offset);
       chain.last_latex = row.sides[k].latex;
       chain.last_node = right;
       e.facts = facts_;
@@ -319,8 +328,7 @@ void Reader::read_row(const Row& row, const BlockRole& how) {
       const bool premise = (given && !untested_link) || (equations_.empty() && role == Role::plain);
       e.premise = premise;
       if (premise && !e.lhs.value.vector && !e.lhs.value.block()) {
-        refuse_rule_at_another_variable(symbols_, source_, e.offset, e.lhs.value.x, e.rhs.value.x);
-        refuse_rule_at_another_variable(symbols_, source_, e.offset, e.rhs.value.x, e.lhs.value.x);
+        refuse_rule_at_another_variable(symbols_, source_, e);
       }
       if (!premise) {
         e.premises = first_link ? first_premises : std::vector<std::size_t>{equations_.size() - 1};

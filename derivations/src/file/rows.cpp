@@ -233,6 +233,40 @@ std::string dropped_quantity(const std::vector<Token>& before, const std::vector
   return words.size() == 1 && words[0].size() == 1 && marks == 1 ? words[0] : std::string();
 }
 
+// An annotation (\text{…} between two equations or at the end of a row, from `open`, its '{', to
+// `end`; t the \\text command) that would change what a row says if dropped: a word joining two
+// equations as cases or conditions, a unit outside SI after a number, or what may be a quantity.
+void refuse_annotation(const Source& source, const Token& t, const std::vector<Token>& before,
+                       const std::vector<Token>& tokens, std::size_t open, std::size_t end,
+                       bool last) {
+  if (const std::string word = last ? "" : disjunction(tokens, open, end); !word.empty()) {
+    throw source.error(t.offset,
+                       "expected an annotation that does not join two equations by '" + word +
+                           "': each equation of a row is a step that must hold, not one of "
+                           "cases or a condition of another; write the cases as one "
+                           "equation (a product equal to zero) or each in a derivation of "
+                           "its own, and a condition with assume:");
+  }
+  if (const std::string unit = after_number(before) ? non_si_unit(tokens, open, end) : "";
+      !unit.empty()) {
+    throw source.error(t.offset, "expected a number in SI units (m, kg, s) before " + t.text + "{" +
+                                     unit +
+                                     "}: a unit after a number is an annotation, which "
+                                     "this checker ignores; write the number in SI units");
+  }
+  if (const std::string word = dropped_quantity(before, tokens, open, end); !word.empty()) {
+    throw source.error(t.offset,
+                       "expected a unit in SI (m, kg, s, N, J, W, Pa, Hz, rad) or words "
+                       "of an annotation, found " +
+                           t.text + "{" + word +
+                           "}: dropped as a note, it would be no part of the equation; "
+                           "write " +
+                           word + " without " + t.text +
+                           " for a quantity, the number in SI units for a unit, and "
+                           "set a note apart with \\quad");
+  }
+}
+
 // An equation's label in brackets, read as a factor, let a slip by that factor pass (J = m (w -
 // v) \; (2) gave J = 2 m (w - v)). Refused, as \tag{…} numbers an equation:
 // - at the start of a row: (3.4) E_k + E_o = …, as the paper prints its equations; (2)\quad & V;
@@ -398,35 +432,7 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
                                     tokens.end());
       if (holds_relation(current.tokens) && equation_follows(end, true)) {
         // an annotation between two equations, or at the end of the row
-        if (const std::string word = blank_tokens(rest) ? "" : disjunction(tokens, open, end);
-            !word.empty()) {
-          throw source.error(t.offset,
-                             "expected an annotation that does not join two equations by '" + word +
-                                 "': each equation of a row is a step that must hold, not one of "
-                                 "cases or a condition of another; write the cases as one "
-                                 "equation (a product equal to zero) or each in a derivation of "
-                                 "its own, and a condition with assume:");
-        }
-        if (const std::string unit =
-                after_number(current.tokens) ? non_si_unit(tokens, open, end) : "";
-            !unit.empty()) {
-          throw source.error(t.offset, "expected a number in SI units (m, kg, s) before " + t.text +
-                                           "{" + unit +
-                                           "}: a unit after a number is an annotation, which "
-                                           "this checker ignores; write the number in SI units");
-        }
-        if (const std::string word = dropped_quantity(current.tokens, tokens, open, end);
-            !word.empty()) {
-          throw source.error(t.offset,
-                             "expected a unit in SI (m, kg, s, N, J, W, Pa, Hz, rad) or words of "
-                             "an annotation, found " +
-                                 t.text + "{" + word +
-                                 "}: dropped as a note, it would be no part of the equation; "
-                                 "write " +
-                                 word + " without " + t.text +
-                                 " for a quantity, the number in SI units for a unit, and set a "
-                                 "note apart with \\quad");
-        }
+        refuse_annotation(source, t, current.tokens, tokens, open, end, blank_tokens(rest));
         next_piece(Join::row, first_offset(rest, t.offset));
         k = end - 1;
         continue;
