@@ -61,7 +61,7 @@ const std::map<std::string, Expected> expected{
     {"text-prose.md", {4, 11, "words belong outside the display block"}},
     // The \frac of dy/dx (line 5, column 3): y is no declared function, so its derivative
     // would be 0 (read as d y over d x it would cancel to y / x).
-    {"derivative.md", {5, 3, "nothing in y is declared a function"}},
+    {"derivative.md", {5, 3, "nothing in y holds x"}},
     // The p of \mathrm{d}p (line 5, column 30): dp is one symbol, which would have nothing to do
     // with the function p.
     {"differential-of-function.md", {5, 30, "p is declared a function"}},

@@ -830,3 +830,44 @@ TEST_CASE("Units, one-digit arguments and a function's reach, as a fourth probe 
   // - 50% is a comment to TeX, which hid the rest: a = 50% b gave a = 50.
   refused("$$a = 50% b$$\n\n$$a = 50$$", 1, 9, "percentage");
 }
+
+TEST_CASE("Equations side by side, derivatives along a function, half angles at pi, products",
+          "[derivations][students-notation]") {
+  // Two equations with only a wide space between them were a chain with a product: a = 2 \quad
+  // b = 3 read as a = 2 b = 3, so a = 3 followed. Refused; a comma separates them, and a thin
+  // space stays a product.
+  refused("given:\n\n$$a = 2 \\quad b = 3$$\n\n$$a = 3$$", 3, 9, "wide space");
+  refused("given:\n\n$$m = 2 \\; v = 3$$\n\n$$m = 3$$", 3, 9, "wide space");
+  refused("$$F = m a \\quad a = 2$$", 1, 11, "wide space");
+  CHECK(verdicts("given:\n\n$$a = 2, \\quad b = 3$$\n\n$$a = 2$$").back() == "follows-one-way");
+  CHECK(verdicts("$$p = m v \\, t$$\n\n$$p = m t v$$").back() == "follows");
+  // dy/dx of y(t): y does not vary with x, so dy/dx was 0 and followed (it is 2t for x = t, y =
+  // t^2, by the chain rule). Refused, as dy/dx of an undeclared y is.
+  refused("function: x, y\n\ngiven:\n\n$$x(t) = t \\\\ y(t) = t^2$$\n\n$$\\frac{dy}{dx} = 0$$", 7,
+          3, "nothing in y holds x");
+  // Sines and cosines written through τ = tan(θ/2) miss θ = π, where τ is infinite: dividing by
+  // 1 + cos θ followed with no condition (at θ = π, u = 0 the premise holds and the step is 0/0),
+  // cos²θ = 1 gave cos θ = 1 on 0 ≤ θ ≤ π (θ = π: cos θ = -1), and cos θ = -1 was refused as
+  // having no solution. Where the facts keep θ from π, no condition.
+  const std::string divide =
+      "$$J (1 + \\cos\\theta) = m u$$\n\n$$J = \\frac{m u}{1 + \\cos\\theta}$$";
+  CHECK(verdicts(divide).back() == "follows-if");
+  CHECK(verdicts("assume: 0 < \\theta < \\pi\n\n" + divide).back() == "follows");
+  CHECK(verdicts("assume: 0 < \\theta \\le \\pi\n\n" + divide).back() == "follows-if");
+  CHECK(
+      verdicts("assume: 0 \\le \\theta \\le \\pi\n\n$$\\cos^2\\theta = 1$$\n\n$$\\cos\\theta = 1$$")
+          .back() == "follows-if");
+  CHECK(verdicts("$$\\cos\\theta = -1$$\n\n$$\\sin\\theta = 0$$").back() == "follows-one-way");
+  CHECK(verdicts("$$(1 + \\cos\\theta) v = 0$$\n\n$$v = 0$$").back() == "follows-if");
+  // where an equation before is undefined at π (sin 2θ / sin θ), nothing lies there
+  CHECK(
+      verdicts("$$v = \\frac{\\sin(2\\theta)}{\\sin\\theta}$$\n\n$$v = 2 \\cos\\theta$$").back() ==
+      "follows-one-way");
+  // \prod_i i \prod_j j: the second product inside the first (counted once for each i): 72
+  // followed where 2! 3! = 12. Refused; in parentheses it is read, and a sum may hold another
+  // (Σ_i i Σ_j j = 3 · 6 either way).
+  refused("$$P = \\prod_{i=1}^{2} i \\prod_{j=1}^{3} j$$\n\n$$P = 72$$", 1, 23, "parentheses");
+  CHECK(verdicts("$$P = \\left(\\prod_{i=1}^{2} i\\right) \\prod_{j=1}^{3} j$$\n\n$$P = 12$$")
+            .back() == "follows");
+  CHECK(verdicts("$$S = \\sum_{i=1}^{2} i \\sum_{j=1}^{3} j$$\n\n$$S = 18$$").back() == "follows");
+}

@@ -1594,6 +1594,129 @@ void from_tangents(Found& found, const TrigRewrite& rewrite, const ex& target) {
   }
 }
 
+// Whether the facts let `angle` (a rational multiple of one symbol, or any other product) be an
+// odd multiple of π, where the tangent of its half is infinite: 0 < θ < π does not, 0 < θ ≤ π
+// and θ ≥ 0 do. A closed end within 1e-9 of such a multiple counts as reaching it.
+bool reaches_odd_pi(const ex& angle, const Facts& facts) {
+  const ex expanded = GiNaC::expand(angle);
+  ex symbol;
+  numeric k = 1;
+  if (is_a<GiNaC::symbol>(expanded)) {
+    symbol = expanded;
+  } else if (is_a<GiNaC::mul>(expanded) && expanded.nops() == 2 && is_a<numeric>(expanded.op(1)) &&
+             is_a<GiNaC::symbol>(expanded.op(0))) {
+    symbol = expanded.op(0);
+    k = GiNaC::ex_to<numeric>(expanded.op(1));
+  } else {
+    return true;  // ω t, θ + φ: some value reaches it
+  }
+  const auto [low, high] = facts.bounds(symbol);
+  const Sign sign = facts.of_symbol(symbol);
+  const double pi = 3.14159265358979323846;
+  const double step = 2 * pi / std::abs(k.to_double());  // the symbol's odd multiples of π/k
+  const double first = pi / k.to_double();
+  // The odd multiples of π/k from the lower end (or from below the upper end, or around 0 with
+  // no end), the first three: a sign fact may rule out one of them.
+  const bool above_zero = sign == Sign::positive || sign == Sign::nonnegative;
+  const bool below_zero = sign == Sign::negative || sign == Sign::nonpositive;
+  const double from = low ? std::max(*low, above_zero ? 0.0 : *low)
+                          : (above_zero ? 0.0 : (high ? *high - 4 * step : -2 * step));
+  const double lowest = std::ceil((from - first) / step - 1e-9);
+  for (double j = lowest; j < lowest + 3; ++j) {
+    const double v = first + j * step;
+    const double margin = 1e-9 * std::max(1.0, std::abs(v));
+    const bool in = (!low || v >= *low - margin) && (!high || v <= *high + margin);
+    const bool signed_ok = (!above_zero || v > 0) && (!below_zero || v < 0);
+    if (!in) {
+      continue;
+    }
+    // An open end exactly at v keeps it out.
+    const bool at_open_low =
+        low && std::abs(v - *low) <= margin && facts.strict_bound(symbol, false);
+    const bool at_open_high =
+        high && std::abs(v - *high) <= margin && facts.strict_bound(symbol, true);
+    if (signed_ok && !at_open_low && !at_open_high) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The value of a sine or cosine rewritten through τ (a rational function of it) where τ is
+// infinite: the angle an odd multiple of π. Empty when it has none there.
+std::optional<ex> at_infinity(const ex& rewritten, const ex& tau) {
+  const GiNaC::symbol epsilon("epsilon");
+  const ex r = GiNaC::normal(rewritten.subs(tau == 1 / epsilon));
+  const ex top = GiNaC::numer(r).subs(epsilon == 0);
+  const ex bottom = GiNaC::denom(r).subs(epsilon == 0);
+  if (GiNaC::normal(bottom).is_zero()) {
+    return std::nullopt;
+  }
+  return GiNaC::normal(top / bottom);
+}
+
+// The tangent of half an angle misses the angle π (it is infinite there): a step that holds for
+// every τ may fail at θ = π. (From J (1 + cos θ) = m u the step J = m u / (1 + cos θ) followed with
+// no condition, and cos²θ = 1 gave cos θ = 1.) Where a step held through the tangents and the
+// facts let an angle reach an odd multiple of π, the step is searched again with that angle's
+// sines and cosines at their values there; unless it holds there too, it holds only where
+// 1 + cos(angle) ≠ 0.
+template <class Search>
+void at_odd_pi(Found& found, const Problem& original, const TrigRewrite& rewrite,
+               const Facts& facts, const Search& search) {
+  if (found.outcome != Implied::holds && found.outcome != Implied::holds_if) {
+    return;
+  }
+  for (const auto& [tau, angle] : rewrite.tangents) {
+    if (!reaches_odd_pi(angle, facts)) {
+      continue;
+    }
+    GiNaC::exmap there;
+    bool defined = true;
+    for (const auto& [trig, value] : rewrite.forward) {
+      if (!value.has(tau)) {
+        there[trig] = value;
+      } else if (const auto limit = at_infinity(value, tau)) {
+        there[trig] = *limit;
+      } else {
+        defined = false;  // tan(θ/2) itself: undefined at θ = π
+      }
+    }
+    Implied outcome = Implied::unknown;
+    if (defined) {
+      Problem at = original;
+      at.premise_denominators.clear();  // where they vanish, the divisor check speaks
+      at.target_denominators.clear();
+      try {
+        for (ex& e : at.premises) {
+          e = GiNaC::normal(e.subs(there));
+        }
+      } catch (const std::exception&) {
+        continue;  // an equation before divides by zero there: no point of it lies there
+      }
+      try {
+        at.target = GiNaC::normal(at.target.subs(there));
+        outcome = search(at).outcome;
+      } catch (const std::exception&) {
+        outcome = Implied::fails;  // the step divides by zero there
+      }
+    }
+    if (outcome == Implied::holds) {
+      continue;
+    }
+    const ex condition = 1 + GiNaC::cos(angle);
+    if (found.outcome == Implied::holds) {
+      found.outcome = Implied::holds_if;
+      found.conditions_needed = outcome == Implied::fails;
+    }
+    found.conditions.push_back(condition);
+    found.how.push_back("at " + text(angle) +
+                        " = π the tangent of its half is infinite, and there "
+                        "the step " +
+                        std::string(outcome == Implied::fails ? "fails" : "was not decided"));
+  }
+}
+
 }  // namespace
 
 Implication implies(const Problem& given, const Facts& facts, const Budget& budget) {
@@ -1661,6 +1784,7 @@ Implication implies(const Problem& given, const Facts& facts, const Budget& budg
   }
   if (!rewrite.forward.empty() && !as_written) {
     from_tangents(found, rewrite, original.target);
+    at_odd_pi(found, original, rewrite, facts, [&](const Problem& p) { return search(p, budget); });
   }
   result.outcome = found.outcome;
   result.conditions = found.conditions;

@@ -990,7 +990,8 @@ class Evaluator {
     bool varies = false;
     const auto differentiate = [&](const ex& e) {
       const ex defined = e.subs(s_.substitutions_);
-      varies = varies || defined.has(variable) || has_atoms(defined);
+      // (a function of t under d/dx does not vary: dy/dx of y(t) and x(t) would be 0)
+      varies = varies || defined.has(variable);
       return defined.diff(x, order);
     };
     Value result = each_component(value, differentiate);
@@ -1001,9 +1002,15 @@ class Evaluator {
           "expected a function of " + variable_name.latex() + " under d/d" + variable_name.latex() +
               ": nothing in " +
               std::string(s_.source_.text().substr(operand.offset, operand.end - operand.offset)) +
-              " is declared a function (function: …) or holds " + variable_name.latex() +
-              ", so its derivative would be 0; declare the function, e.g. function: " +
-              (operand.kind == NodeKind::symbol ? operand.symbol.latex() : std::string("x")));
+              " holds " + variable_name.latex() +
+              ", as a symbol or as the variable of a declared function, so its derivative would "
+              "be 0; declare the function, e.g. function: " +
+              (operand.kind == NodeKind::symbol ? operand.symbol.latex() : std::string("x")) +
+              (variable_name.latex() == "t"
+                   ? std::string()
+                   : "(" + variable_name.latex() +
+                         "), or, of functions of t, write the derivatives in t: "
+                         "\\frac{dy/dt}{dx/dt}"));
     }
     return result;
   }

@@ -676,6 +676,11 @@ std::pair<std::optional<double>, std::optional<double>> Facts::bounds(const ex& 
                                 : found->second;
 }
 
+bool Facts::strict_bound(const ex& symbol, bool high) const {
+  const auto found = strict_.find(symbol);
+  return found != strict_.end() && (high ? found->second.second : found->second.first);
+}
+
 bool Facts::satisfied(const ex& symbol, const GiNaC::numeric& value) const {
   bool ok = true;
   switch (of_symbol(symbol)) {

@@ -57,6 +57,9 @@ class Facts {
   [[nodiscard]] Sign sign(const GiNaC::ex& e) const;
   /// Whether the facts prove @p e ≠ 0.
   [[nodiscard]] bool nonzero(const GiNaC::ex& e) const;
+  /// Whether @p symbol's lower bound (or, with @p high, its upper bound) is strict: x > 0, not
+  /// x ≥ 0. False when it has none.
+  [[nodiscard]] bool strict_bound(const GiNaC::ex& symbol, bool high) const;
   /// Whether a number satisfies the facts on @p symbol (its sign and its bounds).
   [[nodiscard]] bool satisfied(const GiNaC::ex& symbol, const GiNaC::numeric& value) const;
   /// Whether a point (every symbol of the facts it names) satisfies the facts on expressions

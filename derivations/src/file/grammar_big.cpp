@@ -79,7 +79,23 @@ Node Grammar::sum_over(std::size_t depth, const Token& op) {
   if (!starts_atom(peek()) && !big_operator(peek())) {
     throw error(peek(), "expected what " + word + "_" + n.text + " runs over after it");
   }
+  const Token first = peek();
   n.children.push_back(term(depth + 1));
+  const Node& body = n.children.back();
+  if (n.kind == NodeKind::product_over && body.kind == NodeKind::product &&
+      body.children.size() > 1 &&
+      (body.children.back().kind == NodeKind::product_over ||
+       body.children.back().kind == NodeKind::sum_over)) {
+    // \prod_i i \prod_j j: the second inside the first (its value to the N-th power: 72 for
+    // 2! 3!, which followed) or beside it? (A sum may hold another: the value is the same.)
+    throw error(first,
+                "expected parentheses around the first product: " + word + "_" + n.text +
+                    " takes the rest of the term, so the " +
+                    (body.children.back().kind == NodeKind::product_over ? "product" : "sum") +
+                    " after it would be inside it, and count once for each " + n.text +
+                    "; write \\left(\\prod_i a_i\\right) \\prod_j b_j for two "
+                    "products side by side");
+  }
   if (lower) {
     n.children.push_back(std::move(*lower));
     n.children.push_back(std::move(*upper));

@@ -507,6 +507,41 @@ std::vector<RowTokens> merge_continuations(const Source& source, std::vector<Row
   return merged;
 }
 
+// A side between two '=' that holds a space wider than \, between two terms: a = 2 \quad b = 3 is
+// two equations to the writer, a chain a = 2b = 3 as read (a = 3 followed), and so are \;, ~~
+// and \ \ . Refused: a comma or \quad\text{and}\quad separates equations, \cdot a product.
+void refuse_spaced_equations(const Source& source, const std::vector<Token>& side) {
+  const std::vector<int> d = depths(side);
+  std::size_t first = 0;
+  while (first < side.size() && side[first].kind == Tok::spacing) {
+    ++first;
+  }
+  for (std::size_t k = first; k < side.size(); ++k) {
+    if (side[k].kind != Tok::spacing || d[k] != 0) {
+      continue;
+    }
+    // Spaces (\limits and \displaystyle are spacing tokens too, and no space): wide, or several.
+    static const std::set<std::string, std::less<>> wide_spaces{
+        "\\quad", "\\qquad", "\\;", "\\:", "\\>", "\\ ", "~", "\\hspace", "\\hspace*", "\\mspace"};
+    std::size_t next = k;
+    std::size_t spaces = 0;
+    bool wide = false;
+    for (; next < side.size() && side[next].kind == Tok::spacing; ++next) {
+      wide = wide || wide_spaces.contains(side[next].text);
+      spaces += wide_spaces.contains(side[next].text) || side[next].text == "\\," ? 1U : 0U;
+    }
+    wide = wide || spaces > 1;
+    if (wide && next < side.size() && side[next].kind != Tok::end) {
+      throw source.error(side[k].offset,
+                         "expected one expression between two '=', found a wide space in it: "
+                         "a = 2 \\quad b = 3 may be two equations (a = 2 and b = 3) or a chain "
+                         "with a product (a = 2b = 3); write a comma or \\quad\\text{and}\\quad "
+                         "between two equations, \\cdot for a product");
+    }
+    k = next;
+  }
+}
+
 // equation := [side] '=' side {'=' side}     (a row that begins with '=' continues a chain)
 Row read_row(const Source& source, RowTokens& row_tokens, const Limits& limits) {
   Row row;
@@ -547,6 +582,9 @@ Row read_row(const Source& source, RowTokens& row_tokens, const Limits& limits) 
       const std::size_t at = sides[k].empty() ? row.offset : sides[k].front().offset;
       throw source.error(
           at, k == 0 ? "expected an expression before '='" : "expected an expression after '='");
+    }
+    if (k > 0 && k + 1 < sides.size()) {
+      refuse_spaced_equations(source, sides[k]);
     }
     row.sides.push_back(parse_side(source, std::move(sides[k]), row.offset, limits));
   }
