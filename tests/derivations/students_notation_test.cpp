@@ -870,4 +870,11 @@ TEST_CASE("Equations side by side, derivatives along a function, half angles at 
   CHECK(verdicts("$$P = \\left(\\prod_{i=1}^{2} i\\right) \\prod_{j=1}^{3} j$$\n\n$$P = 12$$")
             .back() == "follows");
   CHECK(verdicts("$$S = \\sum_{i=1}^{2} i \\sum_{j=1}^{3} j$$\n\n$$S = 18$$").back() == "follows");
+  // \text{hence}\quad at the start of a row was a factor "hence" (2y = 6x from y = 3x was red);
+  // it is a note, and a word of a condition there is refused as between two equations.
+  CHECK(verdicts("$$y = 3x$$\n\n$$\\text{hence}\\quad 2y = 6x$$").back() == "follows");
+  CHECK(verdicts("$$y = 3x$$\n\n$$\\text{hence}\\quad 2y = 5x$$").back() == "does-not-follow");
+  refused("$$y = 3x$$\n\n$$\\text{if}\\quad y = 0$$", 3, 3, "'if'");
+  CHECK(verdicts("$$\\text{KE} = \\frac{1}{2} m v^2$$\n\n$$2 \\text{KE} = m v^2$$").back() ==
+        "follows");
 }

@@ -233,6 +233,23 @@ std::string dropped_quantity(const std::vector<Token>& before, const std::vector
   return words.size() == 1 && words[0].size() == 1 && marks == 1 ? words[0] : std::string();
 }
 
+// Whether the \text{…} that ends before `end` is set apart from what follows by \quad or \qquad,
+// and a term follows (not '=' or an operator): \text{hence}\quad 2y = 6x, not \text{KE} = ….
+bool leads_a_row(const std::vector<Token>& tokens, std::size_t end) {
+  bool wide = false;
+  std::size_t k = end;
+  for (; k < tokens.size() && tokens[k].kind == Tok::spacing; ++k) {
+    wide = wide || tokens[k].text == "\\quad" || tokens[k].text == "\\qquad";
+  }
+  if (!wide || k >= tokens.size() || tokens[k].kind == Tok::end || relation_token(tokens[k])) {
+    return false;
+  }
+  static const std::string_view operators = "=+-*/^_&,";
+  return !(tokens[k].kind == Tok::character && tokens[k].text.size() == 1 &&
+           operators.find(tokens[k].text[0]) != std::string_view::npos) &&
+         !is_command(tokens[k], "\\cdot") && !is_command(tokens[k], "\\times");
+}
+
 // An annotation (\text{…} between two equations or at the end of a row, from `open`, its '{', to
 // `end`; t the \\text command) that would change what a row says if dropped: a word joining two
 // equations as cases or conditions, a unit outside SI after a number, or what may be a quantity.
@@ -434,6 +451,13 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
         // an annotation between two equations, or at the end of the row
         refuse_annotation(source, t, current.tokens, tokens, open, end, blank_tokens(rest));
         next_piece(Join::row, first_offset(rest, t.offset));
+        k = end - 1;
+        continue;
+      }
+      if (blank_tokens(current.tokens) && leads_a_row(tokens, end) &&
+          equation_follows(end, false)) {
+        // \text{hence}\quad 2y = 6x: a note before the row's equation (it was a factor hence)
+        refuse_annotation(source, t, current.tokens, tokens, open, end, false);
         k = end - 1;
         continue;
       }
