@@ -252,7 +252,7 @@ Node Grammar::term(std::size_t depth) {
         // \dfrac 12 3: a half times 3, or twelve thirds?
         throw error(next, "expected an operator between two numbers (write \\cdot or \\times)");
       }
-      refuse_bracketed_unit(product, next);
+      refuse_written_unit(product, next);
       const Token written = next;
       product.children.push_back(factor(depth + 1));
       product.ops += ' ';
@@ -346,9 +346,9 @@ void Grammar::refuse_unit(const Node& product, const Token& written) const {
                   "equation in numbers alone, with units: for the symbols' dimensions");
 }
 
-// L = 2\,[\mathrm{m}]: a unit in brackets after a number, as some books write it, read as a
-// factor (the mass m).
-void Grammar::refuse_bracketed_unit(const Node& product, const Token& next) const {
+// A unit written after a number as some books write it, in brackets (L = 2\,[\mathrm{m}]) or as
+// a fraction of names (36\,\frac{\text{km}}{\text{h}}): read as a factor, m the mass.
+void Grammar::refuse_written_unit(const Node& product, const Token& next) const {
   if (product.children.empty() || product.children.back().kind != NodeKind::number) {
     return;
   }

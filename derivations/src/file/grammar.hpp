@@ -83,7 +83,7 @@ class Grammar {
   void refuse_mixed_number(const Node& product, const Token& written) const;
   void refuse_bar_after_sum(const Node& sum) const;
   void refuse_unit(const Node& product, const Token& written) const;
-  void refuse_bracketed_unit(const Node& product, const Token& next) const;
+  void refuse_written_unit(const Node& product, const Token& next) const;
   void refuse_digits_left(const Token& command) const;
   [[nodiscard]] bool runs_into_factor(const Token& next) const;
   Node term(std::size_t depth);

@@ -122,25 +122,44 @@ bool words(const std::vector<Token>& tokens, std::size_t open, std::size_t end) 
   return tokens[end - 1].space_before;
 }
 
-// The words of a \text{…} (its '{' at open, end after its '}'), as written, and the first of them
-// that @p set holds, or empty.
+// The words of a \text{…} between open (its '{') and end (after its '}'): runs of letters.
+std::vector<std::string> text_words(const std::vector<Token>& tokens, std::size_t open,
+                                    std::size_t end) {
+  std::vector<std::string> found;
+  bool in_word = false;
+  for (std::size_t k = open + 1; k + 1 < end; ++k) {
+    const Token& t = tokens[k];
+    if (t.kind == Tok::letter) {
+      if (!in_word || t.space_before) {
+        found.emplace_back();
+      }
+      found.back() += t.text;
+    }
+    in_word = t.kind == Tok::letter;
+  }
+  return found;
+}
+
+// The first word of a \text{…} (its '{' at open, end after its '}') that @p set holds, in lower
+// case when @p lower, or empty.
 std::string word_of(const std::vector<Token>& tokens, std::size_t open, std::size_t end,
                     const std::set<std::string, std::less<>>& set, bool lower) {
-  std::vector<std::string> words{""};
-  for (std::size_t k = open + 1; k < end; ++k) {
-    const Token& t = tokens[k];
-    if (t.kind != Tok::letter || t.space_before) {
-      words.emplace_back();
+  for (std::string w : text_words(tokens, open, end)) {
+    if (lower) {
+      std::transform(w.begin(), w.end(), w.begin(), [](char c) {
+        return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      });
     }
-    if (t.kind == Tok::letter) {
-      for (const char c : t.text) {
-        words.back() += lower ? static_cast<char>(std::tolower(static_cast<unsigned char>(c))) : c;
-      }
+    if (set.contains(w)) {
+      return w;
     }
   }
-  const auto found = std::find_if(words.begin(), words.end(),
-                                  [&](const std::string& w) { return set.contains(w); });
-  return found == words.end() ? std::string() : *found;
+  return std::string();
+}
+
+// Whether @p t is a wide space, \quad or \qquad: what sets a note or a label apart.
+bool wide_space(const Token& t) {
+  return t.kind == Tok::spacing && (t.text == "\\quad" || t.text == "\\qquad");
 }
 
 // The word of a \text{…} that makes the equations it stands between cases, one of which holds
@@ -185,29 +204,11 @@ bool close_after_number(const std::vector<Token>& tokens) {
     if (tokens[k].kind != Tok::spacing) {
       return tokens[k].kind == Tok::number;
     }
-    if (tokens[k].text == "\\quad" || tokens[k].text == "\\qquad") {
+    if (wide_space(tokens[k])) {
       return false;
     }
   }
   return false;
-}
-
-// The words of a \text{…} between open (its '{') and end (after its '}'): runs of letters.
-std::vector<std::string> text_words(const std::vector<Token>& tokens, std::size_t open,
-                                    std::size_t end) {
-  std::vector<std::string> found;
-  bool in_word = false;
-  for (std::size_t k = open + 1; k + 1 < end; ++k) {
-    const Token& t = tokens[k];
-    if (t.kind == Tok::letter) {
-      if (!in_word || t.space_before) {
-        found.emplace_back();
-      }
-      found.back() += t.text;
-    }
-    in_word = t.kind == Tok::letter;
-  }
-  return found;
 }
 
 // A \text{…} that a row drops as an annotation, though it may be a quantity: one word right after a
@@ -219,7 +220,7 @@ std::string dropped_quantity(const std::vector<Token>& before, const std::vector
   // The coherent SI units and their products as one word (N s, the impulse's).
   static const std::set<std::string, std::less<>> si{
       "m",  "kg", "s", "N", "J",  "W",  "Pa", "Hz", "rad", "sr", "A",  "K",  "mol",
-      "cd", "C",  "V", "T", "Wb", "Ns", "Nm", "Js", "kgm", "Ws", "As", "Hz", "Ohm"};
+      "cd", "C",  "V", "T", "Wb", "Ns", "Nm", "Js", "kgm", "Ws", "As", "Ohm"};
   const std::vector<std::string> words = text_words(tokens, open, end);
   std::size_t marks = 0;  // what the braces hold besides spacing
   for (std::size_t k = open + 1; k + 1 < end; ++k) {
@@ -239,7 +240,7 @@ bool leads_a_row(const std::vector<Token>& tokens, std::size_t end) {
   bool wide = false;
   std::size_t k = end;
   for (; k < tokens.size() && tokens[k].kind == Tok::spacing; ++k) {
-    wide = wide || tokens[k].text == "\\quad" || tokens[k].text == "\\qquad";
+    wide = wide || wide_space(tokens[k]);
   }
   if (!wide || k >= tokens.size() || tokens[k].kind == Tok::end || relation_token(tokens[k])) {
     return false;
@@ -369,7 +370,7 @@ void refuse_written_number(const Source& source, const std::vector<Token>& token
     std::size_t before = open;
     bool wide = false;
     while (before > 0 && tokens[before - 1].kind == Tok::spacing) {
-      wide = wide || tokens[before - 1].text == "\\quad" || tokens[before - 1].text == "\\qquad";
+      wide = wide || wide_space(tokens[before - 1]);
       --before;
     }
     const bool spaced = before < open || tokens[open].space_before;
