@@ -485,6 +485,96 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
         std::vector<std::string>{"premise", "does-not-follow"});
 }
 
+TEST_CASE("Students' facts: the ends of a range, reached or not, decide divisions and roots",
+          "[derivations][students-notation]") {
+  // J (d) = p q, then J = p q / d: follows when the facts keep d from 0, else follows-if d ≠ 0.
+  // Each pair: a range that keeps d from 0 (the reason in the comment), and the same range
+  // closed at the end where d is 0.
+  const auto division = [](const std::string& facts, const std::string& d) {
+    return verdicts("assume: " + facts + "\n\n$$J (" + d + ") = p q$$\n\n$$J = \\frac{p q}{" + d +
+                    "}$$");
+  };
+  const std::vector<std::string> free{"premise", "follows"};
+  const std::vector<std::string> conditional{"premise", "follows-if"};
+  // cos θ = 1 only at θ = 0 and 2π, both left out: 1 - cos θ > 0 (before, the turn's width made
+  // cos θ anything in [-1, 1], and rounding took its ends past ±1).
+  CHECK(division("0 < \\theta < 2\\pi", "1 - \\cos\\theta") == free);
+  CHECK(division("0 < \\theta \\le \\pi", "1 - \\cos\\theta") == free);
+  CHECK(division("0 \\le \\theta < 2\\pi", "1 - \\cos\\theta") == conditional);
+  // 2θ runs over 0 < 2θ < π, where sin is positive; at θ = π/2, sin 2θ = sin π = 0.
+  CHECK(division("0 < \\theta < \\pi/2", "\\sin 2\\theta") == free);
+  CHECK(division("0 < \\theta \\le \\pi/2", "\\sin 2\\theta") == conditional);
+  // sin θ < 1 below π/2, so 1 - sin²θ > 0; at π/2 it is 0.
+  CHECK(division("0 < \\theta < \\pi/2", "1 - \\sin^2\\theta") == free);
+  CHECK(division("0 < \\theta \\le \\pi/2", "1 - \\sin^2\\theta") == conditional);
+  // sin π/6 = 1/2 exactly (its double is 0.49999999999999994): 1 - 2 sin θ > 0 below π/6, and 0
+  // at it; cos 2θ > cos(2π/3) = -1/2 for 0 < θ < π/3.
+  CHECK(division("0 < \\theta < \\pi/6", "1 - 2\\sin\\theta") == free);
+  CHECK(division("0 < \\theta \\le \\pi/6", "1 - 2\\sin\\theta") == conditional);
+  CHECK(division("0 < \\theta < \\pi/3", "2\\cos(2\\theta) + 1") == free);
+  CHECK(division("0 < \\theta \\le \\pi/3", "2\\cos(2\\theta) + 1") == conditional);
+  // A bound that another fact makes tighter is not an end of the range: with θ ≥ 0 as well,
+  // θ > -π/6 leaves θ = 0 in, where 1 - cos θ = 0 (cos(-π/6) is not cos θ's end).
+  CHECK(division("\\theta \\ge 0, \\theta > -\\pi/6, \\theta < \\pi/3", "1 - \\cos\\theta") ==
+        conditional);
+  // tan θ > 0 on 0 < θ < π/2; tan 0 = 0.
+  CHECK(division("0 < \\theta < \\pi/2", "\\tan\\theta") == free);
+  CHECK(division("0 \\le \\theta < \\pi/2", "\\tan\\theta") == conditional);
+  // sin²θ = 1/4 ⇒ sin θ = 1/2 holds where sin θ ≠ -1/2, that is 2 sin θ + 1 ≠ 0, which sin θ ≥ 0
+  // gives on 0 ≤ θ ≤ π. It is decided through τ = tan(θ/2), where it reads 4τ + 1 + τ² ≠ 0: τ ≥ 0
+  // where it has a value (θ = π, where it has none, is decided apart). On 0 ≤ θ ≤ 2π,
+  // sin(7π/6) = -1/2, and the condition is shown in θ, as the file would write it (it was shown
+  // in τ): 4τ + 1 + τ² = (1 + τ²)(1 + 2 sin θ).
+  CHECK(verdicts("assume: 0 \\le \\theta \\le \\pi\n\n$$\\sin^2\\theta = "
+                 "\\frac{1}{4}$$\n\n$$\\sin\\theta = "
+                 "\\frac{1}{2}$$") == free);
+  const auto turn = d::check_derivation(
+      "assume: 0 \\le \\theta \\le 2\\pi\n\n$$\\sin^2\\theta = \\frac{1}{4}$$\n\n$$\\sin\\theta = "
+      "\\frac{1}{2}$$",
+      "turn.md");
+  REQUIRE(turn.equations.at(1).verdict == d::Verdict::follows_if);
+  CHECK(turn.equations.at(1).condition_text == "2*sin(theta)+1 != 0");
+  // Through τ = tan(θ/2), sin²θ = 1 is τ = ±1, and τ = -1 is θ = -π/2: a range of θ whose half
+  // stays within -π/2 to π/2 bounds τ (τ ≥ 0 on 0 ≤ θ ≤ π; τ > -1 on -π/2 < θ < π), and
+  // sin θ = 1 follows (undecided before). Where θ = -π/2 is in, sin θ = -1 there: not a follows.
+  const auto root = [](const std::string& range) {
+    return verdicts("assume: " + range + "\n\n$$\\sin^2\\theta = 1$$\n\n$$\\sin\\theta = 1$$");
+  };
+  CHECK(root("0 \\le \\theta \\le \\pi") == free);
+  CHECK(root("-\\frac{\\pi}{2} < \\theta < \\pi") == free);
+  CHECK(root("-\\frac{\\pi}{2} \\le \\theta < \\pi") != free);
+  // √(1 - sin²θ) = |cos θ| is cos θ on -π/2 < θ < π/2 (undecided before); on 0 < θ < π it is
+  // -cos θ past π/2.
+  const auto cosine = [](const std::string& range) {
+    return verdicts("assume: " + range +
+                    "\n\n$$v = \\sqrt{1 - \\sin^2\\theta}$$\n\n$$v = \\cos\\theta$$");
+  };
+  CHECK(cosine("-\\frac{\\pi}{2} < \\theta < \\frac{\\pi}{2}") == free);
+  CHECK(cosine("0 < \\theta < \\pi") == std::vector<std::string>{"premise", "does-not-follow"});
+  // exp x > exp 0 = 1 for x > 0, and ln(1 + x) > ln 1 = 0; x = 0 gives 0 in both.
+  CHECK(division("x > 0", "\\exp(x) - 1") == free);
+  CHECK(division("x \\ge 0", "\\exp(x) - 1") == conditional);
+  CHECK(division("x > 0", "\\ln(1 + x)") == free);
+  CHECK(division("x > -1", "\\ln(1 + x)") == conditional);
+  // -1 < x < 0: 0 < x² < 1, so ln x² < 0; x = -1 gives ln 1 = 0.
+  CHECK(division("-1 < x < 0", "\\ln(x^2)") == free);
+  CHECK(division("-1 \\le x < 0", "\\ln(x^2)") == conditional);
+  // Two ranged symbols: m_1 - m_2 > 1 - 1 = 0, and x y > 1 · 1 = 1 (before, the sum's end was
+  // moved outward for rounding, though 1 - 1 is exact, and took in 0); m_1 = m_2 = 1 and
+  // x = y = 1 give 0 when the ends are reached.
+  CHECK(division("m_1 > 1, m_2 \\le 1", "m_1 - m_2") == free);
+  CHECK(division("m_1 \\ge 1, m_2 \\le 1", "m_1 - m_2") == conditional);
+  CHECK(division("x > 1, y > 1", "x y - 1") == free);
+  CHECK(division("x \\ge 1, y \\ge 1", "x y - 1") == conditional);
+  // A premise that nothing on the range satisfies is refused: cos²θ = 1 needs θ = kπ, and
+  // 0 < θ < 3 holds none (π > 3); before, cos θ reached 1 by rounding and the step followed.
+  refused("assume: 0 < \\theta < 3\n\n$$\\cos^2\\theta = 1$$\n\n$$\\cos\\theta = 1$$", 3, 3,
+          "no values satisfy this equation");
+  // On 0 < θ < 4, θ = π satisfies it, and cos θ = 1 holds only where 1 + cos θ ≠ 0.
+  CHECK(verdicts("assume: 0 < \\theta < 4\n\n$$\\cos^2\\theta = 1$$\n\n$$\\cos\\theta = 1$$") ==
+        conditional);
+}
+
 TEST_CASE("Logarithms of quantities with a dimension cancel in a difference",
           "[derivations][students-notation]") {
   // ln h = ln(h / u) + ln u for a unit u of length: a difference of logarithms of lengths is a

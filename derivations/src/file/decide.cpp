@@ -1427,7 +1427,10 @@ namespace {
 
 // The conditions in τ alone (τ = tan(angle/2)) whose product is a number times 1 - τ² or τ,
 // replaced by cos(angle) or sin(angle): 1 - τ² = cos(angle) (1 + τ²) and 2τ = sin(angle) (1 + τ²).
-std::vector<ex> in_the_angle(const std::vector<ex>& conditions, const ex& tau, const ex& angle) {
+// A product 1 - τ (or 1 + τ) whose other factor the facts on τ keep from 0 is cos(angle) too:
+// 0 ≤ θ ≤ π/2 gives 1 + τ > 0, and dividing by cos θ needs only 1 - τ ≠ 0, that is cos θ ≠ 0.
+std::vector<ex> in_the_angle(const std::vector<ex>& conditions, const ex& tau, const ex& angle,
+                             const Facts& facts) {
   std::vector<ex> kept;
   ex product = 1;
   bool any = false;
@@ -1444,9 +1447,12 @@ std::vector<ex> in_the_angle(const std::vector<ex>& conditions, const ex& tau, c
     return conditions;
   }
   try {
-    if (is_a<numeric>(GiNaC::normal(product / (1 - tau * tau)))) {
-      kept.push_back(GiNaC::cos(angle));
-      return kept;
+    for (const ex& other : {ex(1), 1 + tau, 1 - tau}) {
+      if ((other.is_equal(1) || facts.nonzero(other)) &&
+          is_a<numeric>(GiNaC::normal(product * other / (1 - tau * tau)))) {
+        kept.push_back(GiNaC::cos(angle));
+        return kept;
+      }
     }
     if (is_a<numeric>(GiNaC::normal(product / tau))) {
       kept.push_back(GiNaC::sin(angle));
@@ -1454,7 +1460,25 @@ std::vector<ex> in_the_angle(const std::vector<ex>& conditions, const ex& tau, c
     }
   } catch (const std::exception&) {
   }
-  return conditions;
+  // Else each condition of degree two in τ alone: p0 + p1 τ + p2 τ² = (1 + τ²)(a + b cos(angle)
+  // + c sin(angle)) with a = (p0 + p2)/2, b = (p0 - p2)/2, c = p1/2, and both sides over 1 + τ²
+  // tend to p2 = a - b where τ is infinite (the angle an odd multiple of π). (One of degree one
+  // would become a condition there that it is not, and stays in τ.)
+  std::vector<ex> converted;
+  for (const ex& c : conditions) {
+    const ex p = GiNaC::expand(c);
+    const std::vector<ex> in_c = symbols_of(c);
+    if (in_c.size() == 1 && in_c[0].is_equal(tau) && p.is_polynomial(tau) && p.degree(tau) == 2) {
+      const ex p0 = p.coeff(tau, 0);
+      const ex p1 = p.coeff(tau, 1);
+      const ex p2 = p.coeff(tau, 2);
+      converted.push_back((p0 + p2) / 2 + (p0 - p2) / 2 * GiNaC::cos(angle) +
+                          p1 / 2 * GiNaC::sin(angle));
+    } else {
+      converted.push_back(c);
+    }
+  }
+  return converted;
 }
 
 }  // namespace
@@ -1564,8 +1588,8 @@ void from_magnitudes(Found& found, const MagnitudeRewrite& rewrite) {
 
 // What the search found with sines and cosines written through tangents of half angles, back in
 // the angles: a failure only as a value of the tangents (no point in the angles: the numeric
-// method looks for one), the conditions in the angles.
-void from_tangents(Found& found, const TrigRewrite& rewrite, const ex& target) {
+// method looks for one), the conditions in the angles (@p facts: those on the tangents too).
+void from_tangents(Found& found, const TrigRewrite& rewrite, const ex& target, const Facts& facts) {
   if (found.outcome == Implied::fails) {
     found.outcome = Implied::unknown;
     found.point.reset();
@@ -1579,7 +1603,7 @@ void from_tangents(Found& found, const TrigRewrite& rewrite, const ex& target) {
     // Conditions back in the angles: τ = tan(angle/2); those in one τ alone whose product is
     // 1 - τ² (or τ) are cos(angle) ≠ 0 (or sin(angle) ≠ 0), as the file would write them.
     for (const auto& [tau, angle] : rewrite.tangents) {
-      found.conditions = in_the_angle(found.conditions, tau, angle);
+      found.conditions = in_the_angle(found.conditions, tau, angle, facts);
     }
     GiNaC::exmap back;
     for (const auto& [tau, angle] : rewrite.tangents) {
@@ -1717,6 +1741,80 @@ void at_odd_pi(Found& found, const Problem& original, const TrigRewrite& rewrite
   }
 }
 
+// The facts with, for each τ = tan(angle/2) of the rewriting, the bounds on τ that the angle's
+// give where its half stays within one branch of the tangent (-π/2 to π/2), in which τ grows
+// with it: 0 ≤ θ ≤ π gives τ ≥ 0, so that sin²θ = 1 gives sin θ = 1 (τ = -1, the other root,
+// is θ = -π/2). The angle is a rational multiple of one symbol whose both ends the facts give (a
+// bound, or 0 from its sign); anything else adds nothing.
+Facts with_tangents(const Facts& facts, const TrigRewrite& rewrite) {
+  Facts result = facts;
+  const double half_pi = 3.14159265358979323846 / 2;
+  for (const auto& [tau, angle] : rewrite.tangents) {
+    const ex expanded = GiNaC::expand(angle);
+    ex symbol = expanded;
+    numeric k = 1;
+    if (is_a<GiNaC::mul>(expanded) && expanded.nops() == 2 && is_a<numeric>(expanded.op(1))) {
+      symbol = expanded.op(0);
+      k = GiNaC::ex_to<numeric>(expanded.op(1));
+    }
+    if (!is_a<GiNaC::symbol>(symbol) || !k.is_rational() || k.is_zero()) {
+      continue;
+    }
+    // Each end of the symbol: the tighter of its bound and its sign's 0, and whether it is strict.
+    const auto [low_bound, high_bound] = facts.exact_bounds(symbol);
+    const Sign sign = facts.of_symbol(symbol);
+    const auto end = [&](const std::optional<ex>& bound,
+                         bool high) -> std::optional<std::pair<ex, bool>> {
+      const bool from_sign = high ? (sign == Sign::negative || sign == Sign::nonpositive)
+                                  : (sign == Sign::positive || sign == Sign::nonnegative);
+      const bool sign_strict = sign == Sign::positive || sign == Sign::negative;
+      if (bound) {
+        const double b = GiNaC::ex_to<numeric>(GiNaC::evalf(*bound)).to_double();
+        if (!from_sign || (high ? b < 0 : b > 0)) {
+          return std::pair{*bound, facts.strict_bound(symbol, high)};
+        }
+        if (b == 0) {
+          return std::pair{ex(0), sign_strict || facts.strict_bound(symbol, high)};
+        }
+      }
+      if (from_sign) {
+        return std::pair{ex(0), sign_strict};
+      }
+      return std::nullopt;
+    };
+    auto low = end(low_bound, false);
+    auto high = end(high_bound, true);
+    if (!low || !high) {
+      continue;
+    }
+    if (k.is_negative()) {
+      std::swap(low, high);
+    }
+    // The half angle's ends, within one branch.
+    const ex half_low = k * low->first / 2;
+    const ex half_high = k * high->first / 2;
+    const ex low_value = GiNaC::evalf(half_low);
+    const ex high_value = GiNaC::evalf(half_high);
+    if (!is_a<numeric>(low_value) || !is_a<numeric>(high_value)) {
+      continue;
+    }
+    const double a = GiNaC::ex_to<numeric>(low_value).to_double();
+    const double b = GiNaC::ex_to<numeric>(high_value).to_double();
+    if (a < -half_pi - 1e-9 || b > half_pi + 1e-9) {
+      continue;
+    }
+    if (a > -half_pi + 1e-9) {
+      result.add_relation(tau - GiNaC::tan(half_low),
+                          low->second ? Sign::positive : Sign::nonnegative);
+    }
+    if (b < half_pi - 1e-9) {
+      result.add_relation(tau - GiNaC::tan(half_high),
+                          high->second ? Sign::negative : Sign::nonpositive);
+    }
+  }
+  return result;
+}
+
 }  // namespace
 
 Implication implies(const Problem& given, const Facts& facts, const Budget& budget) {
@@ -1749,8 +1847,9 @@ Implication implies(const Problem& given, const Facts& facts, const Budget& budg
     apply(problem.target_denominators);
     problem.target = problem.target.subs(rewrite.forward);
   }
-  const auto search = [&](Problem searched, const Budget& limits) {
-    Facts with_magnitudes = facts;
+  const Facts tangent_facts = with_tangents(facts, rewrite);
+  const auto search = [&](Problem searched, const Budget& limits, const Facts& known) {
+    Facts with_magnitudes = known;
     const MagnitudeRewrite magnitude = magnitudes(searched, with_magnitudes);
     Decider decider(searched, with_magnitudes, limits);
     Frame start;
@@ -1776,15 +1875,16 @@ Implication implies(const Problem& given, const Facts& facts, const Budget& budg
   if (!rewrite.forward.empty()) {
     Budget quick = budget;
     quick.attempts = 0;
-    found = search(original, quick);
+    found = search(original, quick, facts);
     as_written = found.outcome == Implied::holds;
   }
   if (!as_written) {
-    found = search(problem, budget);
+    found = search(problem, budget, tangent_facts);
   }
   if (!rewrite.forward.empty() && !as_written) {
-    from_tangents(found, rewrite, original.target);
-    at_odd_pi(found, original, rewrite, facts, [&](const Problem& p) { return search(p, budget); });
+    from_tangents(found, rewrite, original.target, tangent_facts);
+    at_odd_pi(found, original, rewrite, facts,
+              [&](const Problem& p) { return search(p, budget, facts); });
   }
   result.outcome = found.outcome;
   result.conditions = found.conditions;

@@ -129,7 +129,10 @@ Sign plus(Sign a, Sign b) {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// [low, high], each end open or closed; rounding is kept outward by a relative 1e-12.
+// [low, high], each end open or closed. An end computed exactly (a sum or product of doubles
+// that needed no rounding, 0, a number a double holds) keeps whether it is reached; any other is
+// moved outward by a relative 1e-12 (the functions' own rounding too), beyond every value, and so
+// is open.
 struct Range {
   double low = -infinity;
   double high = infinity;
@@ -144,32 +147,95 @@ double up(double x) {
   return std::isfinite(x) ? x + 1e-12 * (1 + std::abs(x)) : x;
 }
 
+// One end of a range: its value, whether it is exact, whether a value reaches it.
+struct End {
+  double value;
+  bool exact;
+  bool reached;
+};
+
+// An end as a range keeps it: itself when exact, else moved outward (and then open).
+double low_of(const End& e) {
+  return e.exact ? e.value : down(e.value);
+}
+double high_of(const End& e) {
+  return e.exact ? e.value : up(e.value);
+}
+Range from_ends(const End& low, const End& high) {
+  return {low_of(low), high_of(high), !(low.exact && low.reached), !(high.exact && high.reached)};
+}
+
+// a + b and whether the double sum is exact (its rounding error, by Knuth's two-sum, is 0).
+End add_ends(double a, double b, bool reached) {
+  const double s = a + b;
+  if (!std::isfinite(s)) {
+    return {s, !std::isnan(s), false};
+  }
+  const double b_part = s - a;
+  const double error = (a - (s - b_part)) + (b - b_part);
+  return {s, error == 0, reached};
+}
+
 Range point(double x) {
   return {x, x, false, false};
 }
 
+// A number as a range: itself when a double holds it exactly (an integer or a fraction over a
+// power of two, as 2 or 1/2), else its double moved outward.
+Range number_range(const GiNaC::numeric& n) {
+  const double v = n.to_double();
+  bool exact = false;
+  if (n.is_rational()) {
+    const GiNaC::numeric numerator = n.numer();
+    const GiNaC::numeric denominator = n.denom();
+    const GiNaC::numeric most(9007199254740992L);  // 2^53
+    if (abs(numerator) < most && denominator < most) {
+      const long d = denominator.to_long();
+      exact = (d & (d - 1)) == 0;
+    }
+  }
+  return exact ? point(v) : Range{down(v), up(v), false, false};
+}
+
 Range range_sum(const Range& a, const Range& b) {
-  return {down(a.low + b.low), up(a.high + b.high), a.low_open || b.low_open,
-          a.high_open || b.high_open};
+  return from_ends(add_ends(a.low, b.low, !a.low_open && !b.low_open),
+                   add_ends(a.high, b.high, !a.high_open && !b.high_open));
 }
 
 Range multiply(const Range& a, const Range& b) {
-  // The four products of the ends, with 0 · ∞ as 0; the ends are closed (a safe widening).
-  const auto product = [](double x, double y) { return (x == 0 || y == 0) ? 0.0 : x * y; };
-  const double c[4] = {product(a.low, b.low), product(a.low, b.high), product(a.high, b.low),
-                       product(a.high, b.high)};
-  Range r{c[0], c[0], false, false};
-  for (const double v : c) {
-    r.low = std::min(r.low, v);
-    r.high = std::max(r.high, v);
-  }
-  // Strictly positive times strictly positive stays away from 0.
-  const bool a_positive = a.low > 0 || (a.low == 0 && a.low_open);
-  const bool b_positive = b.low > 0 || (b.low == 0 && b.low_open);
-  if (a_positive && b_positive && r.low == 0) {
-    r.low_open = true;
-  }
-  return {down(r.low), up(r.high), r.low_open, false};
+  // The four products of the ends, with 0 · ∞ as 0. A product is reached when both ends are, or
+  // when it is 0 from a reached end 0 (times any value of the other range).
+  const auto corner = [](double x, bool x_reached, double y, bool y_reached) -> End {
+    if (x == 0 || y == 0) {
+      return {0.0, true, (x == 0 && x_reached) || (y == 0 && y_reached)};
+    }
+    const double p = x * y;
+    if (!std::isfinite(p)) {
+      return {p, true, false};
+    }
+    const bool exact = std::fma(x, y, -p) == 0 && std::abs(p) > 1e-290;
+    return {p, exact, x_reached && y_reached};
+  };
+  const End c[4] = {corner(a.low, !a.low_open, b.low, !b.low_open),
+                    corner(a.low, !a.low_open, b.high, !b.high_open),
+                    corner(a.high, !a.high_open, b.low, !b.low_open),
+                    corner(a.high, !a.high_open, b.high, !b.high_open)};
+  // The extreme values: exact when every corner of that value is, reached when one exact is.
+  const auto extreme = [&](bool lowest) {
+    double v = c[0].value;
+    for (const End& e : c) {
+      v = lowest ? std::min(v, e.value) : std::max(v, e.value);
+    }
+    End result{v, true, false};
+    for (const End& e : c) {
+      if (e.value == v) {
+        result.exact = result.exact && e.exact;
+        result.reached = result.reached || e.reached;
+      }
+    }
+    return result;
+  };
+  return from_ends(extreme(true), extreme(false));
 }
 
 Range integer_power(const Range& a, long k) {
@@ -229,31 +295,41 @@ bool function_named(const ex& e, const char* name) {
   return is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == name;
 }
 
-// sin or cos over a range of their argument narrower than a turn: the values at its ends, and ±1
-// where a crest or trough lies inside. A value at an end within 1e-15 of 0 is 0 (cos of the
-// double nearest π/2 is 6e-17), with that end's openness: on 0 < θ < π/2, cos θ > 0; a value both
-// ends give is open only when both are.
-Range wave(const Range& a, bool cosine) {
+// sin or cos over a range of their argument no wider than a turn: the values at its ends, and ±1
+// where a crest or trough lies inside (within 1e-9 of an end, a crest is taken to be at that end,
+// as a bound of π/2 is). A value at an end within 1e-15 of 0 is 0 (cos of the double nearest π/2
+// is 6e-17), with that end's openness: on 0 < θ < π/2, cos θ > 0; a value both ends give is open
+// only when both are. The ends are moved outward for rounding but never beyond ±1, so that on
+// 0 < θ < 2π, 1 - cos θ > 0.
+Range wave(const Range& a, bool cosine, std::optional<double> exact_low,
+           std::optional<double> exact_high) {
   constexpr double pi = 3.14159265358979323846;
-  if (!std::isfinite(a.low) || !std::isfinite(a.high) || a.high - a.low >= 2 * pi) {
+  if (!std::isfinite(a.low) || !std::isfinite(a.high) || a.high - a.low > 2 * pi + 1e-9) {
     return {-1, 1, false, false};
   }
   const auto f = [&](double x) {
     const double v = cosine ? std::cos(x) : std::sin(x);
     return std::abs(v) < 1e-15 ? 0.0 : v;
   };
-  const double at_low = f(a.low);
-  const double at_high = f(a.high);
+  const double at_low = exact_low ? *exact_low : f(a.low);
+  const double at_high = exact_high ? *exact_high : f(a.high);
   Range r;
+  bool low_exact = false;  // whether r's ends are exact values (the crests' ±1 are)
+  bool high_exact = false;
   if (at_low < at_high) {
     r = {at_low, at_high, a.low_open, a.high_open};
+    low_exact = exact_low.has_value();
+    high_exact = exact_high.has_value();
   } else if (at_high < at_low) {
     r = {at_high, at_low, a.high_open, a.low_open};
+    low_exact = exact_high.has_value();
+    high_exact = exact_low.has_value();
   } else {
     // The same value at both ends is reached unless both are open: on 0 <= θ < π, sin θ = 0 at
     // θ = 0 (taking the open end's openness made sin θ > 0, and a division by it passed).
     const bool open = a.low_open && a.high_open;
     r = {at_low, at_high, open, open};
+    low_exact = high_exact = exact_low && exact_high;
   }
   // Crests (cos at 2kπ, sin at π/2 + 2kπ) and troughs strictly inside.
   const double shift = cosine ? 0.0 : pi / 2;
@@ -270,7 +346,41 @@ Range wave(const Range& a, bool cosine) {
       r.low_open = false;
     }
   }
-  return {r.low == 0 ? 0.0 : down(r.low), r.high == 0 ? 0.0 : up(r.high), r.low_open, r.high_open};
+  const auto outward = [](double v, bool exact, bool low) {
+    if (exact || v == 0 || v == 1 || v == -1) {
+      return v;
+    }
+    return low ? std::max(-1.0, down(v)) : std::min(1.0, up(v));
+  };
+  return {outward(r.low, low_exact, true), outward(r.high, high_exact, false), r.low_open,
+          r.high_open};
+}
+
+// tan over a range of its argument within one branch (between two odd multiples of π/2): the
+// values at its ends; an end at an asymptote is infinite and left out, open or closed, for tan
+// has no value there (nor has whatever is written in it: on 0 ≤ θ ≤ π, tan(θ/2) ≥ 0 where it
+// is defined, and θ = π is decided apart); any other range, unknown.
+Range tangent(const Range& a) {
+  constexpr double pi = 3.14159265358979323846;
+  if (!std::isfinite(a.low) || !std::isfinite(a.high)) {
+    return {};
+  }
+  const double k = std::round((a.low + a.high) / 2 / pi);  // the branch around kπ
+  const double left = k * pi - pi / 2;
+  const double right = k * pi + pi / 2;
+  const bool at_left = std::abs(a.low - left) <= 1e-9;
+  const bool at_right = std::abs(a.high - right) <= 1e-9;
+  if ((a.low < left && !at_left) || (a.high > right && !at_right)) {
+    return {};
+  }
+  const auto value = [](double x) {
+    const double v = std::tan(x);
+    return std::abs(v) < 1e-15 ? 0.0 : v;
+  };
+  const double low = at_left ? -infinity : value(a.low);
+  const double high = at_right ? infinity : value(a.high);
+  return {low == 0 ? 0.0 : down(low), high == 0 ? 0.0 : up(high), a.low_open || at_left,
+          a.high_open || at_right};
 }
 
 }  // namespace
@@ -364,6 +474,7 @@ void Facts::add_relation(const ex& e, Sign sign) {
         continue;
       }
       double bound = s == sign ? c : -c;
+      const ex exact_bound = s == sign ? -expanded.op(1 - k) : expanded.op(1 - k);
       const bool sharp = s == Sign::positive || s == Sign::negative;
       auto& [low, high] = bounds_[symbol];
       auto& [low_strict, high_strict] = strict_[symbol];
@@ -371,15 +482,18 @@ void Facts::add_relation(const ex& e, Sign sign) {
       if (!exact) {
         bound = std::nextafter(bound, lower ? -infinity : infinity);  // θ < π/2: not tighter
       }
+      auto& [exact_low, exact_high] = exact_bounds_[symbol];
       if (lower) {
         if (!low || bound > *low || (bound == *low && sharp)) {
           low = bound;
           low_strict = sharp;
+          exact_low = exact_bound;
         }
       } else if (s == Sign::negative || s == Sign::nonpositive) {
         if (!high || bound < *high || (bound == *high && sharp)) {
           high = bound;
           high_strict = sharp;
+          exact_high = exact_bound;
         }
       }
     }
@@ -399,6 +513,7 @@ Facts Facts::carried(const std::vector<std::pair<ex, ex>>& renamed) const {
     if (const auto found = bounds_.find(from); found != bounds_.end()) {
       copy.bounds_[to] = found->second;
       copy.strict_[to] = strict_.at(from);
+      copy.exact_bounds_[to] = exact_bounds_.at(from);
     }
   }
   return copy;
@@ -582,8 +697,7 @@ Sign Facts::of_range(const ex& e) const {
       if (!n.is_real()) {
         return {};
       }
-      const double v = n.to_double();
-      return {down(v), up(v), false, false};
+      return number_range(n);
     }
     if (is_a<GiNaC::constant>(x)) {
       return {3.14159265358979, 3.14159265358980, false, false};
@@ -645,7 +759,10 @@ Sign Facts::of_range(const ex& e) const {
       return k >= 0 ? integer_power(base, k) : inverse(integer_power(base, -k));
     }
     if (function_named(x, "sin") || function_named(x, "cos")) {
-      return wave(range(x.op(0)), function_named(x, "cos"));
+      const bool cosine = function_named(x, "cos");
+      const Range a = range(x.op(0));
+      const auto [exact_low, exact_high] = exact_wave_ends(x.op(0), cosine, a.low, a.high);
+      return wave(a, cosine, exact_low, exact_high);
     }
     if (function_named(x, "log")) {
       const Range a = range(x.op(0));
@@ -657,12 +774,59 @@ Sign Facts::of_range(const ex& e) const {
       return {a.low == 0 ? -infinity : log_down(a.low),
               a.high == infinity ? infinity : log_up(a.high), a.low_open, a.high_open};
     }
+    if (function_named(x, "tan")) {
+      return tangent(range(x.op(0)));
+    }
     if (function_named(x, "exp")) {
-      return {0, infinity, true, true};
+      // Increasing, 1 at 0, above 0.
+      const Range a = range(x.op(0));
+      const auto at = [](double v, bool low) {
+        if (v == 0 || !std::isfinite(v)) {
+          return v == 0 ? 1.0 : (v > 0 ? infinity : 0.0);
+        }
+        return low ? std::max(0.0, down(std::exp(v))) : up(std::exp(v));
+      };
+      return {at(a.low, true), at(a.high, false), a.low_open, a.high_open};
     }
     return {};
   };
   return sign_of(range(e));
+}
+
+std::pair<std::optional<double>, std::optional<double>> Facts::exact_wave_ends(
+    const ex& argument, bool cosine, double low_end, double high_end) const {
+  ex symbol = argument;
+  GiNaC::numeric c = 1;
+  if (is_a<GiNaC::mul>(argument) && argument.nops() == 2 && is_a<GiNaC::numeric>(argument.op(1))) {
+    symbol = argument.op(0);
+    c = GiNaC::ex_to<GiNaC::numeric>(argument.op(1));
+  }
+  const auto found = exact_bounds_.find(symbol);
+  if (!is_a<GiNaC::symbol>(symbol) || !c.is_rational() || c.is_zero() ||
+      found == exact_bounds_.end()) {
+    return {};
+  }
+  // The value at an end of the argument's range, when that end is c times the exact bound (and
+  // not a bound that another fact made tighter).
+  const auto value = [&](const std::optional<ex>& end, double at) -> std::optional<double> {
+    if (!end) {
+      return std::nullopt;
+    }
+    const ex where = GiNaC::evalf(c * *end);
+    if (!is_a<GiNaC::numeric>(where) || std::abs(GiNaC::ex_to<GiNaC::numeric>(where).to_double() -
+                                                 at) > 1e-12 * (1 + std::abs(at))) {
+      return std::nullopt;
+    }
+    const ex v = cosine ? GiNaC::cos(c * *end) : GiNaC::sin(c * *end);
+    if (!is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_rational()) {
+      return std::nullopt;
+    }
+    const Range r = number_range(GiNaC::ex_to<GiNaC::numeric>(v));
+    return r.low == r.high ? std::optional<double>(r.low) : std::nullopt;
+  };
+  const auto& [low, high] = found->second;
+  return c.is_positive() ? std::pair{value(low, low_end), value(high, high_end)}
+                         : std::pair{value(high, low_end), value(low, high_end)};
 }
 
 bool Facts::nonzero(const ex& e) const {
@@ -674,6 +838,12 @@ std::pair<std::optional<double>, std::optional<double>> Facts::bounds(const ex& 
   const auto found = bounds_.find(symbol);
   return found == bounds_.end() ? std::pair<std::optional<double>, std::optional<double>>{}
                                 : found->second;
+}
+
+std::pair<std::optional<ex>, std::optional<ex>> Facts::exact_bounds(const ex& symbol) const {
+  const auto found = exact_bounds_.find(symbol);
+  return found == exact_bounds_.end() ? std::pair<std::optional<ex>, std::optional<ex>>{}
+                                      : found->second;
 }
 
 bool Facts::strict_bound(const ex& symbol, bool high) const {

@@ -68,6 +68,10 @@ class Facts {
   /// The same at a point of doubles (equalities within a relative 1e-9).
   [[nodiscard]] bool satisfied_numerically(const std::vector<GiNaC::ex>& symbols,
                                            const std::vector<double>& values) const;
+  /// The bounds of a symbol as the facts write them (π/6, not its double), [low, high] (either
+  /// may be absent): from ranges.
+  [[nodiscard]] std::pair<std::optional<GiNaC::ex>, std::optional<GiNaC::ex>> exact_bounds(
+      const GiNaC::ex& symbol) const;
   /// The bounds of a symbol, [low, high] (either may be absent): from ranges.
   [[nodiscard]] std::pair<std::optional<double>, std::optional<double>> bounds(
       const GiNaC::ex& symbol) const;
@@ -89,6 +93,11 @@ class Facts {
   [[nodiscard]] Sign structural(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_relation(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_range(const GiNaC::ex& e) const;
+  /// sin or cos (@p cosine) at the ends @p low_end and @p high_end of the range of @p argument, a
+  /// symbol with bounds or a rational multiple of one, where they are numbers a double holds
+  /// exactly (sin π/6 = 1/2).
+  [[nodiscard]] std::pair<std::optional<double>, std::optional<double>> exact_wave_ends(
+      const GiNaC::ex& argument, bool cosine, double low_end, double high_end) const;
   [[nodiscard]] Sign through_relation(const GiNaC::ex& x) const;
   /// Whether every relation that can be judged at @p at holds (and, with @p all_judged, every
   /// relation can be).
@@ -104,6 +113,10 @@ class Facts {
       bounds_;
   // Whether each bound is strict (a < b), by symbol: low, high.
   std::map<GiNaC::ex, std::pair<bool, bool>, GiNaC::ex_is_less> strict_;
+  // Each bound as the fact writes it (π/6, not its double), by symbol: low, high.
+  std::map<GiNaC::ex, std::pair<std::optional<GiNaC::ex>, std::optional<GiNaC::ex>>,
+           GiNaC::ex_is_less>
+      exact_bounds_;
 };
 
 }  // namespace impulse::derivations::file
