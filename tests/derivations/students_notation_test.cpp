@@ -566,6 +566,16 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   CHECK(division("m_1 \\ge 1, m_2 \\le 1", "m_1 - m_2") == conditional);
   CHECK(division("x > 1, y > 1", "x y - 1") == free);
   CHECK(division("x \\ge 1, y \\ge 1", "x y - 1") == conditional);
+  // Two facts added: x = ((x + y) + (x - y))/2 > 0, a - c = (a - b) + (b - c) > 0 and c - a < 0;
+  // with a > b and c > b, a - c may be anything, and with x + y ≥ 0, x - y ≥ 0, x may be 0.
+  CHECK(division("x + y > 0, x - y > 0", "x") == free);
+  CHECK(division("x + y \\ge 0, x - y \\ge 0", "x") == conditional);
+  CHECK(division("a > b, b \\ge c", "a - c") == free);
+  CHECK(division("a > b, b \\ge c", "c - a") == free);
+  CHECK(division("a > b, c > b", "a - c") == conditional);
+  // x + y > 1 and x - y > -1 give 2x > 0; with x - y > -3, 2x > -2 only.
+  CHECK(division("x + y > 1, x - y > -1", "x") == free);
+  CHECK(division("x + y > 1, x - y > -3", "x") == conditional);
   // A premise that nothing on the range satisfies is refused: cos²θ = 1 needs θ = kπ, and
   // 0 < θ < 3 holds none (π > 3); before, cos θ reached 1 by rounding and the step followed.
   refused("assume: 0 < \\theta < 3\n\n$$\\cos^2\\theta = 1$$\n\n$$\\cos\\theta = 1$$", 3, 3,
@@ -850,10 +860,11 @@ TEST_CASE("Labels, mixed numbers, units and notations that could mean two things
 TEST_CASE("A counterexample satisfies every fact, and facts hold no prose",
           "[derivations][students-notation]") {
   // a < b < c gives a < c, so d = |a - c| = c - a. The counterexample a = 1, c = -1 was printed:
-  // b was not in the step, and the facts on it were not checked (no b has 1 < b < -1). The
-  // checker cannot derive a < c, so the step is undecided, and never red.
+  // b was not in the step, and the facts on it were not checked (no b has 1 < b < -1). Then the
+  // step was undecided; now c - a = (c - b) + (b - a), a sum of two facts, is positive, and it
+  // follows.
   const std::string chain = "assume: a < b < c\n\n$$d = |a - c|$$\n\n$$d = c - a$$";
-  CHECK(verdicts(chain).back() == "undecided");
+  CHECK(verdicts(chain).back() == "follows");
   // A step that fails has a counterexample that keeps the facts: d = a - c fails wherever
   // a < c (d = c - a > 0 there, and a - c = -d).
   CHECK(verdicts("assume: a < b < c\n\n$$d = |a - c|$$\n\n$$d = a - c$$").back() ==

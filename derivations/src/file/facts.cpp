@@ -687,7 +687,98 @@ Sign Facts::sign(const ex& e) const {
   if (r == Sign::positive || r == Sign::negative) {
     return r;
   }
-  return s != Sign::unknown ? s : r;
+  const Sign known = s != Sign::unknown ? s : r;
+  if (known == Sign::unknown) {
+    return of_two_relations(e);
+  }
+  return known;
+}
+
+// e = λ r + μ q + c with two linear relations r, q of the facts, λ, μ ≥ 0 and c a number: the
+// sign of that sum (x + y > 0 and x - y > 0 give x = (r + q)/2 > 0). Only for e linear in a few
+// symbols, which is what a fact on a sum or difference bounds.
+Sign Facts::of_two_relations(const ex& e) const {
+  if (relations_.size() < 2 || relations_.size() > 12 ||
+      (!is_a<GiNaC::add>(e) && !is_a<GiNaC::symbol>(e))) {
+    return Sign::unknown;
+  }
+  GiNaC::lst symbols;
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (is_a<GiNaC::symbol>(*it) &&
+        std::find(symbols.begin(), symbols.end(), *it) == symbols.end()) {
+      symbols.append(*it);
+    }
+  }
+  const auto linear = [&](const ex& x) {
+    for (const ex& v : symbols) {
+      if (!x.is_polynomial(v) || x.degree(v) > 1) {
+        return false;
+      }
+    }
+    return true;
+  };
+  if (symbols.nops() == 0 || symbols.nops() > 4 || !linear(e)) {
+    return Sign::unknown;
+  }
+  const GiNaC::symbol lambda("lambda");
+  const GiNaC::symbol mu("mu");
+  for (std::size_t i = 0; i < relations_.size(); ++i) {
+    for (std::size_t j = i + 1; j < relations_.size(); ++j) {
+      const auto& [r, r_sign] = relations_[i];
+      const auto& [q, q_sign] = relations_[j];
+      const bool cover = std::all_of(symbols.begin(), symbols.end(),
+                                     [&](const ex& v) { return r.has(v) || q.has(v); });
+      if (!cover || !linear(r) || !linear(q)) {
+        continue;
+      }
+      // Every symbol's coefficient in e - λ r - μ q is 0 (y of x + y and x - y too).
+      const ex rest = GiNaC::expand(e - lambda * r - mu * q);
+      GiNaC::exset in_rest;
+      for (GiNaC::const_preorder_iterator it = rest.preorder_begin(); it != rest.preorder_end();
+           ++it) {
+        if (is_a<GiNaC::symbol>(*it) && !it->is_equal(lambda) && !it->is_equal(mu)) {
+          in_rest.insert(*it);
+        }
+      }
+      if (in_rest.size() > 6) {
+        continue;
+      }
+      GiNaC::lst equations;
+      for (const ex& v : in_rest) {
+        equations.append(rest.coeff(v, 1) == 0);
+      }
+      ex solution;
+      try {
+        solution = GiNaC::lsolve(equations, GiNaC::lst{lambda, mu});
+      } catch (const std::exception&) {
+        continue;
+      }
+      if (solution.nops() != 2) {
+        continue;
+      }
+      const ex l = solution.op(0).rhs();
+      const ex m = solution.op(1).rhs();
+      if (!is_a<GiNaC::numeric>(l) || !is_a<GiNaC::numeric>(m)) {
+        continue;  // not one combination (λ or μ left free)
+      }
+      const ex c = GiNaC::expand(rest.subs(GiNaC::lst{lambda == l, mu == m}));
+      const auto& lv = GiNaC::ex_to<GiNaC::numeric>(l);
+      const auto& mv = GiNaC::ex_to<GiNaC::numeric>(m);
+      // λ and μ of one sign (both ≤ 0: the sign of -e the same way).
+      if (!is_a<GiNaC::numeric>(c) || (lv.is_negative() && mv.is_positive()) ||
+          (lv.is_positive() && mv.is_negative())) {
+        continue;
+      }
+      const auto scaled = [](const GiNaC::numeric& k, Sign s) {
+        return k.is_zero() ? Sign::zero : k.is_positive() ? s : flipped(s);
+      };
+      const Sign total = plus(plus(scaled(lv, r_sign), scaled(mv, q_sign)), structural(c));
+      if (total != Sign::unknown) {
+        return total;
+      }
+    }
+  }
+  return Sign::unknown;
 }
 
 Sign Facts::of_range(const ex& e) const {

@@ -99,6 +99,7 @@ class Facts {
   [[nodiscard]] std::pair<std::optional<double>, std::optional<double>> exact_wave_ends(
       const GiNaC::ex& argument, bool cosine, double low_end, double high_end) const;
   [[nodiscard]] Sign through_relation(const GiNaC::ex& x) const;
+  [[nodiscard]] Sign of_two_relations(const GiNaC::ex& e) const;
   /// Whether every relation that can be judged at @p at holds (and, with @p all_judged, every
   /// relation can be).
   [[nodiscard]] bool relations_hold(const GiNaC::exmap& at, bool all_judged) const;
