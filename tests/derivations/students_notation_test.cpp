@@ -573,6 +573,21 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   CHECK(division("a > b, b \\ge c", "a - c") == free);
   CHECK(division("a > b, b \\ge c", "c - a") == free);
   CHECK(division("a > b, c > b", "a - c") == conditional);
+  // x² = y² is x = ±y; with x, y ≤ 0 (or both ≥ 0), x + y = 0 only at x = y = 0, so x = y
+  // follows (undecided before: the case x = -y was not decided). With x ≥ 0 ≥ y, x = -y.
+  const auto squares = [](const std::string& facts, const std::string& step) {
+    return verdicts("assume: " + facts + "\n\n$$x^2 = y^2$$\n\n$$" + step + "$$");
+  };
+  CHECK(squares("x \\le 0, y \\le 0", "x = y") == free);
+  CHECK(squares("x \\ge 0, y \\ge 0", "x = y") == free);
+  CHECK(squares("x \\ge 0, y \\le 0", "x = -y") == free);
+  CHECK(squares("x \\ge 0, y \\le 0", "x = y") == conditional);  // x = 1, y = -1 where x + y = 0
+  CHECK(squares("x \\le 0, y \\le 0", "x = -y") == conditional);
+  // x² + y² = 0 only where x = y = 0 (undecided before); x = 1 does not follow.
+  CHECK(verdicts("$$x^2 + y^2 = 0$$\n\n$$x = 0$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
+  CHECK(verdicts("$$x^2 + y^2 = 0$$\n\n$$x = 1$$") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
   // x + y > 1 and x - y > -1 give 2x > 0; with x - y > -3, 2x > -2 only.
   CHECK(division("x + y > 1, x - y > -1", "x") == free);
   CHECK(division("x + y > 1, x - y > -3", "x") == conditional);
@@ -730,9 +745,12 @@ TEST_CASE("The numeric method measures a step against what rounding moves it by"
 TEST_CASE("Speeds as magnitudes: |x| and x^2 of a symbol read as one quantity",
           "[derivations][students-notation]") {
   // |v'| = e |v| gives v'^2 = e^2 v^2 everywhere (square both sides: |x|² = x²); it was
-  // follows-if |v| ≠ 0, a condition the step does not need.
-  CHECK(verdicts("assume: e > 0\n\n$$|v'| = e |v|$$\n\n$$v'^2 = e^2 v^2$$").back() ==
-        "follows-one-way");
+  // follows-if |v| ≠ 0, a condition the step does not need. With e > 0 the converse holds too:
+  // (|v'| - e |v|)(|v'| + e |v|) = 0, and |v'| + e |v| = 0, a sum of two terms ≥ 0, only where
+  // both are 0, where |v'| = e |v| as well (it was follows-one-way, the converse not decided).
+  CHECK(verdicts("assume: e > 0\n\n$$|v'| = e |v|$$\n\n$$v'^2 = e^2 v^2$$").back() == "follows");
+  // With e of either sign, v' = 1, v = 1, e = -1 satisfy the step and not the equation before.
+  CHECK(verdicts("$$|v'| = e |v|$$\n\n$$v'^2 = e^2 v^2$$").back() == "follows-one-way");
   // The slip e for e^2 fails, with values of v and v' (e = 2, |v| = 1, |v'| = 2: 4 ≠ 2).
   const auto slip =
       d::check_derivation("assume: e > 0\n\n$$|v'| = e |v|$$\n\n$$v'^2 = e v^2$$", "speed.md");

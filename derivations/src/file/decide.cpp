@@ -642,6 +642,7 @@ class Decider {
     // The premises as products of doubtful factors.
     std::vector<ex> singles;
     std::optional<std::pair<std::size_t, std::vector<ex>>> split;
+    std::vector<ex> in_terms;  // premises split into their terms
     for (const ex& p : numerators) {
       std::vector<ex> factors = doubtful_factors(p, facts_);
       if (factors.empty()) {
@@ -650,6 +651,28 @@ class Decider {
         found.outcome = Implied::holds;
         found.how.push_back("no values satisfy the equations before under the facts");
         return found;
+      }
+      // A sum of terms of one sign (x² + y², or x + y with x, y ≥ 0) is 0 where each term is:
+      // each term's doubtful factors, their product 0 (x² = 0 is x = 0).
+      if (factors.size() == 1) {
+        if (const std::vector<ex> terms = terms_of_one_sign(factors[0]); !terms.empty()) {
+          for (const ex& t : terms) {
+            const std::vector<ex> of_t = doubtful_factors(t, facts_);
+            if (of_t.empty()) {  // a term the facts keep from 0: the sum is never 0
+              Found found;
+              found.outcome = Implied::holds;
+              found.how.push_back("no values satisfy the equations before under the facts");
+              return found;
+            }
+            ex product = 1;
+            for (const ex& f : of_t) {
+              product *= f;
+            }
+            singles.push_back(GiNaC::expand(product));
+          }
+          in_terms.push_back(factors[0]);
+          continue;
+        }
       }
       if (factors.size() > 1 && !split) {
         split = std::pair{singles.size(), factors};
@@ -660,6 +683,17 @@ class Decider {
       }
       singles.push_back(factors.size() == 1 ? factors[0] : GiNaC::expand(product));
     }
+    Found found = from_singles(frame, target, singles, split);
+    for (const ex& sum : in_terms) {
+      found.how.insert(found.how.begin(),
+                       text(sum) + " is a sum of terms of one sign, each of them 0");
+    }
+    return found;
+  }
+
+ private:
+  Found from_singles(const Frame& frame, const ex& target, const std::vector<ex>& singles,
+                     const std::optional<std::pair<std::size_t, std::vector<ex>>>& split) {
     if (singles.empty()) {
       return leaf(frame, target);
     }
@@ -679,7 +713,6 @@ class Decider {
     return nonlinear(frame, singles, target);
   }
 
- private:
   struct Choice {
     std::size_t premise;
     ex symbol;
@@ -846,6 +879,25 @@ class Decider {
     return false;
   }
 
+  // The terms of @p f when it is a sum of a few terms that the facts give one sign, all ≥ 0 or
+  // all ≤ 0; else none.
+  std::vector<ex> terms_of_one_sign(const ex& f) const {
+    const ex sum = GiNaC::expand(f);
+    if (!is_a<GiNaC::add>(sum) || sum.nops() > 6) {
+      return {};
+    }
+    bool up = true;    // every term ≥ 0
+    bool down = true;  // every term ≤ 0
+    std::vector<ex> terms;
+    for (std::size_t i = 0; i < sum.nops(); ++i) {
+      const Sign s = facts_.sign(sum.op(i));
+      up = up && (s == Sign::positive || s == Sign::nonnegative || s == Sign::zero);
+      down = down && (s == Sign::negative || s == Sign::nonpositive || s == Sign::zero);
+      terms.push_back(sum.op(i));
+    }
+    return up || down ? terms : std::vector<ex>{};
+  }
+
   Found branch(const Frame& frame, const std::vector<ex>& premises, std::size_t index,
                const std::vector<ex>& factors) {
     std::vector<Found> cases;
@@ -861,6 +913,12 @@ class Decider {
       child.depth = frame.depth + 1;
       child.premises = premises;
       child.premises[index] = f;
+      // A sum whose terms the facts give one sign (x + y with x, y ≤ 0) is 0 only where each
+      // term is: the case is those terms, each 0 (x = y = 0).
+      if (const std::vector<ex> terms = terms_of_one_sign(f); !terms.empty()) {
+        child.premises[index] = terms[0];
+        child.premises.insert(child.premises.end(), terms.begin() + 1, terms.end());
+      }
       cases.push_back(run(child));
     }
     Found combined;
