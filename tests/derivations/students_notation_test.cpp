@@ -588,6 +588,17 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
         std::vector<std::string>{"premise", "follows-one-way"});
   CHECK(verdicts("$$x^2 + y^2 = 0$$\n\n$$x = 1$$") ==
         std::vector<std::string>{"premise", "does-not-follow"});
+  // A root squared: √x = 3 gives x = 9, and so does 2√x + 1 = 7 (both undecided before); squared,
+  // √(x + 1) = x - 1 is x² - 3x = 0, and of its roots x = 0 does not satisfy the root (√1 ≠ -1),
+  // so x = 3 follows. √x = 3 does not give x = 3, and √x = -3 holds for no x.
+  const auto root_step = [](const std::string& premise, const std::string& step) {
+    return verdicts("$$" + premise + "$$\n\n$$" + step + "$$").back();
+  };
+  CHECK(root_step("\\sqrt{x} = 3", "x = 9") == "follows");
+  CHECK(root_step("2\\sqrt{x} + 1 = 7", "x = 9") == "follows");
+  CHECK(root_step("\\sqrt{x + 1} = x - 1", "x = 3") == "follows");
+  CHECK(root_step("\\sqrt{x} = 3", "x = 3") == "does-not-follow");
+  refused("$$\\sqrt{x} = -3$$\n\n$$x = 9$$", 1, 3, "no values satisfy this equation");
   // x + y > 1 and x - y > -1 give 2x > 0; with x - y > -3, 2x > -2 only.
   CHECK(division("x + y > 1, x - y > -1", "x") == free);
   CHECK(division("x + y > 1, x - y > -3", "x") == conditional);

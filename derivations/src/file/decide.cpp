@@ -1799,6 +1799,50 @@ void at_odd_pi(Found& found, const Problem& original, const TrigRewrite& rewrite
   }
 }
 
+// k² A - R² for a premise k √A + R whose one square root √A of a symbol's expression is in no
+// other term (and nothing large): the premise squared, without its root; else nothing.
+std::optional<ex> root_squared(const ex& premise) {
+  std::optional<ex> root;
+  for (GiNaC::const_preorder_iterator it = premise.preorder_begin(); it != premise.preorder_end();
+       ++it) {
+    if (is_a<GiNaC::power>(*it) && it->op(1).is_equal(GiNaC::numeric(1, 2)) &&
+        !symbols_of(it->op(0)).empty()) {
+      if (root && !root->is_equal(*it)) {
+        return std::nullopt;  // two roots
+      }
+      root = *it;
+    }
+  }
+  if (!root || expanded_terms(premise) > 20) {
+    return std::nullopt;
+  }
+  const ex p = GiNaC::expand(premise);
+  if (!p.is_polynomial(*root) || p.degree(*root) != 1) {
+    return std::nullopt;
+  }
+  const ex k = p.coeff(*root, 1);
+  const ex rest = GiNaC::expand(p - k * *root);
+  if (k.has(*root) || rest.has(*root)) {
+    return std::nullopt;
+  }
+  return GiNaC::expand(k * k * root->op(0) - rest * rest);
+}
+
+// Each premise k √A + R = 0, with the root in no other term, gives k² A = R², added beside it:
+// √x = 3 is x = 9 (and √x = -3 holds nowhere, which the premise kept says). What was added, as
+// text ("" for nothing).
+std::string add_squared_roots(Problem& problem) {
+  const std::size_t written = problem.premises.size();
+  std::string added;
+  for (std::size_t i = 0; i < written; ++i) {
+    if (const auto squared = root_squared(problem.premises[i])) {
+      problem.premises.push_back(*squared);
+      added += (added.empty() ? "" : ", ") + text(*squared) + " = 0";
+    }
+  }
+  return added;
+}
+
 // The facts with, for each τ = tan(angle/2) of the rewriting, the bounds on τ that the angle's
 // give where its half stays within one branch of the tangent (-π/2 to π/2), in which τ grows
 // with it: 0 ≤ θ ≤ π gives τ ≥ 0, so that sin²θ = 1 gives sin θ = 1 (τ = -1, the other root,
@@ -1886,6 +1930,7 @@ Implication implies(const Problem& given, const Facts& facts, const Budget& budg
     }
   }
   original.target = by_facts(original.target, facts);
+  const std::string squared_text = add_squared_roots(original);
   // Sines and cosines become rational functions of tangents of half angles.
   std::vector<ex> all{original.target};
   all.insert(all.end(), original.premises.begin(), original.premises.end());
@@ -1949,6 +1994,9 @@ Implication implies(const Problem& given, const Facts& facts, const Budget& budg
   result.conditions_needed = found.conditions_needed;
   result.residual = found.residual;
   result.point = found.point;
+  if (!squared_text.empty()) {
+    found.how.insert(found.how.begin(), "a root squared: " + squared_text);
+  }
   for (std::size_t i = 0; i < found.how.size(); ++i) {
     result.how += (i == 0 ? "" : "; ") + found.how[i];
   }
