@@ -599,6 +599,22 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   CHECK(root_step("\\sqrt{x + 1} = x - 1", "x = 3") == "follows");
   CHECK(root_step("\\sqrt{x} = 3", "x = 3") == "does-not-follow");
   refused("$$\\sqrt{x} = -3$$\n\n$$x = 9$$", 1, 3, "no values satisfy this equation");
+  // Each inverse on its own range: arcsin(sin θ) = θ on -π/2 ≤ θ ≤ π/2, arccos(cos θ) = θ on
+  // 0 ≤ θ ≤ π, arctan(tan θ) = θ on -π/2 < θ < π/2 (undecided before); arcsin(sin 3) = π - 3 and
+  // arccos(cos(-1)) = 1, so past those ranges they do not follow. √(x y) = √x √y for x, y ≥ 0.
+  const auto inverse = [](const std::string& facts, const std::string& left) {
+    return verdicts("assume: " + facts + "\n\n$$v = " + left + "$$\n\n$$v = \\theta$$").back();
+  };
+  CHECK(inverse("-\\frac{\\pi}{2} \\le \\theta \\le \\frac{\\pi}{2}", "\\arcsin(\\sin\\theta)") ==
+        "follows");
+  CHECK(inverse("0 \\le \\theta \\le \\pi", "\\arccos(\\cos\\theta)") == "follows");
+  CHECK(inverse("-\\frac{\\pi}{2} < \\theta < \\frac{\\pi}{2}", "\\arctan(\\tan\\theta)") ==
+        "follows");
+  CHECK(inverse("0 \\le \\theta \\le \\pi", "\\arcsin(\\sin\\theta)") == "does-not-follow");
+  CHECK(inverse("-\\frac{\\pi}{2} < \\theta \\le \\pi", "\\arccos(\\cos\\theta)") ==
+        "does-not-follow");
+  CHECK(verdicts("assume: x \\ge 0, y \\ge 0\n\n$$v = \\sqrt{x y}$$\n\n$$v = \\sqrt{x} \\sqrt{y}$$")
+            .back() == "follows");
   // x + y > 1 and x - y > -1 give 2x > 0; with x - y > -3, 2x > -2 only.
   CHECK(division("x + y > 1, x - y > -1", "x") == free);
   CHECK(division("x + y > 1, x - y > -3", "x") == conditional);

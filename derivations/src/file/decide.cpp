@@ -205,7 +205,7 @@ bool needs_facts(const ex& e) {
     if (is_a<GiNaC::function>(*i)) {
       const std::string& name = GiNaC::ex_to<GiNaC::function>(*i).get_name();
       if (name == "log" || name == "exp" || name == "abs" || name == "sinh" || name == "cosh" ||
-          name == "tanh") {
+          name == "tanh" || name == "asin" || name == "acos" || name == "atan") {
         return true;
       }
     }
@@ -397,7 +397,12 @@ ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts)
     const bool power = is_a<GiNaC::power>(factor) && is_a<numeric>(factor.op(1)) &&
                        GiNaC::ex_to<numeric>(factor.op(1)).is_rational();
     const ex base_of = power ? factor.op(0) : factor;
-    if ((power || !is_a<numeric>(factor)) && facts.sign(base_of) == Sign::positive) {
+    // A symbol the facts keep at least 0 comes out of a root too: √(x y) = √x √y for x, y ≥ 0.
+    const Sign sign = facts.sign(base_of);
+    const bool out =
+        sign == Sign::positive || (sign == Sign::nonnegative && is_a<GiNaC::symbol>(factor) &&
+                                   GiNaC::ex_to<numeric>(exponent).is_positive());
+    if ((power || !is_a<numeric>(factor)) && out) {
       outside *= GiNaC::pow(base_of, (power ? factor.op(1) : ex(1)) * exponent);
       return;
     }
@@ -428,6 +433,52 @@ ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts)
     return GiNaC::pow(given_base, exponent);
   }
   return outside * GiNaC::pow(inside, exponent);
+}
+
+// Whether the facts keep the symbol @p u within [low, high] (within (low, high) with @p open):
+// its bounds as written (or 0 from its sign) compared exactly.
+bool within(const ex& u, const ex& low, const ex& high, bool open, const Facts& facts) {
+  if (!is_a<GiNaC::symbol>(u)) {
+    return false;
+  }
+  const auto [low_bound, high_bound] = facts.exact_bounds(u);
+  const Sign sign = facts.of_symbol(u);
+  // Whether an end (its value, strict or not) keeps u on the right side of `limit`.
+  const auto keeps = [&](const std::optional<ex>& bound, bool strict, const ex& limit, bool above) {
+    if (!bound) {
+      return false;
+    }
+    const ex gap = GiNaC::evalf(above ? *bound - limit : limit - *bound);
+    if (!is_a<numeric>(gap)) {
+      return false;
+    }
+    const numeric& g = GiNaC::ex_to<numeric>(gap);
+    return g.is_positive() || (g.is_zero() && (strict || !open));
+  };
+  const bool low_sign = sign == Sign::positive || sign == Sign::nonnegative;
+  const bool high_sign = sign == Sign::negative || sign == Sign::nonpositive;
+  const bool above = keeps(low_bound, facts.strict_bound(u, false), low, true) ||
+                     (low_sign && keeps(ex(0), sign == Sign::positive, low, true));
+  const bool below = keeps(high_bound, facts.strict_bound(u, true), high, false) ||
+                     (high_sign && keeps(ex(0), sign == Sign::negative, high, false));
+  return above && below;
+}
+
+// arcsin(sin u) = u where -π/2 ≤ u ≤ π/2, arccos(cos u) = u where 0 ≤ u ≤ π, arctan(tan u) = u
+// where -π/2 < u < π/2 (each inverse's own range), for a symbol u the facts keep there.
+std::optional<ex> inverse_of_own(const ex& x, const Facts& facts) {
+  if (!is_a<GiNaC::function>(x) || x.nops() != 1 || !is_a<GiNaC::function>(x.op(0)) ||
+      x.op(0).nops() != 1) {
+    return std::nullopt;
+  }
+  const std::string& outer = GiNaC::ex_to<GiNaC::function>(x).get_name();
+  const std::string& inner = GiNaC::ex_to<GiNaC::function>(x.op(0)).get_name();
+  const ex u = x.op(0).op(0);
+  const ex half = GiNaC::Pi / 2;
+  const bool own = (outer == "asin" && inner == "sin" && within(u, -half, half, false, facts)) ||
+                   (outer == "acos" && inner == "cos" && within(u, 0, GiNaC::Pi, false, facts)) ||
+                   (outer == "atan" && inner == "tan" && within(u, -half, half, true, facts));
+  return own ? std::optional<ex>(u) : std::nullopt;
 }
 
 }  // namespace
@@ -485,6 +536,9 @@ ex by_facts(const ex& e, const Facts& facts) {
   }
   if (is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "abs") {
     return magnitude(x.op(0), facts);
+  }
+  if (const auto inverse = inverse_of_own(x, facts)) {
+    return *inverse;
   }
   // The hyperbolic functions as the exponentials they are, so that cosh² - sinh² meets 1.
   if (is_a<GiNaC::function>(x) && x.nops() == 1) {
