@@ -694,9 +694,10 @@ Sign Facts::sign(const ex& e) const {
   return known;
 }
 
-// e = λ r + μ q + c with two linear relations r, q of the facts, λ, μ ≥ 0 and c a number: the
-// sign of that sum (x + y > 0 and x - y > 0 give x = (r + q)/2 > 0). Only for e linear in a few
-// symbols, which is what a fact on a sum or difference bounds.
+// e = λ r + μ q + c with two linear relations r, q of the facts, λ and μ numbers of one sign
+// (both ≥ 0, or both ≤ 0: then -e's the same way) and c a number: the sign of that sum (x + y > 0
+// and x - y > 0 give x = (r + q)/2 > 0). Only for e linear in a few symbols, which is what a fact
+// on a sum or difference bounds.
 Sign Facts::of_two_relations(const ex& e) const {
   if (relations_.size() < 2 || relations_.size() > 12 ||
       (!is_a<GiNaC::add>(e) && !is_a<GiNaC::symbol>(e))) {
