@@ -615,6 +615,14 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
         "does-not-follow");
   CHECK(verdicts("assume: x \\ge 0, y \\ge 0\n\n$$v = \\sqrt{x y}$$\n\n$$v = \\sqrt{x} \\sqrt{y}$$")
             .back() == "follows");
+  // An equation before is read where it is real: ln x in it needs x > 0, √x needs x ≥ 0. So
+  // a = ln x + ln y gives a = ln(x y) (undecided before), and a = √x √y gives a = √(x y) (red
+  // before, with x = y = -1, where √x √y is not real); ln(x y) does not give ln x + ln y
+  // (x = y = -1). ln x² = 2 ln|x| for any real x ≠ 0.
+  CHECK(root_step("a = \\ln x + \\ln y", "a = \\ln(x y)") == "follows-one-way");
+  CHECK(root_step("a = \\sqrt{x} \\sqrt{y}", "a = \\sqrt{x y}") == "follows-one-way");
+  CHECK(root_step("a = \\ln(x y)", "a = \\ln x + \\ln y") == "undecided");
+  CHECK(root_step("a = \\ln|x|", "2 a = \\ln x^2") == "follows");
   // x + y > 1 and x - y > -1 give 2x > 0; with x - y > -3, 2x > -2 only.
   CHECK(division("x + y > 1, x - y > -1", "x") == free);
   CHECK(division("x + y > 1, x - y > -3", "x") == conditional);

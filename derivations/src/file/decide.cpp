@@ -285,6 +285,10 @@ ex logarithm(const ex& a, const Facts& facts) {
   if (is_a<GiNaC::power>(a) && positive(a.op(0), facts)) {
     return a.op(1) * logarithm(a.op(0), facts);
   }
+  // ln(b^(2k)) = 2k ln|b| for any real b ≠ 0 (where b = 0, neither is defined).
+  if (is_a<GiNaC::power>(a) && a.op(1).info(GiNaC::info_flags::even)) {
+    return a.op(1) * logarithm(GiNaC::abs(a.op(0)), facts);
+  }
   if (is_a<GiNaC::function>(a) && GiNaC::ex_to<GiNaC::function>(a).get_name() == "exp") {
     return a.op(0);
   }
@@ -1882,6 +1886,27 @@ std::optional<ex> root_squared(const ex& premise) {
   return GiNaC::expand(k * k * root->op(0) - rest * rest);
 }
 
+// The facts with those that keep @p premises real: x > 0 for each symbol x of a logarithm ln x
+// in them, x ≥ 0 of a square root √x (an even root). A premise is read where it is real, so a
+// step needs to hold only there: a = ln x + ln y gives a = ln(x y). Nothing is added against a
+// fact (x < 0 with ln x: no real value satisfies the premise, which is said elsewhere).
+Facts with_domain(const Facts& facts, const std::vector<ex>& premises) {
+  Facts result = facts;
+  for (const ex& p : premises) {
+    for (GiNaC::const_preorder_iterator it = p.preorder_begin(); it != p.preorder_end(); ++it) {
+      if (is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == "log" &&
+          is_a<GiNaC::symbol>(it->op(0))) {
+        (void)result.add(it->op(0), Sign::positive);
+      } else if (is_a<GiNaC::power>(*it) && is_a<GiNaC::symbol>(it->op(0)) &&
+                 is_a<numeric>(it->op(1)) && !it->op(1).info(GiNaC::info_flags::integer) &&
+                 GiNaC::ex_to<numeric>(it->op(1)).denom().is_even()) {
+        (void)result.add(it->op(0), Sign::nonnegative);
+      }
+    }
+  }
+  return result;
+}
+
 // Each premise k √A + R = 0, with the root in no other term, gives k² A = R², added beside it:
 // √x = 3 is x = 9 (and √x = -3 holds nowhere, which the premise kept says). What was added, as
 // text ("" for nothing).
@@ -1973,8 +1998,10 @@ Facts with_tangents(const Facts& facts, const TrigRewrite& rewrite) {
 
 }  // namespace
 
-Implication implies(const Problem& given, const Facts& facts, const Budget& budget) {
+Implication implies(const Problem& given, const Facts& written_facts, const Budget& budget) {
   Implication result;
+  // Where the equations before are real: ln x in them needs x > 0, √x needs x ≥ 0.
+  const Facts facts = with_domain(written_facts, given.premises);
   // Roots, powers and logarithms simplified where the facts allow it.
   Problem original = given;
   for (std::vector<ex>* list :
