@@ -336,6 +336,22 @@ TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
   CHECK(verdicts(motion + "$$\\dot x(0) = v_0 + a$$") ==
         std::vector<std::string>{"premise", "does-not-follow"});
   refused("$$J = \\int F\\,dt$$", 1, 7, "limits");
+  // An integral left undone is one quantity however it is written: linear (∫(F + K) = ∫F + ∫K,
+  // ∫3F = 3∫F), its variable a name only (∫F(t) dt = ∫F(s) ds), its limits swapped with a sign
+  // (∫_0^T = -∫_T^0). All four were undecided. The slips (2∫K, the sign, K for F) fail: F = 1,
+  // K = u on [0, T] give T + T²/2 ≠ T + T², T ≠ -T, T ≠ T²/2 for T = 1.
+  const auto integral = [](const std::string& premise, const std::string& step) {
+    return verdicts("function: F, K\n\n$$J = " + premise + "$$\n\n$$J = " + step + "$$").back();
+  };
+  const std::string both = "\\int_0^T (F(t) + K(t))\\,dt";
+  const std::string f = "\\int_0^T F(t)\\,dt";
+  CHECK(integral(both, f + " + \\int_0^T K(t)\\,dt") == "follows");
+  CHECK(integral("\\int_0^T 3 F(t)\\,dt", "3\\int_0^T F(s)\\,ds") == "follows");
+  CHECK(integral(f, "\\int_0^T F(s)\\,ds") == "follows");
+  CHECK(integral(f, "-\\int_T^0 F(t)\\,dt") == "follows");
+  CHECK(integral(both, f + " + 2\\int_0^T K(t)\\,dt") == "does-not-follow");
+  CHECK(integral(f, "\\int_T^0 F(t)\\,dt") == "does-not-follow");
+  CHECK(integral(f, "\\int_0^T K(s)\\,ds") == "does-not-follow");
   // Σ_{i=1}^{3} i = 6; Σ_{i=1}^{N} (c a_i + b) = c Σ a_i + N b.
   same("\\sum_{i=1}^{3} i", "6");
   same("\\sum_{i=1}^{N} (k a_i + b)", "k \\sum_{i=1}^{N} a_i + N b");

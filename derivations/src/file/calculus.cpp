@@ -385,8 +385,16 @@ ex integrate(const ex& f, const ex& x, const ex& a, const ex& b, const SignOf& s
       undone += term;
     }
   }
-  if (!undone.is_zero()) {
-    total += GiNaC::integral(x, a, b, undone);
+  // What is left undone, term by term with the factors free of x outside (the integral is
+  // linear: ∫(F + H) is ∫F + ∫H), unless it has many terms (one integral then).
+  const ex left = GiNaC::expand(undone);
+  const std::vector<ex> parts = terms(left);
+  if (parts.size() > 8) {
+    return total + GiNaC::integral(x, a, b, left);
+  }
+  for (const ex& term : parts) {
+    const auto [constant, varying] = split_term(term, [&](const ex& e) { return e.has(x); });
+    total += constant * GiNaC::integral(x, a, b, varying);
   }
   return total;
 }
@@ -413,24 +421,73 @@ ex integrals_by_sign(const ex& e, const SignOf& sign) {
 
 // ---- atoms -------------------------------------------------------------------------------------
 
+namespace {
+
+// The variable of an integral at each depth of nesting, for integrals compared in one form.
+const GiNaC::symbol& bound_variable(std::size_t depth) {
+  static const std::vector<GiNaC::symbol> variables = [] {
+    std::vector<GiNaC::symbol> v;
+    for (int k = 0; k < 8; ++k) {
+      v.emplace_back("x_" + std::to_string(k));
+    }
+    return v;
+  }();
+  return variables[depth];
+}
+
+// @p e with each integral in one form: its variable the one of its depth, its limits in GiNaC's
+// order (and a minus sign where they were swapped), integrals inside likewise; nothing changed
+// past a depth of 8. ∫_0^T F(s) ds and -∫_T^0 F(t) dt are then one expression.
+ex one_form(const ex& e, std::size_t depth) {
+  if (is_a<GiNaC::integral>(e) && depth < 8) {
+    const ex& variable = bound_variable(depth);
+    const ex low = one_form(e.op(1), depth);
+    const ex high = one_form(e.op(2), depth);
+    const ex body = one_form(e.op(3).subs(e.op(0) == variable), depth + 1);
+    return low.compare(high) > 0 ? -GiNaC::integral(variable, high, low, body)
+                                 : GiNaC::integral(variable, low, high, body);
+  }
+  if (e.nops() == 0) {
+    return e;
+  }
+  return map_parts(e, [depth](const ex& part) { return one_form(part, depth); });
+}
+
+}  // namespace
+
 ex Atoms::hide(const ex& e) {
   if (is_atom(e)) {
-    if (const auto found = forward_.find(e); found != forward_.end()) {
-      return found->second;
+    // An integral is kept in one form (its variable renamed, its limits ordered), so that the
+    // same integral written two ways is one quantity.
+    if (is_a<GiNaC::integral>(e)) {
+      const ex form = one_form(e, 0);
+      if (!form.is_equal(e)) {
+        if (is_a<GiNaC::integral>(form)) {
+          return hide_as(form, e);
+        }
+        return -hide_as(-form, -e);
+      }
     }
-    std::ostringstream plain;
-    std::ostringstream latex;
-    plain << GiNaC::dflt << e;
-    latex << GiNaC::latex << e;
-    const ex symbol = GiNaC::realsymbol(plain.str(), latex.str());
-    forward_[e] = symbol;
-    backward_[symbol] = e;
-    return symbol;
+    return hide_as(e, e);
   }
   if (e.nops() == 0) {
     return e;
   }
   return map_parts(e, [this](const ex& part) { return hide(part); });
+}
+
+ex Atoms::hide_as(const ex& key, const ex& e) {
+  if (const auto found = forward_.find(key); found != forward_.end()) {
+    return found->second;
+  }
+  std::ostringstream plain;
+  std::ostringstream latex;
+  plain << GiNaC::dflt << e;
+  latex << GiNaC::latex << e;
+  const ex symbol = GiNaC::realsymbol(plain.str(), latex.str());
+  forward_[key] = symbol;
+  backward_[symbol] = e;
+  return symbol;
 }
 
 ex Atoms::show(const ex& e) const {

@@ -97,6 +97,9 @@ class Atoms {
   [[nodiscard]] const GiNaC::exmap& back() const { return backward_; }
 
  private:
+  // The symbol of the atom @p e, found by @p key (e itself, or an integral's one form).
+  GiNaC::ex hide_as(const GiNaC::ex& key, const GiNaC::ex& e);
+
   GiNaC::exmap forward_;   // atom → its symbol
   GiNaC::exmap backward_;  // symbol → the atom
 };
