@@ -529,6 +529,17 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   CHECK(division("0 < \\theta \\le \\pi/6", "1 - 2\\sin\\theta") == conditional);
   CHECK(division("0 < \\theta < \\pi/3", "2\\cos(2\\theta) + 1") == free);
   CHECK(division("0 < \\theta \\le \\pi/3", "2\\cos(2\\theta) + 1") == conditional);
+  // 3θ on 0 < θ ≤ π/6 reaches π/2, where cos 3θ = 0: its exact value at the end comes with the
+  // fact's own closed end (the argument's double end, moved outward for rounding, is open). On
+  // 0 < θ < π/6, cos 3θ > 0.
+  CHECK(division("0 < \\theta \\le \\pi/6", "\\cos 3\\theta") == conditional);
+  CHECK(division("0 < \\theta < \\pi/6", "\\cos 3\\theta") == free);
+  // x² + x + 1 has no real root (its discriminant is -3), so x³ - 1 = (x - 1)(x² + x + 1) < 0 for
+  // x < 1; at x = 1 it is 0. |x| < 1 on -1 < x < 1, and |x| = 1 at x = -1.
+  CHECK(division("-2 < x < 1", "x^3 - 1") == free);
+  CHECK(division("-2 < x \\le 1", "x^3 - 1") == conditional);
+  CHECK(division("-1 < x < 1", "|x| - 1") == free);
+  CHECK(division("-1 \\le x < 1", "|x| - 1") == conditional);
   // A bound that another fact makes tighter is not an end of the range: with θ ≥ 0 as well,
   // θ > -π/6 leaves θ = 0 in, where 1 - cos θ = 0 (cos(-π/6) is not cos θ's end).
   CHECK(division("\\theta \\ge 0, \\theta > -\\pi/6, \\theta < \\pi/3", "1 - \\cos\\theta") ==

@@ -291,6 +291,20 @@ Sign sign_of(const Range& r) {
   return Sign::unknown;
 }
 
+// @p argument as c x, a rational c ≠ 0 times a symbol x; else nothing.
+std::optional<std::pair<ex, GiNaC::numeric>> multiple_of_symbol(const ex& argument) {
+  ex symbol = argument;
+  GiNaC::numeric c = 1;
+  if (is_a<GiNaC::mul>(argument) && argument.nops() == 2 && is_a<GiNaC::numeric>(argument.op(1))) {
+    symbol = argument.op(0);
+    c = GiNaC::ex_to<GiNaC::numeric>(argument.op(1));
+  }
+  if (!is_a<GiNaC::symbol>(symbol) || !c.is_rational() || c.is_zero()) {
+    return std::nullopt;
+  }
+  return std::pair{symbol, c};
+}
+
 bool function_named(const ex& e, const char* name) {
   return is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == name;
 }
@@ -409,6 +423,7 @@ bool Facts::add(const ex& symbol, Sign sign) {
 }
 
 void Facts::add_relation(const ex& e, Sign sign) {
+  wave_ends_.clear();
   const ex expanded = GiNaC::expand(e);
   if (is_a<GiNaC::symbol>(expanded)) {
     add(expanded, sign);
@@ -501,6 +516,7 @@ void Facts::add_relation(const ex& e, Sign sign) {
 }
 
 void Facts::add_equality(const ex& e) {
+  wave_ends_.clear();
   equalities_.push_back(GiNaC::expand(e));
 }
 
@@ -689,9 +705,41 @@ Sign Facts::sign(const ex& e) const {
   }
   const Sign known = s != Sign::unknown ? s : r;
   if (known == Sign::unknown) {
-    return of_two_relations(e);
+    const Sign combined = of_two_relations(e);
+    return combined != Sign::unknown ? combined : of_quadratic(e);
   }
   return known;
+}
+
+// a x² + b x + c in one of its symbols x, with a of a strict sign and b² - 4 a c < 0: never 0,
+// of a's sign (x² + x + 1 > 0).
+Sign Facts::of_quadratic(const ex& e) const {
+  if (!is_a<GiNaC::add>(e) || e.nops() > 12 || !e.info(GiNaC::info_flags::polynomial)) {
+    return Sign::unknown;
+  }
+  GiNaC::exset symbols;
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (is_a<GiNaC::symbol>(*it)) {
+      symbols.insert(*it);
+    }
+  }
+  if (symbols.size() > 3) {
+    return Sign::unknown;
+  }
+  for (const ex& x : symbols) {
+    if (e.degree(x) != 2) {
+      continue;
+    }
+    const ex a = e.coeff(x, 2);
+    const ex b = e.coeff(x, 1);
+    const ex c = e.coeff(x, 0);
+    const Sign leading = sign(a);
+    if ((leading == Sign::positive || leading == Sign::negative) &&
+        sign(GiNaC::expand(b * b - 4 * a * c)) == Sign::negative) {
+      return leading;
+    }
+  }
+  return Sign::unknown;
 }
 
 // e = λ r + μ q + c with two linear relations r, q of the facts, λ and μ numbers of one sign
@@ -852,8 +900,16 @@ Sign Facts::of_range(const ex& e) const {
     }
     if (function_named(x, "sin") || function_named(x, "cos")) {
       const bool cosine = function_named(x, "cos");
-      const Range a = range(x.op(0));
+      Range a = range(x.op(0));
       const auto [exact_low, exact_high] = exact_wave_ends(x.op(0), cosine, a.low, a.high);
+      if (exact_low || exact_high) {
+        // An exact end is reached as the symbol's own end is: the argument's, moved outward
+        // for rounding, is open (0 < θ ≤ π/6 reaches cos 3θ = 0).
+        const auto& [symbol, c] = *multiple_of_symbol(x.op(0));
+        const Range own = range(symbol);
+        a.low_open = c.is_positive() ? own.low_open : own.high_open;
+        a.high_open = c.is_positive() ? own.high_open : own.low_open;
+      }
       return wave(a, cosine, exact_low, exact_high);
     }
     if (function_named(x, "log")) {
@@ -868,6 +924,20 @@ Sign Facts::of_range(const ex& e) const {
     }
     if (function_named(x, "tan")) {
       return tangent(range(x.op(0)));
+    }
+    if (function_named(x, "abs")) {
+      // |a|: from 0 where a's range holds it (or reaches it), else between its ends' magnitudes.
+      const Range a = range(x.op(0));
+      if (a.low > 0 || (a.low == 0 && a.low_open)) {
+        return a;
+      }
+      if (a.high < 0 || (a.high == 0 && a.high_open)) {
+        return {-a.high, -a.low, a.high_open, a.low_open};
+      }
+      // The larger magnitude, reached if an end of it is (both ends when they are equal).
+      const double top = std::max(a.high, -a.low);
+      const bool open = (a.high != top || a.high_open) && (-a.low != top || a.low_open);
+      return {0, top, false, open};
     }
     if (function_named(x, "exp")) {
       // Increasing, 1 at 0, above 0.
@@ -887,38 +957,50 @@ Sign Facts::of_range(const ex& e) const {
 
 std::pair<std::optional<double>, std::optional<double>> Facts::exact_wave_ends(
     const ex& argument, bool cosine, double low_end, double high_end) const {
-  ex symbol = argument;
-  GiNaC::numeric c = 1;
-  if (is_a<GiNaC::mul>(argument) && argument.nops() == 2 && is_a<GiNaC::numeric>(argument.op(1))) {
-    symbol = argument.op(0);
-    c = GiNaC::ex_to<GiNaC::numeric>(argument.op(1));
-  }
-  const auto found = exact_bounds_.find(symbol);
-  if (!is_a<GiNaC::symbol>(symbol) || !c.is_rational() || c.is_zero() ||
-      found == exact_bounds_.end()) {
-    return {};
-  }
-  // The value at an end of the argument's range, when that end is c times the exact bound (and
-  // not a bound that another fact made tighter).
-  const auto value = [&](const std::optional<ex>& end, double at) -> std::optional<double> {
-    if (!end) {
+  const auto near = [](const std::optional<std::pair<double, double>>& end,
+                       double at) -> std::optional<double> {
+    if (!end || std::abs(end->first - at) > 1e-10 * (1 + std::abs(at))) {
       return std::nullopt;
     }
-    const ex where = GiNaC::evalf(c * *end);
-    if (!is_a<GiNaC::numeric>(where) || std::abs(GiNaC::ex_to<GiNaC::numeric>(where).to_double() -
-                                                 at) > 1e-12 * (1 + std::abs(at))) {
-      return std::nullopt;
-    }
-    const ex v = cosine ? GiNaC::cos(c * *end) : GiNaC::sin(c * *end);
-    if (!is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_rational()) {
-      return std::nullopt;
-    }
-    const Range r = number_range(GiNaC::ex_to<GiNaC::numeric>(v));
-    return r.low == r.high ? std::optional<double>(r.low) : std::nullopt;
+    return end->second;
   };
-  const auto& [low, high] = found->second;
-  return c.is_positive() ? std::pair{value(low, low_end), value(high, high_end)}
-                         : std::pair{value(high, low_end), value(low, high_end)};
+  for (const WaveEnds& known : wave_ends_) {
+    if (known.cosine == cosine && known.argument.is_equal(argument)) {
+      return {near(known.low, low_end), near(known.high, high_end)};
+    }
+  }
+  WaveEnds ends{argument, cosine, std::nullopt, std::nullopt};
+  const auto multiple = multiple_of_symbol(argument);
+  const auto found = multiple ? exact_bounds_.find(multiple->first) : exact_bounds_.end();
+  if (found != exact_bounds_.end()) {
+    const GiNaC::numeric& c = multiple->second;
+    // The value at c times an exact bound, where it is a number a double holds, and where that
+    // is: the argument's end must be there (not at a bound another fact made tighter).
+    const auto value =
+        [&](const std::optional<ex>& end) -> std::optional<std::pair<double, double>> {
+      if (!end) {
+        return std::nullopt;
+      }
+      const ex where = GiNaC::evalf(c * *end);
+      const ex v = cosine ? GiNaC::cos(c * *end) : GiNaC::sin(c * *end);
+      if (!is_a<GiNaC::numeric>(where) || !is_a<GiNaC::numeric>(v) ||
+          !GiNaC::ex_to<GiNaC::numeric>(v).is_rational()) {
+        return std::nullopt;
+      }
+      const Range r = number_range(GiNaC::ex_to<GiNaC::numeric>(v));
+      if (r.low != r.high) {
+        return std::nullopt;
+      }
+      return std::pair{GiNaC::ex_to<GiNaC::numeric>(where).to_double(), r.low};
+    };
+    const auto& [low, high] = found->second;
+    ends.low = value(c.is_positive() ? low : high);
+    ends.high = value(c.is_positive() ? high : low);
+  }
+  if (wave_ends_.size() < 64) {
+    wave_ends_.push_back(ends);
+  }
+  return {near(ends.low, low_end), near(ends.high, high_end)};
 }
 
 bool Facts::nonzero(const ex& e) const {

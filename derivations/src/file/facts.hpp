@@ -100,6 +100,7 @@ class Facts {
       const GiNaC::ex& argument, bool cosine, double low_end, double high_end) const;
   [[nodiscard]] Sign through_relation(const GiNaC::ex& x) const;
   [[nodiscard]] Sign of_two_relations(const GiNaC::ex& e) const;
+  [[nodiscard]] Sign of_quadratic(const GiNaC::ex& e) const;
   /// Whether every relation that can be judged at @p at holds (and, with @p all_judged, every
   /// relation can be).
   [[nodiscard]] bool relations_hold(const GiNaC::exmap& at, bool all_judged) const;
@@ -114,6 +115,15 @@ class Facts {
       bounds_;
   // Whether each bound is strict (a < b), by symbol: low, high.
   std::map<GiNaC::ex, std::pair<bool, bool>, GiNaC::ex_is_less> strict_;
+  // exact_wave_ends' values by argument and function, each with where it is (the argument's end
+  // as a double): the same sines of the same bounds are asked for again and again.
+  struct WaveEnds {
+    GiNaC::ex argument;
+    bool cosine;
+    std::optional<std::pair<double, double>> low;   // at, value
+    std::optional<std::pair<double, double>> high;  // at, value
+  };
+  mutable std::vector<WaveEnds> wave_ends_;
   // Each bound as the fact writes it (π/6, not its double), by symbol: low, high.
   std::map<GiNaC::ex, std::pair<std::optional<GiNaC::ex>, std::optional<GiNaC::ex>>,
            GiNaC::ex_is_less>
