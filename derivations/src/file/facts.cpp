@@ -905,7 +905,8 @@ Sign Facts::of_range(const ex& e) const {
       if (exact_low || exact_high) {
         // An exact end is reached as the symbol's own end is: the argument's, moved outward
         // for rounding, is open (0 < θ ≤ π/6 reaches cos 3θ = 0).
-        const auto& [symbol, c] = *multiple_of_symbol(x.op(0));
+        const auto multiple = multiple_of_symbol(x.op(0));  // (kept: the names below are in it)
+        const auto& [symbol, c] = *multiple;
         const Range own = range(symbol);
         a.low_open = c.is_positive() ? own.low_open : own.high_open;
         a.high_open = c.is_positive() ? own.high_open : own.low_open;
