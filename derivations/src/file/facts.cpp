@@ -773,8 +773,11 @@ Sign Facts::of_two_relations(const ex& e) const {
   const GiNaC::symbol mu("mu");
   for (std::size_t i = 0; i < relations_.size(); ++i) {
     for (std::size_t j = i + 1; j < relations_.size(); ++j) {
-      const auto& [r, r_sign] = relations_[i];
-      const auto& [q, q_sign] = relations_[j];
+      // (Named, not bound: clang 14 cannot capture a structured binding in the lambda below.)
+      const ex& r = relations_[i].first;
+      const Sign r_sign = relations_[i].second;
+      const ex& q = relations_[j].first;
+      const Sign q_sign = relations_[j].second;
       const bool cover = std::all_of(symbols.begin(), symbols.end(),
                                      [&](const ex& v) { return r.has(v) || q.has(v); });
       if (!cover || !linear(r) || !linear(q)) {
