@@ -291,6 +291,32 @@ Sign sign_of(const Range& r) {
   return Sign::unknown;
 }
 
+// |a| over a's range: from 0 where a's range holds it (or reaches it), else between its ends'
+// magnitudes.
+Range magnitude_range(const Range& a) {
+  if (a.low > 0 || (a.low == 0 && a.low_open)) {
+    return a;
+  }
+  if (a.high < 0 || (a.high == 0 && a.high_open)) {
+    return {-a.high, -a.low, a.high_open, a.low_open};
+  }
+  // The larger magnitude, reached if an end of it is (both ends when they are equal).
+  const double top = std::max(a.high, -a.low);
+  const bool open = (a.high != top || a.high_open) && (-a.low != top || a.low_open);
+  return {0, top, false, open};
+}
+
+// exp over a's range: increasing, 1 at 0, above 0.
+Range exponential_range(const Range& a) {
+  const auto at = [](double v, bool low) {
+    if (v == 0 || !std::isfinite(v)) {
+      return v == 0 ? 1.0 : (v > 0 ? infinity : 0.0);
+    }
+    return low ? std::max(0.0, down(std::exp(v))) : up(std::exp(v));
+  };
+  return {at(a.low, true), at(a.high, false), a.low_open, a.high_open};
+}
+
 // @p argument as c x, a rational c ≠ 0 times a symbol x; else nothing.
 std::optional<std::pair<ex, GiNaC::numeric>> multiple_of_symbol(const ex& argument) {
   ex symbol = argument;
@@ -930,29 +956,10 @@ Sign Facts::of_range(const ex& e) const {
       return tangent(range(x.op(0)));
     }
     if (function_named(x, "abs")) {
-      // |a|: from 0 where a's range holds it (or reaches it), else between its ends' magnitudes.
-      const Range a = range(x.op(0));
-      if (a.low > 0 || (a.low == 0 && a.low_open)) {
-        return a;
-      }
-      if (a.high < 0 || (a.high == 0 && a.high_open)) {
-        return {-a.high, -a.low, a.high_open, a.low_open};
-      }
-      // The larger magnitude, reached if an end of it is (both ends when they are equal).
-      const double top = std::max(a.high, -a.low);
-      const bool open = (a.high != top || a.high_open) && (-a.low != top || a.low_open);
-      return {0, top, false, open};
+      return magnitude_range(range(x.op(0)));
     }
     if (function_named(x, "exp")) {
-      // Increasing, 1 at 0, above 0.
-      const Range a = range(x.op(0));
-      const auto at = [](double v, bool low) {
-        if (v == 0 || !std::isfinite(v)) {
-          return v == 0 ? 1.0 : (v > 0 ? infinity : 0.0);
-        }
-        return low ? std::max(0.0, down(std::exp(v))) : up(std::exp(v));
-      };
-      return {at(a.low, true), at(a.high, false), a.low_open, a.high_open};
+      return exponential_range(range(x.op(0)));
     }
     return {};
   };
