@@ -289,8 +289,8 @@ void add_check_command(CLI::App& app) {
                    "a task file (given: premises, target: equation): each derivation file must "
                    "use only its premises and reach its target");
   verb->add_option("--step-seconds", options->step_seconds,
-                   "each step's time budget in seconds (default 2): past it, the step is "
-                   "undecided");
+                   "each step's time budget in seconds of processor time (default 2): past it, "
+                   "the step is undecided");
   verb->add_option("--format,-f", options->format,
                    "text (the default), markdown, json, or csv (derivation files: one row each)")
       ->check(CLI::IsMember({"text", "markdown", "json", "csv"}));

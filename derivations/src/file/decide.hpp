@@ -9,11 +9,11 @@
 
 #include <ginac/ginac.h>
 
-#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "file/clock.hpp"
 #include "file/facts.hpp"
 
 namespace impulse::derivations::file {
@@ -51,13 +51,8 @@ struct Budget {
   std::size_t attempts = 160;  ///< candidate points for a counterexample
   std::size_t candidates = 6;  ///< counterexamples found before the simplest is chosen
   /// When the step's time runs out: past it, the search answers "unknown".
-  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  WorkClock::time_point deadline = WorkClock::time_point::max();
 };
-
-/// Whether @p deadline has passed.
-[[nodiscard]] inline bool past(std::chrono::steady_clock::time_point deadline) {
-  return std::chrono::steady_clock::now() > deadline;
-}
 
 /// @p e simplified where the facts allow it: \sqrt{V^2} is V when V > 0 (-V when V < 0, |V|
 /// otherwise), (b^k)^n is b^{k n} and \ln(a b^k) is \ln a + k \ln b for positive a and b.

@@ -557,7 +557,7 @@ void Reader::relation_agrees(std::size_t at, const ex& difference, Sign sign) co
 void Reader::equalities_agree(std::size_t at) const {
   Budget quick;
   quick.attempts = 0;
-  quick.deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
+  quick.deadline = after(0.5);
   const Implication none = implies({facts_.equalities(), {}, 1, {}}, facts_, quick);
   if (none.outcome == Implication::Outcome::holds) {
     throw source_.error(at,

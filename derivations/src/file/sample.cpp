@@ -341,7 +341,7 @@ class Sampler {
     values_.assign(symbols_.size(), 0.0);
   }
 
-  NumericOpinion run(std::size_t wanted, std::chrono::steady_clock::time_point deadline) {
+  NumericOpinion run(std::size_t wanted, WorkClock::time_point deadline) {
     NumericOpinion opinion;
     try {
       compile_all();
@@ -357,7 +357,7 @@ class Sampler {
     const std::size_t attempts = 6 * wanted + 20;
     bool stopped = false;
     for (std::size_t attempt = 0; attempt < attempts && opinion.points < wanted; ++attempt) {
-      if (std::chrono::steady_clock::now() > deadline) {
+      if (past(deadline)) {
         stopped = true;
         break;
       }
@@ -551,7 +551,7 @@ class Sampler {
 }  // namespace
 
 NumericOpinion sample(const NumericProblem& problem, const Facts& facts, std::uint64_t seed,
-                      std::size_t points, std::chrono::steady_clock::time_point deadline) {
+                      std::size_t points, WorkClock::time_point deadline) {
   num::quiet_gsl();
   Sampler sampler(problem, facts, seed);
   return sampler.run(points, deadline);

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "file/clock.hpp"
 #include "file/facts.hpp"
 #include "numeric.hpp"
 
@@ -71,9 +72,9 @@ class Solver {
 
 /// Evaluates @p problem at up to @p points random points (seeded), stopping at @p deadline (a
 /// counterexample found by then is kept; fewer points only make a verdict less likely).
-[[nodiscard]] NumericOpinion sample(
-    const NumericProblem& problem, const Facts& facts, std::uint64_t seed, std::size_t points,
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
+[[nodiscard]] NumericOpinion sample(const NumericProblem& problem, const Facts& facts,
+                                    std::uint64_t seed, std::size_t points,
+                                    WorkClock::time_point deadline = WorkClock::time_point::max());
 
 /// The size a residual of an expression is measured against: its sums add the absolute values
 /// of their terms, its products multiply them (the terms that cancel in floating point).

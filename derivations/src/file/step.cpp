@@ -343,9 +343,7 @@ EquationResult Checker::check(const std::vector<Equation>& equations, std::size_
 void Checker::decide(const std::vector<Equation>& equations, const Equation& e, std::size_t index,
                      EquationResult& r) {
   Budget budget;
-  budget.deadline = std::chrono::steady_clock::now() +
-                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                        std::chrono::duration<double>(std::max(options_.step_seconds, 0.0)));
+  budget.deadline = after(options_.step_seconds);
   const Scalars step = scalars_of(e, e.substitutions);
   Scalars before;
   for (const std::size_t p : e.premises) {
@@ -422,7 +420,7 @@ void Checker::premises_agree(const std::vector<Equation>& equations, std::size_t
   }
   Budget quick;
   quick.attempts = 0;
-  quick.deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(300);
+  quick.deadline = after(0.3);
   Implication none;
   try {
     none = implies({all.differences, all.denominators, 1, {}}, equations[index].facts, quick);
@@ -1055,9 +1053,7 @@ void Checker::condition(const Implication& forward, const Scalars& before, const
 bool Checker::follows(const std::vector<const Equation*>& premises, const Equation& target,
                       const Facts& facts, double seconds, bool both) {
   Budget budget;
-  budget.deadline = std::chrono::steady_clock::now() +
-                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                        std::chrono::duration<double>(seconds));
+  budget.deadline = after(seconds);
   Scalars before;
   for (const Equation* p : premises) {
     before.append(scalars_of(*p, p->substitutions));
