@@ -3,6 +3,9 @@
 // letter, a name in \mathrm{…}, then a subscript and primes in either order.
 #include "file/grammar.hpp"
 
+#include <optional>
+#include <string>
+
 namespace impulse::derivations::file {
 
 // symbol := letter-part {'_' subscript | "'" | '^' primes}
@@ -216,12 +219,31 @@ int Grammar::read_prime_script() {
   return count;
 }
 
-// subscript := letter | digit | greek | '\perp' | '\parallel' | name-command '{' name '}'
-//            | '{' {letter | digit | greek | name-command '{' name '}' | ',' | '(' | ')'} '}'
+namespace {
+
+// \max and \min, which LaTeX sets upright as operator names, read in a subscript as the words
+// they print (v_{\max} is v_\text{max}); nothing else.
+std::optional<std::string> subscript_word(const Token& t) {
+  if (t.kind == Tok::command && (t.text == "\\max" || t.text == "\\min")) {
+    return t.text.substr(1);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+// subscript := letter | digit | greek | '\perp' | '\parallel' | '\max' | '\min'
+//            | name-command '{' name '}'
+//            | '{' {letter | digit | greek | '\max' | '\min' | name-command '{' name '}' | ','
+//                   | '(' | ')'} '}'
 std::string Grammar::subscript(std::size_t depth) {
   const Token& t = peek_raw();
   if (t.kind == Tok::letter) {
     return take().text;
+  }
+  if (const std::optional<std::string> word = subscript_word(t)) {
+    take();
+    return *word;
   }
   if (t.kind == Tok::number) {
     return single_digit(t, true).text;
@@ -259,6 +281,13 @@ std::string Grammar::subscript(std::size_t depth) {
         text += ' ';
       }
       text += name_group(command_token);
+      after_command = false;
+    } else if (const std::optional<std::string> word = subscript_word(s)) {
+      take();
+      if (after_command) {
+        text += ' ';
+      }
+      text += *word;
       after_command = false;
     } else if (is_char(s, ',') || is_char(s, '(') || is_char(s, ')')) {
       // a_{vi(elastic)}: the paper's names of its coefficients carry a word in parentheses
