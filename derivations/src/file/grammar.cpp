@@ -432,34 +432,14 @@ Node Grammar::postfix(std::size_t depth, Node base) {
                   "write (-2)^2 or -2^2");
     }
     const Token caret = take();
-    if (is_char(token(position_), '{') && is_char(token(position_ + 1), '(') &&
-        (token(position_ + 2).kind == Tok::number || token(position_ + 2).kind == Tok::letter) &&
-        is_char(token(position_ + 3), ')') && is_char(token(position_ + 4), '}')) {
-      // x^{(2)}: the second derivative, or a label (the second of a series), more often than
-      // the square (x^{(1)} = x followed).
-      throw error(token(position_ + 1),
-                  "expected an exponent without parentheses: x^{(2)} is the second derivative "
-                  "or a label more often than a power; write x^2 for the power, \\ddot x or x_2 "
-                  "for the others");
-    }
-    Node exponent = script(depth + 1, caret);
-    if (is_char(peek_raw(), '_') && base.kind == NodeKind::symbol &&
-        base.symbol.subscript.empty()) {
-      take();
-      base.symbol.subscript = subscript(depth + 1);
-      base.end = last_end_;
-    }
-    Node power = make(NodeKind::power, base.offset);
-    power.children.push_back(std::move(base));
-    power.children.push_back(std::move(exponent));
-    power.end = last_end_;
+    base = degrees_follow() ? degrees(std::move(base), caret)
+                            : power_of(depth, std::move(base), caret);
     if (is_char(peek_raw(), '^')) {
       throw error(peek_raw(), "expected one exponent, found a second '^' (write {x^a}^b)");
     }
     if (is_char(peek_raw(), '\'')) {
       throw error(peek_raw(), "expected primes on a symbol before its exponent (p'^2)");
     }
-    base = std::move(power);
   }
   if (is_char(peek_raw(), '!')) {
     const Token bang = take();
@@ -501,6 +481,67 @@ void Grammar::refuse_bar_after_sum(const Node& sum) const {
                  "expected \\left[ … \\right]_a^b (or \\left. … \\right|_a^b) around a sum "
                  "before an evaluation bar: after a + b it stands on b alone as read, on the "
                  "whole sum as meant");
+}
+
+// The power after '^' (already taken): its exponent read, x^2; v^2_1 is (v_1)^2.
+Node Grammar::power_of(std::size_t depth, Node base, const Token& caret) {
+  if (is_char(token(position_), '{') && is_char(token(position_ + 1), '(') &&
+      (token(position_ + 2).kind == Tok::number || token(position_ + 2).kind == Tok::letter) &&
+      is_char(token(position_ + 3), ')') && is_char(token(position_ + 4), '}')) {
+    // x^{(2)}: the second derivative, or a label (the second of a series), more often than
+    // the square (x^{(1)} = x followed).
+    throw error(token(position_ + 1),
+                "expected an exponent without parentheses: x^{(2)} is the second derivative "
+                "or a label more often than a power; write x^2 for the power, \\ddot x or x_2 "
+                "for the others");
+  }
+  Node exponent = script(depth + 1, caret);
+  if (is_char(peek_raw(), '_') && base.kind == NodeKind::symbol && base.symbol.subscript.empty()) {
+    take();
+    base.symbol.subscript = subscript(depth + 1);
+    base.end = last_end_;
+  }
+  Node power = make(NodeKind::power, base.offset);
+  power.children.push_back(std::move(base));
+  power.children.push_back(std::move(exponent));
+  power.end = last_end_;
+  return power;
+}
+
+// 30^\circ or 30^{\circ} (degrees) after '^', before the exponent is read.
+bool Grammar::degrees_follow() const {
+  return is_command(token(position_), "\\circ") ||
+         (is_char(token(position_), '{') && is_command(token(position_ + 1), "\\circ") &&
+          is_char(token(position_ + 2), '}'));
+}
+
+// A number of degrees, 30^\circ, read as the angle in radians it is, 30π/180 (a degree sign has
+// no other reading); after anything but a number it is refused: θ^\circ could name the angle θ
+// in degrees or be θ, an angle in radians, times π/180.
+Node Grammar::degrees(Node number, const Token& caret) {
+  if (number.kind != NodeKind::number) {
+    throw error(caret,
+                "expected a number before ^\\circ (30^\\circ is read as 30\\pi/180): "
+                "an angle in degrees written as a symbol is not read; write the angle in "
+                "radians, or as a number of degrees");
+  }
+  const bool braced = is_char(token(position_), '{');
+  take();  // \circ, or {
+  if (braced) {
+    take();  // \circ
+    take();  // }
+  }
+  Node turn = make(NodeKind::product, number.offset);
+  turn.children.push_back(std::move(number));
+  turn.children.push_back(make(NodeKind::pi, caret.offset));
+  turn.ops = "  ";
+  Node half_turn = make(NodeKind::number, caret.offset);
+  half_turn.text = "180";
+  Node angle = make(NodeKind::fraction, turn.offset);
+  angle.children.push_back(std::move(turn));
+  angle.children.push_back(std::move(half_turn));
+  angle.end = last_end_;
+  return angle;
 }
 
 bool Grammar::bar_ahead() {

@@ -89,6 +89,9 @@ class Grammar {
   Node term(std::size_t depth);
   Node factor(std::size_t depth);
   Node postfix(std::size_t depth, Node base);
+  Node power_of(std::size_t depth, Node base, const Token& caret);
+  [[nodiscard]] bool degrees_follow() const;
+  Node degrees(Node number, const Token& caret);
   bool bar_ahead();
   Node bar(std::size_t depth, Node base);
   Node script(std::size_t depth, const Token& caret);

@@ -234,10 +234,12 @@ class Tokenizer {
     while (j < text_.size() && (static_cast<unsigned char>(text_[j]) & 0xC0U) == 0x80U) {
       ++j;
     }
-    throw source_.error(base_ + i, "expected LaTeX, found the character '" +
-                                       std::string(text_.substr(i, j - i)) +
-                                       "' (write Greek letters and symbols as commands, e.g. "
-                                       "\\omega)");
+    const std::string_view found = text_.substr(i, j - i);
+    throw source_.error(base_ + i,
+                        "expected LaTeX, found the character '" + std::string(found) +
+                            (found == "\u00B0" ? "' (write degrees as 30^\\circ)"
+                                               : "' (write Greek letters and symbols as commands, "
+                                                 "e.g. \\omega)"));
   }
 
   const Source& source_;
