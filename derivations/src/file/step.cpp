@@ -803,6 +803,29 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
   forward.conditions = kept;
   if (kept.empty()) {
     forward.outcome = Implication::Outcome::holds;
+    return;
+  }
+  // Conditions that the equations before and the facts never allow together: x^2 = y^2 then
+  // x = y under x ≥ 0 ≥ y holds where x + y ≠ 0, but x + y = 0 wherever x^2 = y^2 there. The step
+  // then holds nowhere but where it is trivially true (x = y = 0), and the point found where a
+  // condition is 0 (x = 1, y = -1) is a counterexample.
+  if (!forward.point || step.differences.size() != 1) {
+    return;
+  }
+  std::vector<ex> premises = before.differences;
+  premises.insert(premises.end(), facts.equalities().begin(), facts.equalities().end());
+  ex product = 1;
+  for (const ex& c : kept) {
+    product *= c;
+  }
+  const Implication never = implies({premises, before.denominators, product, {}}, facts, quick);
+  if (never.outcome == Implication::Outcome::holds) {
+    forward.outcome = Implication::Outcome::fails;
+    forward.conditions.clear();
+    forward.residual = step.differences[0];
+    forward.how += std::string(forward.how.empty() ? "" : "; ") + "it holds only where " +
+                   plain_of(sym::up_to_sign(product)) +
+                   " != 0, which the equations before and the facts never allow";
   }
 }
 
