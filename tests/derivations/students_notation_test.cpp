@@ -160,6 +160,32 @@ TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students
                  "|\\vec a|$$") == std::vector<std::string>{"premise", "follows-one-way"});
 }
 
+TEST_CASE("Students' pasted characters: Greek letters, the micro sign, \u2264 and \u2265",
+          "[derivations][students-notation]") {
+  // Each the LaTeX command unicode-math gives it (they were refused as "expected LaTeX"): ε is
+  // \varepsilon and ϵ \epsilon, φ \varphi and ϕ \phi; the micro sign µ is \mu.
+  same("\u03B8", "\\theta");
+  same("\u03C9 t", "\\omega t");
+  same("\u0394 p", "\\Delta p");
+  same("\u00B5 N", "\\mu N");
+  same("\u03BC N", "\\mu N");
+  same("\u03B5", "\\varepsilon");
+  same("\u03D5", "\\phi");
+  same("2\u03C0", "2\\pi");
+  // θ is \theta, and a file that writes \vartheta too is refused as one with both.
+  refused("$$a = \u03B8$$\n\n$$a = \\vartheta$$", 3, 7, "\\theta and \\vartheta");
+  // ≤ and ≥ in a fact: x ≥ 1 keeps x from 0 (J = p q / x follows), x ≥ 0 does not.
+  const auto division = [](const std::string& fact) {
+    return verdicts("assume: " + fact + "\n\n$$J x = p q$$\n\n$$J = \\frac{p q}{x}$$").back();
+  };
+  CHECK(division("x \u2265 1") == "follows");
+  CHECK(division("x \u2265 0") == "follows-if");
+  CHECK(division("0 \u2264 -x") == "follows-if");
+  CHECK(division("1 \u2264 x \u2264 2") == "follows");
+  // Anything else is refused at its place.
+  refused("$$a = 5 \u2603$$", 1, 9, "expected LaTeX, found the character");
+}
+
 TEST_CASE("Students' degrees: a number of degrees is its angle in radians",
           "[derivations][students-notation]") {
   // 30° = 30π/180 = π/6 and 60° = π/3 (before, ^\circ was refused as "expected an exponent").

@@ -369,7 +369,8 @@ const char* const fact_forms =
     "e \\in [0, 1], or \\|\\vec n\\| = 1 (a unit vector)";
 
 bool holds_relation(std::string_view piece) {
-  for (const char* r : {"<", ">", "=", "\\le", "\\ge", "\\ne", "\\lt", "\\gt", "\\in"}) {
+  for (const char* r :
+       {"<", ">", "=", "\\le", "\\ge", "\\ne", "\\lt", "\\gt", "\\in", "\u2264", "\u2265"}) {
     if (piece.find(r) != std::string_view::npos) {
       return true;
     }

@@ -213,15 +213,58 @@ class Tokenizer {
     return close + 1;
   }
 
-  // A few characters that people paste from documents, read as their LaTeX.
+  // A few characters that people paste from documents, read as their LaTeX: the Greek letters
+  // as unicode-math writes them (ε is \\varepsilon and ϵ \\epsilon, φ \\varphi and ϕ \\phi, the
+  // micro sign µ \\mu), ≤ and ≥.
   std::size_t unicode(std::size_t i, Token& token) const {
-    const std::array<std::pair<std::string_view, std::pair<Tok, std::string_view>>, 6> known{{
+    using Meaning = std::pair<Tok, std::string_view>;
+    static constexpr std::array<std::pair<std::string_view, Meaning>, 46> known{{
         {"\u2032", {Tok::character, "'"}},      // prime
         {"\u00B7", {Tok::command, "\\cdot"}},   // middle dot
         {"\u22C5", {Tok::command, "\\cdot"}},   // dot operator
         {"\u2212", {Tok::character, "-"}},      // minus sign
         {"\u00D7", {Tok::command, "\\times"}},  // multiplication sign
         {"\u00A0", {Tok::end, ""}},             // no-break space
+        {"\u2264", {Tok::command, "\\le"}},     // less-than or equal to
+        {"\u2265", {Tok::command, "\\ge"}},     // greater-than or equal to
+        {"\u00B5", {Tok::command, "\\mu"}},     // micro sign
+        {"\u03B1", {Tok::command, "\\alpha"}},
+        {"\u03B2", {Tok::command, "\\beta"}},
+        {"\u03B3", {Tok::command, "\\gamma"}},
+        {"\u03B4", {Tok::command, "\\delta"}},
+        {"\u03B5", {Tok::command, "\\varepsilon"}},
+        {"\u03F5", {Tok::command, "\\epsilon"}},
+        {"\u03B6", {Tok::command, "\\zeta"}},
+        {"\u03B7", {Tok::command, "\\eta"}},
+        {"\u03B8", {Tok::command, "\\theta"}},
+        {"\u03D1", {Tok::command, "\\vartheta"}},
+        {"\u03B9", {Tok::command, "\\iota"}},
+        {"\u03BA", {Tok::command, "\\kappa"}},
+        {"\u03BB", {Tok::command, "\\lambda"}},
+        {"\u03BC", {Tok::command, "\\mu"}},
+        {"\u03BD", {Tok::command, "\\nu"}},
+        {"\u03BE", {Tok::command, "\\xi"}},
+        {"\u03C0", {Tok::command, "\\pi"}},
+        {"\u03C1", {Tok::command, "\\rho"}},
+        {"\u03C3", {Tok::command, "\\sigma"}},
+        {"\u03C4", {Tok::command, "\\tau"}},
+        {"\u03C5", {Tok::command, "\\upsilon"}},
+        {"\u03C6", {Tok::command, "\\varphi"}},
+        {"\u03D5", {Tok::command, "\\phi"}},
+        {"\u03C7", {Tok::command, "\\chi"}},
+        {"\u03C8", {Tok::command, "\\psi"}},
+        {"\u03C9", {Tok::command, "\\omega"}},
+        {"\u0393", {Tok::command, "\\Gamma"}},
+        {"\u0394", {Tok::command, "\\Delta"}},
+        {"\u0398", {Tok::command, "\\Theta"}},
+        {"\u039B", {Tok::command, "\\Lambda"}},
+        {"\u039E", {Tok::command, "\\Xi"}},
+        {"\u03A0", {Tok::command, "\\Pi"}},
+        {"\u03A3", {Tok::command, "\\Sigma"}},
+        {"\u03A5", {Tok::command, "\\Upsilon"}},
+        {"\u03A6", {Tok::command, "\\Phi"}},
+        {"\u03A8", {Tok::command, "\\Psi"}},
+        {"\u03A9", {Tok::command, "\\Omega"}},
     }};
     for (const auto& [text, meaning] : known) {
       if (text_.substr(i, text.size()) == text) {
