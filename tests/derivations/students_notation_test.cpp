@@ -802,6 +802,23 @@ TEST_CASE("An odd root is the real one", "[derivations][students-notation]") {
   CHECK(verdicts("$$z = \\sqrt{x^2}$$\n\n$$z = x$$").back() != "follows");
 }
 
+TEST_CASE("A root of 1/y is 1/√y only where y > 0", "[derivations][students-notation]") {
+  // GiNaC writes √(1/y) as y^{-1/2} at once, though at y = -1 √(1/y) = √(-1) = i and
+  // 1/√y = 1/i = -i: x = 1/y then √x = 1/√y followed for every y, and x y = 4 then √x √y = 2
+  // (x = 4/y put in) followed too, though at x = y = -2 √x √y = (i√2)(i√2) = -2. The two signs of
+  // y are now cases: y > 0, where the rewriting holds, and y < 0, where the root is its value.
+  const auto step = [](const std::string& text) { return verdicts(text).back(); };
+  CHECK(step("$$x y = 4$$\n\n$$\\sqrt{x}\\sqrt{y} = 2$$") == "does-not-follow");
+  const std::string positive =
+      step("assume: x > 0, y > 0\n\n$$x y = 4$$\n\n$$\\sqrt{x}\\sqrt{y} = 2$$");
+  CHECK((positive == "follows" || positive == "follows-one-way"));
+  // Where y < 0 both sides of √x = 1/√y are imaginary (i and -i at y = -1), and no counterexample
+  // with real sides exists: undecided, not follows. With y > 0 it follows.
+  CHECK(step("$$x = \\frac{1}{y}$$\n\n$$\\sqrt{x} = \\frac{1}{\\sqrt{y}}$$") == "undecided");
+  CHECK(step("assume: y > 0\n\n$$x = \\frac{1}{y}$$\n\n$$\\sqrt{x} = \\frac{1}{\\sqrt{y}}$$") ==
+        "follows");
+}
+
 TEST_CASE("A counterexample fails the step in exact arithmetic",
           "[derivations][students-notation]") {
   // The ballistic pendulum: u = (m + M) V / m and V = √(2 g h) (u > 0 makes V > 0), so the step

@@ -573,6 +573,66 @@ ex safe_numerator(const ex& e, double terms) {
 
 namespace {
 
+// The first X of @p e such that putting @p value for @p symbol makes a non-integer power of
+// k/X (k > 0 a number): GiNaC writes (k/X)^c as k^c X^{-c} at once, which is false for a real
+// X < 0 (√(1/X) = i/√|X|, but X^{-1/2} = -i/√|X|), so that x = 1/y would give √x = 1/√y for
+// every y. Nothing when there is none.
+std::optional<ex> reciprocal_under_power(const ex& e, const ex& symbol, const ex& value) {
+  for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+    if (!is_a<GiNaC::power>(*i) || i->op(1).info(GiNaC::info_flags::integer) ||
+        !i->op(0).has(symbol)) {
+      continue;
+    }
+    // The base as it will be, built without evaluating its power: its factors in turn.
+    const ex base = i->op(0).subs(GiNaC::exmap{{symbol, value}});
+    ex rest = base;
+    if (is_a<GiNaC::mul>(base) && base.nops() == 2 && is_a<numeric>(base.op(1)) &&
+        GiNaC::ex_to<numeric>(base.op(1)).is_positive()) {
+      rest = base.op(0);
+    }
+    if (is_a<GiNaC::power>(rest) && rest.op(1).is_equal(-1)) {
+      return rest.op(0);
+    }
+  }
+  return std::nullopt;
+}
+
+// @p e with @p value put for @p symbol where @p under < 0: a non-integer power of k/under is
+// written k^c (-1)^c (-under)^{-c}, its value there ((k/X)^c = (k/|X|)^c e^{iπc} for X < 0),
+// which GiNaC leaves as it is.
+ex put_in_below_zero(const ex& e, const ex& symbol, const ex& value, const ex& under) {
+  struct Each : GiNaC::map_function {
+    const ex& symbol;
+    const ex& value;
+    const ex& under;
+    Each(const ex& s, const ex& v, const ex& u) : symbol(s), value(v), under(u) {}
+    ex operator()(const ex& part) override {
+      if (!part.has(symbol)) {
+        return part;
+      }
+      if (part.nops() == 0) {
+        return part.subs(GiNaC::exmap{{symbol, value}});
+      }
+      if (is_a<GiNaC::power>(part) && !part.op(1).info(GiNaC::info_flags::integer)) {
+        const ex base = part.op(0).subs(GiNaC::exmap{{symbol, value}});
+        const ex c = part.op(1).subs(GiNaC::exmap{{symbol, value}});
+        ex k = 1;
+        ex rest = base;
+        if (is_a<GiNaC::mul>(base) && base.nops() == 2 && is_a<numeric>(base.op(1)) &&
+            GiNaC::ex_to<numeric>(base.op(1)).is_positive()) {
+          k = base.op(1);
+          rest = base.op(0);
+        }
+        if (is_a<GiNaC::power>(rest) && rest.op(1).is_equal(-1) && rest.op(0).is_equal(under)) {
+          return GiNaC::pow(k, c) * GiNaC::pow(-1, c) * GiNaC::pow(-under, -c);
+        }
+      }
+      return part.map(*this);
+    }
+  } each(symbol, value, under);
+  return each(e);
+}
+
 struct Solved {
   ex symbol;
   ex value;
@@ -809,20 +869,83 @@ class Decider {
     return best;
   }
 
-  Found eliminate(const Frame& frame, const std::vector<ex>& premises, const Choice& choice) {
+  // The case of a sign of X, where the value put in makes a non-integer power of k/X (x = 1/y
+  // put into √x): X > 0, where GiNaC's rewriting (k/X)^c = k^c X^{-c} holds, or X < 0, where
+  // the power is written as its value there.
+  struct SignCase {
+    ex under;       // X
+    bool negative;  // X < 0
+  };
+
+  // x = 1/y put into √x: two cases, y > 0 and y < 0 (y ≠ 0 where 1/y is defined); a failure in
+  // either is one of the step, and it holds where it holds in both.
+  Found by_sign(const Frame& frame, const std::vector<ex>& premises, const Choice& choice,
+                const ex& under) {
+    const Facts outer = facts_;
+    std::vector<Found> cases;
+    for (const bool negative : {false, true}) {
+      if (facts_.sign(under) == (negative ? Sign::positive : Sign::negative)) {
+        continue;  // the facts leave this case out
+      }
+      facts_.add_relation(under, negative ? Sign::negative : Sign::positive);
+      cases.push_back(eliminate(frame, premises, choice, SignCase{under, negative}));
+      facts_ = outer;
+      cases.back().how.insert(cases.back().how.begin(),
+                              "where " + text(under) + (negative ? " < 0" : " > 0"));
+      if (cases.back().outcome == Implied::fails) {
+        return cases.back();
+      }
+    }
+    Found all = cases.front();
+    for (const Found& f : cases) {
+      if (f.outcome == Implied::unknown) {
+        return unknown(frame, "a root of 1/(" + text(under) + ") once " + text(choice.symbol) +
+                                  " is put in, undecided where " + text(under) +
+                                  " < 0 (there it is not 1/√X)");
+      }
+      if (f.outcome == Implied::holds_if) {
+        all.outcome = Implied::holds_if;
+        all.conditions_needed = all.conditions_needed && f.conditions_needed;
+        for (const ex& c : f.conditions) {
+          if (std::none_of(all.conditions.begin(), all.conditions.end(),
+                           [&](const ex& k) { return k.is_equal(c); })) {
+            all.conditions.push_back(c);
+          }
+        }
+      }
+    }
+    return all;
+  }
+
+  Found eliminate(const Frame& frame, const std::vector<ex>& premises, const Choice& choice,
+                  const std::optional<SignCase>& sign_case = std::nullopt) {
     const ex value = -choice.rest / choice.coefficient;
+    if (!sign_case) {
+      std::vector<ex> all = premises;
+      all.push_back(frame.target);
+      for (const ex& e : all) {
+        const std::optional<ex> under = reciprocal_under_power(e, choice.symbol, value);
+        if (under && facts_.sign(*under) != Sign::positive) {
+          return by_sign(frame, premises, choice, *under);
+        }
+      }
+    }
+    const auto put_in = [&](const ex& e) {
+      return sign_case && sign_case->negative
+                 ? put_in_below_zero(e, choice.symbol, value, sign_case->under)
+                 : e.subs(GiNaC::exmap{{choice.symbol, value}});
+    };
     Frame child;
     child.depth = frame.depth + 1;
     child.solved = frame.solved;
     child.solved.push_back({choice.symbol, value, choice.coefficient});
-    const GiNaC::exmap substitution{{choice.symbol, value}};
     try {
       for (std::size_t i = 0; i < premises.size(); ++i) {
         if (i != choice.premise) {
-          child.premises.push_back(premises[i].subs(substitution));
+          child.premises.push_back(put_in(premises[i]));
         }
       }
-      child.target = frame.target.subs(substitution);
+      child.target = put_in(frame.target);
     } catch (const std::exception&) {
       // A denominator vanishes on the whole case: no point of it is one where the equations
       // are defined, so it holds nothing against the step.
