@@ -445,27 +445,20 @@ bool within(const ex& u, const ex& low, const ex& high, bool open, const Facts& 
   if (!is_a<GiNaC::symbol>(u)) {
     return false;
   }
-  const auto [low_bound, high_bound] = facts.exact_bounds(u);
-  const Sign sign = facts.of_symbol(u);
-  // Whether an end (its value, strict or not) keeps u on the right side of `limit`.
-  const auto keeps = [&](const std::optional<ex>& bound, bool strict, const ex& limit, bool above) {
-    if (!bound) {
+  // Whether an end keeps u on the right side of `limit`.
+  const auto keeps = [open](const std::optional<Facts::End>& end, const ex& limit, bool above) {
+    if (!end) {
       return false;
     }
-    const ex gap = GiNaC::evalf(above ? *bound - limit : limit - *bound);
+    const ex gap = GiNaC::evalf(above ? end->at - limit : limit - end->at);
     if (!is_a<numeric>(gap)) {
       return false;
     }
     const numeric& g = GiNaC::ex_to<numeric>(gap);
-    return g.is_positive() || (g.is_zero() && (strict || !open));
+    return g.is_positive() || (g.is_zero() && (end->strict || !open));
   };
-  const bool low_sign = sign == Sign::positive || sign == Sign::nonnegative;
-  const bool high_sign = sign == Sign::negative || sign == Sign::nonpositive;
-  const bool above = keeps(low_bound, facts.strict_bound(u, false), low, true) ||
-                     (low_sign && keeps(ex(0), sign == Sign::positive, low, true));
-  const bool below = keeps(high_bound, facts.strict_bound(u, true), high, false) ||
-                     (high_sign && keeps(ex(0), sign == Sign::negative, high, false));
-  return above && below;
+  const auto ends = facts.exact_ends(u);
+  return keeps(ends.first, low, true) && keeps(ends.second, high, false);
 }
 
 // arcsin(sin u) = u where -π/2 ≤ u ≤ π/2, arccos(cos u) = u where 0 ≤ u ≤ π, arctan(tan u) = u
@@ -1861,18 +1854,12 @@ void from_tangents(Found& found, const TrigRewrite& rewrite, const ex& target, c
 // odd multiple of π, where the tangent of its half is infinite: 0 < θ < π does not, 0 < θ ≤ π
 // and θ ≥ 0 do. A closed end within 1e-9 of such a multiple counts as reaching it.
 bool reaches_odd_pi(const ex& angle, const Facts& facts) {
-  const ex expanded = GiNaC::expand(angle);
-  ex symbol;
-  numeric k = 1;
-  if (is_a<GiNaC::symbol>(expanded)) {
-    symbol = expanded;
-  } else if (is_a<GiNaC::mul>(expanded) && expanded.nops() == 2 && is_a<numeric>(expanded.op(1)) &&
-             is_a<GiNaC::symbol>(expanded.op(0))) {
-    symbol = expanded.op(0);
-    k = GiNaC::ex_to<numeric>(expanded.op(1));
-  } else {
+  const auto multiple = multiple_of_symbol(GiNaC::expand(angle));
+  if (!multiple) {
     return true;  // ω t, θ + φ: some value reaches it
   }
+  const ex symbol = multiple->first;
+  const numeric k = multiple->second;
   const auto [low, high] = facts.bounds(symbol);
   const Sign sign = facts.of_symbol(symbol);
   const double pi = 3.14159265358979323846;
@@ -2054,40 +2041,13 @@ Facts with_tangents(const Facts& facts, const TrigRewrite& rewrite) {
   Facts result = facts;
   const double half_pi = 3.14159265358979323846 / 2;
   for (const auto& [tau, angle] : rewrite.tangents) {
-    const ex expanded = GiNaC::expand(angle);
-    ex symbol = expanded;
-    numeric k = 1;
-    if (is_a<GiNaC::mul>(expanded) && expanded.nops() == 2 && is_a<numeric>(expanded.op(1))) {
-      symbol = expanded.op(0);
-      k = GiNaC::ex_to<numeric>(expanded.op(1));
-    }
-    if (!is_a<GiNaC::symbol>(symbol) || !k.is_rational() || k.is_zero()) {
+    const auto multiple = multiple_of_symbol(GiNaC::expand(angle));
+    if (!multiple) {
       continue;
     }
+    const numeric k = multiple->second;
     // Each end of the symbol: the tighter of its bound and its sign's 0, and whether it is strict.
-    const auto [low_bound, high_bound] = facts.exact_bounds(symbol);
-    const Sign sign = facts.of_symbol(symbol);
-    const auto end = [&](const std::optional<ex>& bound,
-                         bool high) -> std::optional<std::pair<ex, bool>> {
-      const bool from_sign = high ? (sign == Sign::negative || sign == Sign::nonpositive)
-                                  : (sign == Sign::positive || sign == Sign::nonnegative);
-      const bool sign_strict = sign == Sign::positive || sign == Sign::negative;
-      if (bound) {
-        const double b = GiNaC::ex_to<numeric>(GiNaC::evalf(*bound)).to_double();
-        if (!from_sign || (high ? b < 0 : b > 0)) {
-          return std::pair{*bound, facts.strict_bound(symbol, high)};
-        }
-        if (b == 0) {
-          return std::pair{ex(0), sign_strict || facts.strict_bound(symbol, high)};
-        }
-      }
-      if (from_sign) {
-        return std::pair{ex(0), sign_strict};
-      }
-      return std::nullopt;
-    };
-    auto low = end(low_bound, false);
-    auto high = end(high_bound, true);
+    auto [low, high] = facts.exact_ends(multiple->first);
     if (!low || !high) {
       continue;
     }
@@ -2095,8 +2055,8 @@ Facts with_tangents(const Facts& facts, const TrigRewrite& rewrite) {
       std::swap(low, high);
     }
     // The half angle's ends, within one branch.
-    const ex half_low = k * low->first / 2;
-    const ex half_high = k * high->first / 2;
+    const ex half_low = k * low->at / 2;
+    const ex half_high = k * high->at / 2;
     const ex low_value = GiNaC::evalf(half_low);
     const ex high_value = GiNaC::evalf(half_high);
     if (!is_a<numeric>(low_value) || !is_a<numeric>(high_value)) {
@@ -2109,11 +2069,11 @@ Facts with_tangents(const Facts& facts, const TrigRewrite& rewrite) {
     }
     if (a > -half_pi + 1e-9) {
       result.add_relation(tau - GiNaC::tan(half_low),
-                          low->second ? Sign::positive : Sign::nonnegative);
+                          low->strict ? Sign::positive : Sign::nonnegative);
     }
     if (b < half_pi - 1e-9) {
       result.add_relation(tau - GiNaC::tan(half_high),
-                          high->second ? Sign::negative : Sign::nonpositive);
+                          high->strict ? Sign::negative : Sign::nonpositive);
     }
   }
   return result;

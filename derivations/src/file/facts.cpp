@@ -317,20 +317,6 @@ Range exponential_range(const Range& a) {
   return {at(a.low, true), at(a.high, false), a.low_open, a.high_open};
 }
 
-// @p argument as c x, a rational c ≠ 0 times a symbol x; else nothing.
-std::optional<std::pair<ex, GiNaC::numeric>> multiple_of_symbol(const ex& argument) {
-  ex symbol = argument;
-  GiNaC::numeric c = 1;
-  if (is_a<GiNaC::mul>(argument) && argument.nops() == 2 && is_a<GiNaC::numeric>(argument.op(1))) {
-    symbol = argument.op(0);
-    c = GiNaC::ex_to<GiNaC::numeric>(argument.op(1));
-  }
-  if (!is_a<GiNaC::symbol>(symbol) || !c.is_rational() || c.is_zero()) {
-    return std::nullopt;
-  }
-  return std::pair{symbol, c};
-}
-
 bool function_named(const ex& e, const char* name) {
   return is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == name;
 }
@@ -1029,6 +1015,44 @@ std::pair<std::optional<ex>, std::optional<ex>> Facts::exact_bounds(const ex& sy
   const auto found = exact_bounds_.find(symbol);
   return found == exact_bounds_.end() ? std::pair<std::optional<ex>, std::optional<ex>>{}
                                       : found->second;
+}
+
+std::pair<std::optional<Facts::End>, std::optional<Facts::End>> Facts::exact_ends(
+    const ex& symbol) const {
+  const auto [low_bound, high_bound] = exact_bounds(symbol);
+  const Sign sign = of_symbol(symbol);
+  const auto end = [&](const std::optional<ex>& bound, bool high) -> std::optional<End> {
+    const bool from_sign = high ? (sign == Sign::negative || sign == Sign::nonpositive)
+                                : (sign == Sign::positive || sign == Sign::nonnegative);
+    const bool sign_strict = sign == Sign::positive || sign == Sign::negative;
+    if (bound) {
+      const double b = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(*bound)).to_double();
+      if (!from_sign || (high ? b < 0 : b > 0)) {
+        return End{*bound, strict_bound(symbol, high)};
+      }
+      if (b == 0) {
+        return End{ex(0), sign_strict || strict_bound(symbol, high)};
+      }
+    }
+    if (from_sign) {
+      return End{ex(0), sign_strict};
+    }
+    return std::nullopt;
+  };
+  return {end(low_bound, false), end(high_bound, true)};
+}
+
+std::optional<std::pair<ex, GiNaC::numeric>> multiple_of_symbol(const ex& argument) {
+  ex symbol = argument;
+  GiNaC::numeric c = 1;
+  if (is_a<GiNaC::mul>(argument) && argument.nops() == 2 && is_a<GiNaC::numeric>(argument.op(1))) {
+    symbol = argument.op(0);
+    c = GiNaC::ex_to<GiNaC::numeric>(argument.op(1));
+  }
+  if (!is_a<GiNaC::symbol>(symbol) || !c.is_rational() || c.is_zero()) {
+    return std::nullopt;
+  }
+  return std::pair{symbol, c};
 }
 
 bool Facts::strict_bound(const ex& symbol, bool high) const {

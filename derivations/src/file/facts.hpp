@@ -75,6 +75,15 @@ class Facts {
   /// The bounds of a symbol, [low, high] (either may be absent): from ranges.
   [[nodiscard]] std::pair<std::optional<double>, std::optional<double>> bounds(
       const GiNaC::ex& symbol) const;
+  /// An end of a symbol's values, exact: where it is, and whether it is left out (x > a).
+  struct End {
+    GiNaC::ex at;
+    bool strict = false;
+  };
+  /// The ends of a symbol's values, [low, high] (either may be absent): of each side, the tighter
+  /// of its bound as written and 0 from its sign (θ ≥ 0 with θ > -π/6 has the low end 0).
+  [[nodiscard]] std::pair<std::optional<End>, std::optional<End>> exact_ends(
+      const GiNaC::ex& symbol) const;
 
   /// Every fact on a symbol.
   [[nodiscard]] const std::map<GiNaC::ex, Sign, GiNaC::ex_is_less>& all() const { return signs_; }
@@ -129,5 +138,9 @@ class Facts {
            GiNaC::ex_is_less>
       exact_bounds_;
 };
+
+/// @p argument as c x, a rational c ≠ 0 times a symbol x; else nothing.
+[[nodiscard]] std::optional<std::pair<GiNaC::ex, GiNaC::numeric>> multiple_of_symbol(
+    const GiNaC::ex& argument);
 
 }  // namespace impulse::derivations::file
