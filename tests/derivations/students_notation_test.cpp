@@ -817,6 +817,16 @@ TEST_CASE("A root of 1/y is 1/√y only where y > 0", "[derivations][students-no
   CHECK(step("$$x = \\frac{1}{y}$$\n\n$$\\sqrt{x} = \\frac{1}{\\sqrt{y}}$$") == "undecided");
   CHECK(step("assume: y > 0\n\n$$x = \\frac{1}{y}$$\n\n$$\\sqrt{x} = \\frac{1}{\\sqrt{y}}$$") ==
         "follows");
+  // Nowhere real: on -π/2 < θ < 0, sin θ < 0 and x = 1/sin θ < 0, so both sides of
+  // √x = 1/√(sin θ) are imaginary wherever the equation before holds (θ = -π/6, x = -2:
+  // √x = i√2 but 1/√(sin θ) = 1/(i/√2) = -i√2). It followed, its roots read as real numbers
+  // ≥ 0 (of which there are none there); now it is undecided, with the reason. On 0 < θ < π/2 it
+  // follows.
+  const std::string sine =
+      "$$x = \\frac{1}{\\sin\\theta}$$\n\n$$\\sqrt{x} = "
+      "\\frac{1}{\\sqrt{\\sin\\theta}}$$";
+  CHECK(step("assume: -\\pi/2 < \\theta < 0\n\n" + sine) == "undecided");
+  CHECK(step("assume: 0 < \\theta < \\pi/2\n\n" + sine) == "follows");
 }
 
 TEST_CASE("A counterexample fails the step in exact arithmetic",

@@ -365,21 +365,23 @@ class Sampler {
       if (!solver_->solve(values_)) {
         continue;
       }
-      if (!valid()) {
+      const Validity validity = valid();
+      const double residual = validity == Validity::valid ? target_residual() : 0.0;
+      if (validity == Validity::step_not_real ||
+          (validity == Validity::valid && std::isnan(target_(values_)))) {
+        ++opinion.not_real;
+        if (!opinion.not_real_point) {
+          opinion.not_real_point = here();
+        }
         continue;
       }
-      const double residual = target_residual();
-      if (!std::isfinite(residual)) {
+      if (validity != Validity::valid || !std::isfinite(residual)) {
         continue;
       }
       ++opinion.points;
       opinion.worst = std::max(opinion.worst, residual);
       if (residual > numeric_fails_above && !opinion.counterexample) {
-        std::vector<std::pair<ex, double>> point;
-        for (std::size_t i = 0; i < symbols_.size(); ++i) {
-          point.emplace_back(symbols_[i], values_[i]);
-        }
-        opinion.counterexample = std::move(point);
+        opinion.counterexample = here();
         opinion.counterexample_residual = residual;
       }
     }
@@ -399,6 +401,15 @@ class Sampler {
   }
 
  private:
+  // The point drawn and solved: every symbol's value.
+  [[nodiscard]] std::vector<std::pair<ex, double>> here() const {
+    std::vector<std::pair<ex, double>> point;
+    for (std::size_t i = 0; i < symbols_.size(); ++i) {
+      point.emplace_back(symbols_[i], values_[i]);
+    }
+    return point;
+  }
+
   void compile_all() {
     for (const ex& p : problem_.premises) {
       premises_.push_back(sym::compile(p, symbols_));
@@ -488,29 +499,36 @@ class Sampler {
   }
 
   // The point satisfies every premise to rounding, and every denominator is clear of zero.
-  bool valid() {
+  // A point on the premises and the facts, where the step's denominators are real: valid; with
+  // one of them not real (√(sin θ) at sin θ < 0), the step has no real value there.
+  enum class Validity { invalid, valid, step_not_real };
+
+  Validity valid() {
     for (double v : values_) {
       if (!std::isfinite(v)) {
-        return false;
+        return Validity::invalid;
       }
     }
     if (!facts_.satisfied_numerically(symbols_, values_)) {
-      return false;  // a fact on an expression (m_1 + m_2 > 0, e \leq 1)
+      return Validity::invalid;  // a fact on an expression (m_1 + m_2 > 0, e \leq 1)
     }
     for (std::size_t i = 0; i < premises_.size(); ++i) {
       const double value = premises_[i](values_);
       const double scale = premise_scales_[i](values_);
       if (!std::isfinite(value) || std::abs(value) > 1e-10 * std::max(scale, 1e-300)) {
-        return false;
+        return Validity::invalid;
       }
     }
-    for (const sym::Compiled& d : denominators_) {
-      const double value = d(values_);
-      if (!std::isfinite(value) || std::abs(value) < 1e-9) {
-        return false;
+    bool step_real = true;
+    for (std::size_t k = 0; k < denominators_.size(); ++k) {
+      const double value = denominators_[k](values_);
+      if (std::isnan(value) && k >= problem_.premise_denominators) {
+        step_real = false;
+      } else if (!std::isfinite(value) || std::abs(value) < 1e-9) {
+        return Validity::invalid;
       }
     }
-    return true;
+    return step_real ? Validity::valid : Validity::step_not_real;
   }
 
   // The step's value against the size of its terms and against what a change of its symbols

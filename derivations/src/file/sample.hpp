@@ -29,6 +29,7 @@ struct NumericProblem {
   std::vector<GiNaC::ex> denominators;    ///< must not vanish at a point
   GiNaC::ex target;
   GiNaC::ex target_scale;
+  std::size_t premise_denominators = 0;  ///< the first this many denominators are the premises'
 };
 
 /// What the numeric method saw.
@@ -38,6 +39,9 @@ struct NumericOpinion {
   /// A point where the target fails (relative residual above 1e-6), every symbol's value.
   std::optional<std::vector<std::pair<GiNaC::ex, double>>> counterexample;
   double counterexample_residual = 0.0;
+  /// Points on the premises where the target has no real value (√x at x < 0), and the first.
+  std::size_t not_real = 0;
+  std::optional<std::vector<std::pair<GiNaC::ex, double>>> not_real_point;
   std::string how;  ///< what was done, or why no point could be found
 };
 

@@ -885,7 +885,8 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
       denominators.insert(denominators.end(), forward.implication.conditions.begin(),
                           forward.implication.conditions.end());
     }
-    NumericProblem problem{premises, scales, denominators, s.differences[k], s.scales[k]};
+    NumericProblem problem{premises,         scales,      denominators,
+                           s.differences[k], s.scales[k], b.denominators.size()};
     const NumericOpinion one = sample(problem, f, options_.seed * 7919 + index * 31 + k,
                                       options_.samples, budget.deadline);
     numeric.points += one.points;
@@ -893,6 +894,10 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
     if (!numeric.counterexample && one.counterexample) {
       numeric.counterexample = one.counterexample;
       numeric.counterexample_residual = one.counterexample_residual;
+    }
+    numeric.not_real += one.not_real;
+    if (!numeric.not_real_point && one.not_real_point) {
+      numeric.not_real_point = one.not_real_point;
     }
     numeric.how = one.how;
   }
@@ -977,6 +982,21 @@ void Checker::conclude(const Scalars& before, const Scalars& step, const Forward
                 num::brief(numeric.counterexample_residual, 2) +
                 "): the two disagree, so no verdict is given";
         numeric_point(*numeric.counterexample, r);
+        return;
+      }
+      if (numeric.points == 0 && numeric.not_real >= 8 && numeric.not_real_point) {
+        // x = 1/sin θ then √x = 1/√(sin θ) on -π/2 < θ < 0: both sides are imaginary wherever
+        // the equation before holds, and their real reading (roots ≥ 0) holds vacuously.
+        std::string at;
+        for (const auto& [symbol, value] : *numeric.not_real_point) {
+          at += (at.empty() ? "" : ", ") + latex_of(symbol) + " = " + num::brief(value, 3);
+        }
+        r.verdict = Verdict::undecided;
+        r.how = "the exact method finds that it follows (" + exact.how +
+                "), but the step has no real value at any of the " +
+                std::to_string(numeric.not_real) +
+                " points found on the equations before and the facts (e.g. " + at +
+                "): a step that is nowhere real is not shown to follow";
         return;
       }
       r.decided_by = "exact";
