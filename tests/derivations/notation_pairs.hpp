@@ -9,13 +9,15 @@
 #include <string>
 #include <vector>
 
+#include "budget.hpp"
 #include "derivations/derivation.hpp"
 
 namespace impulse::test {
 
 /// The verdicts of a derivation file's equations, in order.
 inline std::vector<std::string> verdicts(const std::string& text) {
-  const derivations::DerivationReport report = derivations::check_derivation(text, "notation.md");
+  const derivations::DerivationReport report =
+      derivations::check_derivation(text, "notation.md", pinned_options());
   std::vector<std::string> list;
   for (const auto& e : report.equations) {
     list.push_back(std::string(derivations::to_string(e.verdict)));

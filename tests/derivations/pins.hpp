@@ -28,6 +28,7 @@
 #include <utility>
 #include <vector>
 
+#include "budget.hpp"
 #include "derivations/derivation.hpp"
 
 namespace impulse::derivations::pins {
@@ -134,7 +135,8 @@ inline bool check_pins(const fs::path& path) {
   const auto pins = pins_of(text);
   INFO(path.string());
   REQUIRE(!pins.empty());
-  const DerivationReport report = check_derivation(text, path.filename().string());
+  const DerivationReport report =
+      check_derivation(text, path.filename().string(), impulse::test::pinned_options());
   std::map<std::size_t, std::vector<const EquationResult*>> by_line;
   for (const EquationResult& e : report.equations) {
     by_line[e.line].push_back(&e);

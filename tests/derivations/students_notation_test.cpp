@@ -16,6 +16,7 @@ namespace d = impulse::derivations;
 namespace {
 
 using impulse::test::different;
+using impulse::test::pinned_options;
 using impulse::test::same;
 using impulse::test::verdicts;
 
@@ -24,7 +25,7 @@ void refused(const std::string& text, std::size_t line, std::size_t column,
              const std::string& fragment) {
   INFO(text);
   try {
-    (void)d::check_derivation(text, "student.md");
+    (void)d::check_derivation(text, "student.md", pinned_options());
     FAIL("the text was read");
   } catch (const d::DerivationError& e) {
     CHECK(e.line() == line);
@@ -64,21 +65,21 @@ TEST_CASE("Students' arrows, annotations and separators inside a display",
         std::vector<std::string>{"premise", "does-not-follow"});
   // \iff claims an equivalence: a step that holds one way only fails as one.
   CHECK(verdicts("$$a = b \\iff a - b = 0$$") == std::vector<std::string>{"premise", "follows"});
-  const auto one_way = d::check_derivation("$$a = b \\iff a^2 = b^2$$", "iff.md");
+  const auto one_way = d::check_derivation("$$a = b \\iff a^2 = b^2$$", "iff.md", pinned_options());
   CHECK(one_way.equations.at(1).verdict != d::Verdict::follows);
   CHECK(one_way.equations.at(1).verdict != d::Verdict::follows_one_way);
   // A step that follows only under a condition is no equivalence either: x^2 = 9 gives x = 3
   // where x + 3 ≠ 0, so x = -3 (9 = 9, and -3 ≠ 3) shows it failing. It was undecided: the
   // converse, x = 3 ⊢ x^2 = 9, holds, and only the converse was searched for a point.
-  const auto only_if = d::check_derivation("$$x^2 = 9 \\iff x = 3$$", "iff.md");
+  const auto only_if = d::check_derivation("$$x^2 = 9 \\iff x = 3$$", "iff.md", pinned_options());
   const d::EquationResult& root = only_if.equations.at(1);
   CHECK(root.verdict == d::Verdict::does_not_follow);
   REQUIRE(root.counterexample.size() == 1);
   CHECK(root.counterexample[0].x == -3.0);
   CHECK_THAT(root.equivalence_note, Catch::Contains("only where $3 + x \\neq 0$"));
   // The same with the facts of a collision: v' = -e v satisfies v'^2 = e^2 v^2 (e v ≠ 0).
-  const auto speed =
-      d::check_derivation("assume: v > 0, e > 0\n\n$$v'^2 = e^2 v^2 \\iff v' = e v$$", "iff.md");
+  const auto speed = d::check_derivation(
+      "assume: v > 0, e > 0\n\n$$v'^2 = e^2 v^2 \\iff v' = e v$$", "iff.md", pinned_options());
   CHECK(speed.equations.at(1).verdict == d::Verdict::does_not_follow);
   // \text between two equations is an annotation; a comma separates like \\.
   CHECK(verdicts("$$a = b \\quad\\text{and so}\\quad a - b = 0$$") ==
@@ -486,8 +487,8 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
       std::vector<std::string>{"premise", "follows"});
   CHECK(verdicts("assume: 0 < \\theta < 2\n\n" + cancel) ==
         std::vector<std::string>{"premise", "follows-if"});
-  const auto closed =
-      d::check_derivation("assume: 0 \\le \\theta \\le \\pi/2\n\n" + cancel, "cos.md");
+  const auto closed = d::check_derivation("assume: 0 \\le \\theta \\le \\pi/2\n\n" + cancel,
+                                          "cos.md", pinned_options());
   REQUIRE(closed.equations.at(1).verdict == d::Verdict::follows_if);
   CHECK(closed.equations.at(1).condition_text == "cos(theta) != 0");
   // Both ends give 0 and one is closed: sin θ = 0 at θ = 0 on 0 ≤ θ < π, cos θ = 0 at -π/2 on
@@ -608,7 +609,7 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   const auto turn = d::check_derivation(
       "assume: 0 \\le \\theta \\le 2\\pi\n\n$$\\sin^2\\theta = \\frac{1}{4}$$\n\n$$\\sin\\theta = "
       "\\frac{1}{2}$$",
-      "turn.md");
+      "turn.md", pinned_options());
   REQUIRE(turn.equations.at(1).verdict == d::Verdict::follows_if);
   CHECK(turn.equations.at(1).condition_text == "2*sin(theta)+1 != 0");
   // Through τ = tan(θ/2), sin²θ = 1 is τ = ±1, and τ = -1 is θ = -π/2: a range of θ whose half
@@ -837,7 +838,7 @@ TEST_CASE("A counterexample fails the step in exact arithmetic",
   const auto report = d::check_derivation(
       "assume: m, M, g, h, u > 0\n\ngiven:\n\n$$m u = (m + M) V \\\\ V^2 = 2 g h$$\n\n"
       "$$u = \\frac{m+M}{m}\\sqrt{2gh}$$",
-      "pendulum.md");
+      "pendulum.md", pinned_options());
   REQUIRE(report.equations.size() == 3);
   CHECK(report.equations[2].verdict != d::Verdict::does_not_follow);
   // A slip there still fails: √(g h) for √(2 g h). By hand, m = M = 2, V = 1, g = 1/2, h = 1,
@@ -845,7 +846,7 @@ TEST_CASE("A counterexample fails the step in exact arithmetic",
   const auto slip = d::check_derivation(
       "assume: m, M, g, h, u, V > 0\n\ngiven:\n\n$$m u = (m + M) V \\\\ V^2 = 2 g h$$\n\n"
       "$$u = \\frac{m+M}{m}\\sqrt{g h}$$",
-      "pendulum.md");
+      "pendulum.md", pinned_options());
   CHECK(slip.equations[2].verdict == d::Verdict::does_not_follow);
 }
 
@@ -897,8 +898,8 @@ TEST_CASE("Speeds as magnitudes: |x| and x^2 of a symbol read as one quantity",
   // With e of either sign, v' = 1, v = 1, e = -1 satisfy the step and not the equation before.
   CHECK(verdicts("$$|v'| = e |v|$$\n\n$$v'^2 = e^2 v^2$$").back() == "follows-one-way");
   // The slip e for e^2 fails, with values of v and v' (e = 2, |v| = 1, |v'| = 2: 4 ≠ 2).
-  const auto slip =
-      d::check_derivation("assume: e > 0\n\n$$|v'| = e |v|$$\n\n$$v'^2 = e v^2$$", "speed.md");
+  const auto slip = d::check_derivation("assume: e > 0\n\n$$|v'| = e |v|$$\n\n$$v'^2 = e v^2$$",
+                                        "speed.md", pinned_options());
   CHECK(slip.equations.at(1).verdict == d::Verdict::does_not_follow);
   CHECK(slip.equations.at(1).counterexample.size() == 3);
   // Where x stands alone too, |x| is no quantity of its own: |x| = 3 and x = 3 is not decided
