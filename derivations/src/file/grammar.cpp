@@ -252,6 +252,7 @@ Node Grammar::term(std::size_t depth) {
         // \dfrac 12 3: a half times 3, or twelve thirds?
         throw error(next, "expected an operator between two numbers (write \\cdot or \\times)");
       }
+      refuse_number_after_symbol(product, next);
       refuse_written_unit(product, next);
       const Token written = next;
       product.children.push_back(factor(depth + 1));
@@ -268,6 +269,27 @@ Node Grammar::term(std::size_t depth) {
   }
   product.end = last_end_;
   return product;
+}
+
+// m1, v0, m_1 2: a number right after a symbol. m1 v1 = m2 v2 read as m·1 v·1 = m·2 v·2 let a
+// slip through (v2 = m2 v1/m1 "followed"), and v = v0 + a t lost v_0: m_1, or m times 1?
+void Grammar::refuse_number_after_symbol(const Node& product, const Token& next) const {
+  if (next.kind != Tok::number || product.children.empty() ||
+      product.children.back().kind != NodeKind::symbol) {
+    return;
+  }
+  const SymbolName& symbol = product.children.back().symbol;
+  const std::string name = symbol.latex();
+  if (symbol.subscript.empty()) {
+    throw error(next, "expected an operator or a subscript between " + name + " and " + next.text +
+                          ": " + name + next.text + " could be " + name + "_" + next.text + " or " +
+                          name + " times " + next.text + "; write " + name + "_" + next.text +
+                          " for the one, " + next.text + " " + name + " for the other");
+  }
+  throw error(next, "expected an operator between " + name + " and " + next.text + ": write " +
+                        next.text + " " + name +
+                        " for the product (or braces around a subscript of several characters, "
+                        "m_{12})");
 }
 
 // a / b c: a over b times c, or a over b c? Refused unless it is a number over a number (1/2 m v^2)

@@ -81,6 +81,7 @@ class Grammar {
   Node sum_term(std::size_t depth);
   void refuse_ambiguous_division(const Node& product, const Token& written) const;
   void refuse_mixed_number(const Node& product, const Token& written) const;
+  void refuse_number_after_symbol(const Node& product, const Token& next) const;
   void refuse_bar_after_sum(const Node& sum) const;
   void refuse_unit(const Node& product, const Token& written) const;
   void refuse_written_unit(const Node& product, const Token& next) const;
