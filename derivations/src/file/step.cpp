@@ -808,8 +808,10 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
   // Conditions that the equations before and the facts never allow together: x^2 = y^2 then
   // x = y under x ≥ 0 ≥ y holds where x + y ≠ 0, but x + y = 0 wherever x^2 = y^2 there. The step
   // then holds nowhere but where it is trivially true (x = y = 0), and the point found where a
-  // condition is 0 (x = 1, y = -1) is a counterexample.
-  if (!forward.point || step.differences.size() != 1) {
+  // condition is 0 (x = 1, y = -1) is a counterexample. Where no such point was found (x = 0
+  // then x/x = 1: the step is not defined where its condition is 0), any point of the equations
+  // before and the facts is one: the step holds at none of them.
+  if (step.differences.size() != 1) {
     return;
   }
   std::vector<ex> premises = before.differences;
@@ -819,14 +821,23 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
     product *= c;
   }
   const Implication never = implies({premises, before.denominators, product, {}}, facts, quick);
-  if (never.outcome == Implication::Outcome::holds) {
-    forward.outcome = Implication::Outcome::fails;
-    forward.conditions.clear();
-    forward.residual = step.differences[0];
-    forward.how += std::string(forward.how.empty() ? "" : "; ") + "it holds only where " +
-                   plain_of(sym::up_to_sign(product)) +
-                   " != 0, which the equations before and the facts never allow";
+  if (never.outcome != Implication::Outcome::holds) {
+    return;
   }
+  if (!forward.point) {
+    // A point of the equations before and the facts: where "1 = 0" fails.
+    const Implication any = implies({premises, before.denominators, 1, {}}, facts, quick);
+    if (any.outcome != Implication::Outcome::fails || !any.point) {
+      return;
+    }
+    forward.point = any.point;
+  }
+  forward.outcome = Implication::Outcome::fails;
+  forward.conditions.clear();
+  forward.residual = step.differences[0];
+  forward.how += std::string(forward.how.empty() ? "" : "; ") + "it holds only where " +
+                 plain_of(sym::up_to_sign(product)) +
+                 " != 0, which the equations before and the facts never allow";
 }
 
 // The numeric method, as a second opinion, at random points on the equations before. Where the
