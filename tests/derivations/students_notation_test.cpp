@@ -126,6 +126,12 @@ TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students
   same("v^2_1", "v_1^2");
   same("{v_1}'", "v_1'");
   same("\\Delta{p}", "\\Delta p");
+  // m1 v1 = m2 v2 was read as m·1 v·1 = m·2 v·2, so v2 = m2 v1/m1 "followed", though with m_1 = 1,
+  // m_2 = 2, v_1 = 2, v_2 = 1 the premise holds and the step gives 1 = 4. A number right after a
+  // symbol is refused with both readings; 2 m_1 (the number first) is the product.
+  refused("$$m1 v1 = m2 v2$$", 1, 4, "m1 could be m_1 or m times 1");
+  refused("$$v = m_1 2 + 3$$", 1, 11, "write 2 m_1 for the product");
+  same("2 m_1", "m_1 \\cdot 2");
   // \Delta v^2: the square of the change, or the change of the square (W = m \Delta v^2 / 2 from
   // the work-energy theorem)? Refused at the ^; (\Delta v)^2 is the square.
   refused("$$W = \\tfrac12 m \\Delta v^2$$", 1, 26, "(\\Delta v)^");
@@ -667,6 +673,15 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   CHECK(squares("x \\le 0, y \\le 0", "x = -y") == fails);
   // Without the facts, x = y holds where x + y ≠ 0, and x + y ≠ 0 is allowed (x = y = 1).
   CHECK(squares("z > 0", "x = y") == conditional);
+  // A step that divides by what the equations before or the facts make 0 is defined nowhere they
+  // hold: x = 0 then x/x = 1, and ΔK = K(1 - e²) then K = ΔK/(1 - e²) under e = 1, were
+  // follows-if x ≠ 0 and follows-if 1 - e ≠ 0; any point of the equations before (x = 0;
+  // e = 1, K = 1, ΔK = 0) is a counterexample.
+  CHECK(verdicts("$$x = 0$$\n\n$$\\frac{x}{x} = 1$$") == fails);
+  CHECK(verdicts("assume: e = 1\n\n$$\\Delta K = K (1 - e^2)$$\n\n$$K = \\frac{\\Delta K}{1 - "
+                 "e^2}$$") == fails);
+  CHECK(verdicts("assume: e > 1\n\n$$\\Delta K = K (1 - e^2)$$\n\n$$K = \\frac{\\Delta K}{1 - "
+                 "e^2}$$") == free);
   // x² + y² = 0 only where x = y = 0 (undecided before); x = 1 does not follow.
   CHECK(verdicts("$$x^2 + y^2 = 0$$\n\n$$x = 0$$") ==
         std::vector<std::string>{"premise", "follows-one-way"});
