@@ -1085,6 +1085,13 @@ TEST_CASE("Units, one-digit arguments and a function's reach, as a fourth probe 
   CHECK(verdicts("$$J = 2\\,\\text{Ns}$$\n\n$$J = 2$$").back() == "follows");
   CHECK(verdicts("$$v = 3\\,\\text{m/s}$$\n\n$$v = 3$$").back() == "follows");
   CHECK(verdicts("$$v = 0 \\quad \\text{initially}$$\n\n$$2 v = 0$$").back() == "follows");
+  // Words in parentheses are a note, after a number too (\text{(given)} was refused as a
+  // quantity, \text{(in joules)} as the unit "in"); a unit in them is still a unit.
+  CHECK(verdicts("$$\\begin{aligned} 2m &= 6 && \\text{(given)} \\\\ m &= 3 \\end{aligned}$$")
+            .back() == "follows");
+  CHECK(verdicts("$$E = 5 \\quad \\text{(in joules)}$$\n\n$$2E = 10$$").back() == "follows");
+  refused("$$L = 2 \\quad \\text{(in km)}$$", 1, 15, "SI units");
+  refused("$$L = 2 \\quad \\text{(km)}$$", 1, 15, "SI units");
   // - LaTeX's one digit as an argument, the rest of the number a factor: \sqrt 12 is √1·2 (a = 2
   //   followed), \frac 1 10 is (1/1)·0, \frac123 is (1/2)·3, \sqrt[3]27 is ∛2·7; \frac12 stays a
   //   half, and \dfrac 12 3 (a half times 3, or twelve thirds?) is refused;

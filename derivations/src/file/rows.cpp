@@ -157,6 +157,20 @@ std::string word_of(const std::vector<Token>& tokens, std::size_t open, std::siz
   return std::string();
 }
 
+// Whether the \text{…} from `open`, its '{', to `end` holds words in parentheses, (given) or
+// (in joules): a note, as nobody writes a unit or a quantity so.
+bool parenthesized(const std::vector<Token>& tokens, std::size_t open, std::size_t end) {
+  std::size_t first = open + 1;
+  std::size_t last = end - 1;  // the '}'
+  while (first < last && tokens[first].kind == Tok::spacing) {
+    ++first;
+  }
+  while (last > first && tokens[last - 1].kind == Tok::spacing) {
+    --last;
+  }
+  return last > first + 2 && is_char(tokens[first], '(') && is_char(tokens[last - 1], ')');
+}
+
 // Whether @p t is a wide space, \quad or \qquad: what sets a note or a label apart.
 bool wide_space(const Token& t) {
   return t.kind == Tok::spacing && (t.text == "\\quad" || t.text == "\\qquad");
@@ -178,13 +192,20 @@ std::string disjunction(const std::vector<Token>& tokens, std::size_t open, std:
 
 // The word of a \text{…} that is a unit outside SI's coherent ones (km, h, g, cm), or empty. A
 // unit after a number is an annotation, ignored: the number must then be in SI units, or
-// L = 2\,\text{km} and L = 2\,\text{m} were one equation.
-std::string non_si_unit(const std::vector<Token>& tokens, std::size_t open, std::size_t end) {
+// L = 2\,\text{km} and L = 2\,\text{m} were one equation. In a @p note, words in parentheses,
+// "in" is the preposition.
+std::string non_si_unit(const std::vector<Token>& tokens, std::size_t open, std::size_t end,
+                        bool note) {
   static const std::set<std::string, std::less<>> units{
       "km", "cm", "mm", "um", "nm", "g",  "mg",  "t",   "h",   "hr",   "min", "ms",  "us",
       "ns", "kN", "MN", "kJ", "MJ", "kW", "MW",  "mph", "kph", "kmh",  "deg", "L",   "mL",
       "ft", "lb", "mi", "in", "yd", "eV", "keV", "MeV", "cal", "kcal", "bar", "atm", "rpm"};
-  return word_of(tokens, open, end, units, false);
+  for (const std::string& w : text_words(tokens, open, end)) {
+    if (units.contains(w) && !(note && w == "in")) {  // (in joules): the preposition
+      return w;
+    }
+  }
+  return std::string();
 }
 
 // Whether the last token of @p tokens that is not spacing is a number.
@@ -265,14 +286,18 @@ void refuse_annotation(const Source& source, const Token& t, const std::vector<T
                            "equation (a product equal to zero) or each in a derivation of "
                            "its own, and a condition with assume:");
   }
-  if (const std::string unit = after_number(before) ? non_si_unit(tokens, open, end) : "";
+  // \text{(given)}, \text{(in joules)}: a note, never a quantity; a unit in it, (km) or (in
+  // km), is a unit still.
+  const bool note = parenthesized(tokens, open, end);
+  if (const std::string unit = after_number(before) ? non_si_unit(tokens, open, end, note) : "";
       !unit.empty()) {
     throw source.error(t.offset, "expected a number in SI units (m, kg, s) before " + t.text + "{" +
                                      unit +
                                      "}: a unit after a number is an annotation, which "
                                      "this checker ignores; write the number in SI units");
   }
-  if (const std::string word = dropped_quantity(before, tokens, open, end); !word.empty()) {
+  if (const std::string word = note ? "" : dropped_quantity(before, tokens, open, end);
+      !word.empty()) {
     throw source.error(t.offset,
                        "expected a unit in SI (m, kg, s, N, J, W, Pa, Hz, rad) or words "
                        "of an annotation, found " +
