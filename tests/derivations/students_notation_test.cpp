@@ -126,6 +126,12 @@ TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students
   same("v^2_1", "v_1^2");
   same("{v_1}'", "v_1'");
   same("\\Delta{p}", "\\Delta p");
+  // The change of a declared vector is a vector (\vec F \Delta t = \Delta \vec p was refused as a
+  // vector equal to a scalar): its x-component follows, and the y-component for it does not (F =
+  // [1, -1], Δt = 1, Δp = [1, -1]: F_y Δt = -1, Δp_x = 1).
+  const std::string impulse = "vector: F, p\n\n$$\\vec F \\Delta t = \\Delta \\vec p$$\n\n";
+  CHECK(verdicts(impulse + "$$F_x \\Delta t = \\Delta p_x$$").back() == "follows-one-way");
+  CHECK(verdicts(impulse + "$$F_y \\Delta t = \\Delta p_x$$").back() == "does-not-follow");
   // m1 v1 = m2 v2 was read as m·1 v·1 = m·2 v·2, so v2 = m2 v1/m1 "followed", though with m_1 = 1,
   // m_2 = 2, v_1 = 2, v_2 = 1 the premise holds and the step gives 1 = 4. A number right after a
   // symbol is refused with both readings; 2 m_1 (the number first) is the product.

@@ -147,6 +147,14 @@ SymbolName Symbols::resolve(SymbolName name) const {
 
 bool Symbols::is_vector(const SymbolName& name) const {
   const std::string key = name.unprimed().latex();
+  if (name.delta) {
+    // The change of a vector is a vector: \Delta p, \Delta \vec p of a declared p.
+    SymbolName changed = name;
+    changed.delta = false;
+    if (is_vector(changed)) {
+      return true;
+    }
+  }
   return vectors_.contains(key) || (name.arrow && !blocks_.contains(key));
 }
 
