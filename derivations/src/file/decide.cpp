@@ -876,8 +876,10 @@ class Decider {
                 const ex& under) {
     const Facts outer = facts_;
     std::vector<Found> cases;
+    const Sign known = facts_.sign(under);
     for (const bool negative : {false, true}) {
-      if (facts_.sign(under) == (negative ? Sign::positive : Sign::negative)) {
+      if (negative ? (known == Sign::positive || known == Sign::nonnegative)
+                   : (known == Sign::negative || known == Sign::nonpositive)) {
         continue;  // the facts leave this case out
       }
       facts_.add_relation(under, negative ? Sign::negative : Sign::positive);
