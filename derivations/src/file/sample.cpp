@@ -498,9 +498,9 @@ class Sampler {
     }
   }
 
-  // The point satisfies every premise to rounding, and every denominator is clear of zero.
-  // A point on the premises and the facts, where the step's denominators are real: valid; with
-  // one of them not real (√(sin θ) at sin θ < 0), the step has no real value there.
+  // Whether the point satisfies the facts and every premise to rounding, with every denominator
+  // clear of zero: valid; a point that does, but where one of the step's denominators is not
+  // real (√(sin θ) at sin θ < 0), is one where the step has no real value.
   enum class Validity { invalid, valid, step_not_real };
 
   Validity valid() {
