@@ -628,6 +628,16 @@ class Evaluator {
       } else if (acc.vector != next.vector) {
         const Value& scalar = acc.vector ? next : acc;
         const Value& v = acc.vector ? acc : next;
+        if (op == 'x' && !GiNaC::is_a<numeric>(scalar.x)) {
+          // \omega \times \vec r (the contact point's velocity v + ω × r) was read as ω r: in the
+          // plane, ω × r is ω [-r_y, r_x].
+          throw error(at,
+                      "expected \\cdot or nothing between a scalar and a vector, found "
+                      "\\times: the product of the two, or the plane's cross product of an "
+                      "angular velocity about the normal to the plane (\\omega \\times \\vec r "
+                      "= \\omega [-r_y, r_x])? Write \\omega \\vec r for the one and the "
+                      "components for the other");
+        }
         acc = {true, scalar.x * v.x, scalar.x * v.y};
       } else if (op == '.') {
         acc = {false, acc.x * next.x + acc.y * next.y, 0};
