@@ -162,7 +162,8 @@ std::string Grammar::name_group(const Token& command_token) {
   return text;
 }
 
-// decorations := {'_' subscript | "'" | '^' ('\prime' | '{' '\prime' {'\prime'} '}')}
+// decorations := {'_' subscript | ["\,"] "'" | '^' ('\prime' | '{' '\prime' {'\prime'} '}')}
+// ("\," before a prime of an accented symbol only: \vec p\,')
 // (subscript and primes in either order: p_1', p'_1, p_{1}')
 Node Grammar::decorate(std::size_t depth, Node n) {
   while (true) {
@@ -173,6 +174,9 @@ Node Grammar::decorate(std::size_t depth, Node n) {
       }
       take();
       n.symbol.subscript = subscript(depth);
+    } else if (n.symbol.accent && is(t, Tok::spacing, "\\,") &&
+               is_char(token(position_ + 1), '\'')) {
+      skip_spacing();  // \vec p\,': the thin space keeps the prime off the arrow
     } else if (is_char(t, '\'')) {
       take();
       ++n.symbol.primes;
