@@ -132,6 +132,15 @@ TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students
   const std::string impulse = "vector: F, p\n\n$$\\vec F \\Delta t = \\Delta \\vec p$$\n\n";
   CHECK(verdicts(impulse + "$$F_x \\Delta t = \\Delta p_x$$").back() == "follows-one-way");
   CHECK(verdicts(impulse + "$$F_y \\Delta t = \\Delta p_x$$").back() == "does-not-follow");
+  // \vec p\,' (a thin space keeping the prime off the arrow, as this project's guide writes it) is
+  // \vec p' (it was refused at the prime); the same space after a plain letter stays refused.
+  same("\\vec p\\,'", "\\vec p'", "vector: p, c");
+  refused("$$a = b\\,'$$", 1, 10, "expected an operator");
+  // ω × r of a scalar ω: the product ω r, or the plane's cross product ω [-r_y, r_x] (the contact
+  // point's velocity v + ω × r)? It was read as the product, so u_x = v_x + ω r_x followed.
+  refused("vector: u, v, r\n\n$$\\vec u = \\vec v + \\omega \\times \\vec r$$", 3, 35,
+          "the plane's cross product");
+  same("2 \\times \\vec v", "2 \\vec v", "vector: v, c");
   // m1 v1 = m2 v2 was read as m·1 v·1 = m·2 v·2, so v2 = m2 v1/m1 "followed", though with m_1 = 1,
   // m_2 = 2, v_1 = 2, v_2 = 1 the premise holds and the step gives 1 = 4. A number right after a
   // symbol is refused with both readings; 2 m_1 (the number first) is the product.
