@@ -711,12 +711,21 @@ Checker::Forward Checker::instance_failure(const Scalars& given_before, const Sc
       }
       return list;
     };
-    // Under the formulas, each power of a function's variable on its own (by_powers).
+    // Under the formulas, each power of a function's variable on its own (by_powers). The
+    // equations before as written too, where the formulas leave no function unknown, not only
+    // with their rules put in: a rule dp/dt = F_0 put in leaves 0 = 0, and p(u) = 1 (where
+    // dp/dt = 0) then showed p(T) - p(0) = F_0 T failing at F_0 = 1, where the equation before
+    // does not hold. (A rule F(t) = m dv/dt that defines F stays put in: F is any function.)
     std::vector<ex> premises;
-    for (const ex& p : before.differences) {
-      const ex written = instantiated(p, instance, renamed);
-      const std::vector<ex> parts = by_powers(written, function_variables(p, is_variable()));
-      premises.insert(premises.end(), parts.begin(), parts.end());
+    for (const Scalars* s : {&given_before, &before}) {
+      for (const ex& p : s->differences) {
+        const ex written = instantiated(p, instance, renamed);
+        if (s == &given_before && has_atoms(written)) {
+          continue;
+        }
+        const std::vector<ex> parts = by_powers(written, function_variables(p, is_variable()));
+        premises.insert(premises.end(), parts.begin(), parts.end());
+      }
     }
     const std::vector<ex> premise_denominators = apply(before.denominators);
     const std::vector<ex> targets = apply(step.differences);
