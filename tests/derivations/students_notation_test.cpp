@@ -318,6 +318,13 @@ TEST_CASE("Students' units after numbers are refused", "[derivations][students-n
 
 TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
           "[derivations][students-notation]") {
+  // dp/dt = F_0 then p(T) - p(0) = F_0 T is true (∫_0^T F_0 dt); it failed "with p(u) = 1" at
+  // F_0 = 1, where dp/dt = 0 ≠ F_0: a formula that breaks the equation before is no
+  // counterexample. Undecided now (no rule integrates dp/dt); with 2 F_0 T it fails, with p(u) = u
+  // (F_0 = 1, T = 1: 1 ≠ 2).
+  const std::string rate = "function: p\n\n$$\\frac{\\mathrm{d}p}{\\mathrm{d}t} = F_0$$\n\n";
+  CHECK(verdicts(rate + "$$p(T) - p(0) = F_0 T$$").back() == "undecided");
+  CHECK(verdicts(rate + "$$p(T) - p(0) = 2 F_0 T$$").back() == "does-not-follow");
   // F(t) declared a function is F of t; J = ∫ F dt does not give F T^2 / 2.
   CHECK(verdicts("function: F\n\n$$J = \\int_0^T F(t)\\,dt$$\n\n$$J = \\frac{F T^2}{2}$$") ==
         std::vector<std::string>{"premise", "does-not-follow"});
