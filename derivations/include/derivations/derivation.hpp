@@ -148,9 +148,11 @@ struct DerivationReport {
 
 /// @brief Settings of a check.
 struct DerivationOptions {
-  std::uint64_t seed = 1;     ///< the numeric method's random points
-  std::size_t samples = 24;   ///< points per step for the numeric method
-  double step_seconds = 2.0;  ///< each step's time budget: past it, the step is undecided
+  std::uint64_t seed = 1;    ///< the numeric method's random points
+  std::size_t samples = 24;  ///< points per step for the numeric method
+  /// Each step's time budget, in seconds of the checking thread's processor time (WebAssembly:
+  /// the browser's clock): past it, the step is undecided.
+  double step_seconds = 2.0;
 };
 
 /// @brief The largest derivation file read (4 MiB): a longer one is refused with its place.
