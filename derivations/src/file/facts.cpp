@@ -1025,8 +1025,9 @@ std::pair<std::optional<Facts::End>, std::optional<Facts::End>> Facts::exact_end
     const bool from_sign = high ? (sign == Sign::negative || sign == Sign::nonpositive)
                                 : (sign == Sign::positive || sign == Sign::nonnegative);
     const bool sign_strict = sign == Sign::positive || sign == Sign::negative;
-    if (bound) {
-      const double b = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(*bound)).to_double();
+    const ex value = bound ? GiNaC::evalf(*bound) : ex(0);
+    if (bound && is_a<GiNaC::numeric>(value)) {
+      const double b = GiNaC::ex_to<GiNaC::numeric>(value).to_double();
       if (!from_sign || (high ? b < 0 : b > 0)) {
         return End{*bound, strict_bound(symbol, high)};
       }
