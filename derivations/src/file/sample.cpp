@@ -366,16 +366,19 @@ class Sampler {
         continue;
       }
       const Validity validity = valid();
-      const double residual = validity == Validity::valid ? target_residual() : 0.0;
-      if (validity == Validity::step_not_real ||
-          (validity == Validity::valid && std::isnan(target_(values_)))) {
+      const double value = validity == Validity::valid ? target_(values_) : 0.0;
+      if (validity == Validity::step_not_real || std::isnan(value)) {
         ++opinion.not_real;
         if (!opinion.not_real_point) {
           opinion.not_real_point = here();
         }
         continue;
       }
-      if (validity != Validity::valid || !std::isfinite(residual)) {
+      if (validity != Validity::valid) {
+        continue;
+      }
+      const double residual = target_residual(value);
+      if (!std::isfinite(residual)) {
         continue;
       }
       ++opinion.points;
@@ -536,8 +539,7 @@ class Sampler {
   // values' 0.2 to 5) where it is near zero. Against its terms alone, v_1 v_2 = 0 at a point
   // solved to v_1 = 1e-17 (the premises allow v_1 = 0 exactly) was relative 1, a failure where
   // the step holds.
-  double target_residual() {
-    const double value = target_(values_);
+  double target_residual(double value) {
     if (value == 0.0) {
       return 0.0;
     }
