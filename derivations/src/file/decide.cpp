@@ -566,6 +566,21 @@ ex safe_numerator(const ex& e, double terms) {
 
 namespace {
 
+// @p base as k/X, a number k > 0 over X (1/y, 4/y, 1/(m_1 - m_2)): k and X; else nothing.
+std::optional<std::pair<ex, ex>> over_something(const ex& base) {
+  ex k = 1;
+  ex rest = base;
+  if (is_a<GiNaC::mul>(base) && base.nops() == 2 && is_a<numeric>(base.op(1)) &&
+      GiNaC::ex_to<numeric>(base.op(1)).is_positive()) {
+    k = base.op(1);
+    rest = base.op(0);
+  }
+  if (is_a<GiNaC::power>(rest) && rest.op(1).is_equal(-1)) {
+    return std::pair{k, rest.op(0)};
+  }
+  return std::nullopt;
+}
+
 // The first X of @p e such that putting @p value for @p symbol makes a non-integer power of
 // k/X (k > 0 a number): GiNaC writes (k/X)^c as k^c X^{-c} at once, which is false for a real
 // X < 0 (√(1/X) = i/√|X|, but X^{-1/2} = -i/√|X|), so that x = 1/y would give √x = 1/√y for
@@ -576,15 +591,9 @@ std::optional<ex> reciprocal_under_power(const ex& e, const ex& symbol, const ex
         !i->op(0).has(symbol)) {
       continue;
     }
-    // The base as it will be, built without evaluating its power: its factors in turn.
-    const ex base = i->op(0).subs(GiNaC::exmap{{symbol, value}});
-    ex rest = base;
-    if (is_a<GiNaC::mul>(base) && base.nops() == 2 && is_a<numeric>(base.op(1)) &&
-        GiNaC::ex_to<numeric>(base.op(1)).is_positive()) {
-      rest = base.op(0);
-    }
-    if (is_a<GiNaC::power>(rest) && rest.op(1).is_equal(-1)) {
-      return rest.op(0);
+    // The base as it will be, built without evaluating its power.
+    if (const auto reciprocal = over_something(i->op(0).subs(GiNaC::exmap{{symbol, value}}))) {
+      return reciprocal->second;
     }
   }
   return std::nullopt;
@@ -607,17 +616,10 @@ ex put_in_below_zero(const ex& e, const ex& symbol, const ex& value, const ex& u
         return part.subs(GiNaC::exmap{{symbol, value}});
       }
       if (is_a<GiNaC::power>(part) && !part.op(1).info(GiNaC::info_flags::integer)) {
-        const ex base = part.op(0).subs(GiNaC::exmap{{symbol, value}});
-        const ex c = part.op(1).subs(GiNaC::exmap{{symbol, value}});
-        ex k = 1;
-        ex rest = base;
-        if (is_a<GiNaC::mul>(base) && base.nops() == 2 && is_a<numeric>(base.op(1)) &&
-            GiNaC::ex_to<numeric>(base.op(1)).is_positive()) {
-          k = base.op(1);
-          rest = base.op(0);
-        }
-        if (is_a<GiNaC::power>(rest) && rest.op(1).is_equal(-1) && rest.op(0).is_equal(under)) {
-          return GiNaC::pow(k, c) * GiNaC::pow(-1, c) * GiNaC::pow(-under, -c);
+        const auto reciprocal = over_something(part.op(0).subs(GiNaC::exmap{{symbol, value}}));
+        if (reciprocal && reciprocal->second.is_equal(under)) {
+          const ex c = part.op(1).subs(GiNaC::exmap{{symbol, value}});
+          return GiNaC::pow(reciprocal->first, c) * GiNaC::pow(-1, c) * GiNaC::pow(-under, -c);
         }
       }
       return part.map(*this);
