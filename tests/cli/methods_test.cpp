@@ -35,10 +35,10 @@ std::string scratch_scene(const std::string& name, const std::string& text) {
 }
 
 // Galperin's billiard with a heavy ball of mass 1e6: 3141 serial collisions.
-const char* const galperin_million = R"({"dimension": 1, "elasticity": 2,
+const char* const galperin_hundred_million = R"({"dimension": 1, "elasticity": 2,
   "bodies": [{"name": "wall", "kind": "static"},
              {"name": "light", "kind": "material", "mass": 1, "velocity": 0},
-             {"name": "heavy", "kind": "material", "mass": 1e6, "velocity": -1}],
+             {"name": "heavy", "kind": "material", "mass": 1e8, "velocity": -1}],
   "contacts": [{"bumper": "wall", "wedge": "light", "normal": 1},
                {"bumper": "light", "wedge": "heavy", "normal": 1}],
   "solver": {"method": "serial"}})";
@@ -74,7 +74,7 @@ TEST_CASE("solve --method: each method's answer for two balls hitting one", "[cl
   REQUIRE(text.status == 0);
   CHECK_THAT(text.out, Contains("Method: serial"));
   CHECK_THAT(text.out,
-             Contains("3 collisions in 2 passes (bound 2000); contacts in turn: 0, 1, 0"));
+             Contains("3 collisions in 2 passes (bound 10000); contacts in turn: 0, 1, 0"));
   CHECK_THAT(t::run("solve " + scene).out, Contains("Method: simultaneous"));
 }
 
@@ -153,32 +153,35 @@ TEST_CASE("Serial collisions at their bound: exit 1 and a message that says what
   REQUIRE(lab.status == 0);
   CHECK(json::parse(lab.out)["serial"]["collisions"] == 31);
 
-  // 1e6 times heavier: 3141 collisions, above the default bound of 1000 per contact.
-  const std::string million = scratch_scene("galperin-million.json", galperin_million);
-  const auto stopped = t::run("solve " + t::quote(million));
+  // 1e8 times heavier: 31415 collisions, above the default bound (100 per contact, at least
+  // 10000).
+  const std::string galperin =
+      scratch_scene("galperin-hundred-million.json", galperin_hundred_million);
+  const auto stopped = t::run("solve " + t::quote(galperin));
   CHECK(stopped.status == 1);
   CHECK(stopped.out.empty());
   CHECK_THAT(stopped.err,
-             Contains("impulselab: error: " + million +
-                      ": serial collisions did not end: after 2000 collisions (the bound: "
-                      "solver.max_collisions, by default 1000 per contact), contact ") &&
+             Contains("impulselab: error: " + galperin +
+                      ": serial collisions did not end: after 10000 collisions (the bound: "
+                      "solver.max_collisions, by default 100 per contact, at least 10000), "
+                      "contact ") &&
                  Contains("still approaches at") && Contains("raise \"max_collisions\""));
 
-  // With the bound raised in the scene it finishes: 3141.
-  std::string raised(galperin_million);
+  // With the bound raised in the scene it finishes: 31415.
+  std::string raised(galperin_hundred_million);
   raised.replace(raised.find("\"method\": \"serial\""), 18,
-                 "\"method\": \"serial\", \"max_collisions\": 10000");
+                 "\"method\": \"serial\", \"max_collisions\": 40000");
   const auto enough =
       t::run("solve " + t::quote(scratch_scene("galperin-raised.json", raised)) + " --format json");
   REQUIRE(enough.status == 0);
-  CHECK(json::parse(enough.out)["serial"]["collisions"] == 3141);
+  CHECK(json::parse(enough.out)["serial"]["collisions"] == 31415);
 
   // --compare still shows the two other answers, then fails for the third.
-  const auto compared = t::run("solve " + t::quote(million) + " --compare");
+  const auto compared = t::run("solve " + t::quote(galperin) + " --compare");
   CHECK(compared.status == 1);
   CHECK(t::has_row(compared.out, {"light", "0", "0", "0", "-"}));
   CHECK_THAT(compared.err, Contains("serial collisions did not end"));
-  const auto compared_json = t::run("solve " + t::quote(million) + " --compare --format json");
+  const auto compared_json = t::run("solve " + t::quote(galperin) + " --compare --format json");
   CHECK(compared_json.status == 1);
   const json j = json::parse(compared_json.out);
   CHECK(j["serial"]["method"] == "serial");
@@ -186,7 +189,7 @@ TEST_CASE("Serial collisions at their bound: exit 1 and a message that says what
   CHECK(j["complementarity"]["method"] == "complementarity");
 
   // sweep, too, refuses a serial sweep that does not end, and writes nothing.
-  const auto sweep = t::run("sweep " + t::quote(million) + " --elasticity 1.5:2:0.5");
+  const auto sweep = t::run("sweep " + t::quote(galperin) + " --elasticity 1.5:2:0.5");
   CHECK(sweep.status == 1);
   CHECK(sweep.out.empty());
   CHECK_THAT(sweep.err, Contains("at elasticity 1.5") || Contains("at elasticity 2"));

@@ -155,8 +155,9 @@ TEST_CASE("Bad arguments are refused with the value", "[methods][errors]") {
   const std::vector<Contact> one{{0, 1, {1, 0}, {0, 0}}};
   me::SerialOptions negative;
   negative.max_collisions = -1;
-  CHECK_THROWS_WITH(me::resolve_serial(two, Elasticity::elastic(), one, negative),
-                    "max_collisions must be at least 1 (or 0 for 1000 per contact), got -1");
+  CHECK_THROWS_WITH(
+      me::resolve_serial(two, Elasticity::elastic(), one, negative),
+      "max_collisions must be at least 1 (or 0 for 100 per contact, at least 10000), got -1");
   CHECK_THROWS_WITH(me::resolve_serial(two, std::vector<Elasticity>{}, one),
                     "elasticities must give one value per body (2), got 0");
 }
@@ -177,8 +178,8 @@ TEST_CASE("Galperin's billiard: serial collisions count the digits of pi", "[met
   // made of the first k + 1 digits of pi, 31 for M = 100 and 314 for M = 10^4 (the velocities,
   // scaled by the square roots of the masses, turn on a circle by a fixed angle per collision,
   // 2 arctan(1/10^k)). In one instant, with all contacts touching, serial collisions take them
-  // in the same order. For M = 10^6, 3141 collisions exceed the default bound of 1000 per
-  // contact (2000): the method stops and says so.
+  // in the same order. For M = 10^8, 31415 collisions exceed the default bound (100 per contact,
+  // at least 10000): the method stops and says so.
   const auto run = [](double M, std::int64_t bound) {
     const std::vector<Body> bodies{StaticBody{}, PointMass{1, {0, 0}}, PointMass{M, {-M, 0}}};
     const std::vector<Contact> contacts{{0, 1, {1, 0}, {0, 0}}, {1, 2, {1, 0}, {0, 0}}};
@@ -196,14 +197,18 @@ TEST_CASE("Galperin's billiard: serial collisions count the digits of pi", "[met
   CHECK(ten_thousand.diagnostics.order.size() == 314);
 
   const auto million = run(1e6, 0);
-  CHECK(million.diagnostics.status == me::SerialStatus::collision_limit);
-  CHECK(million.diagnostics.max_collisions == 2000);
-  CHECK(million.diagnostics.order.size() == 2000);
-  CHECK(million.diagnostics.still_approaching >= 0);
-  CHECK(million.diagnostics.approach_left > 0.0);
-  const auto raised = run(1e6, 10000);
+  REQUIRE(million.diagnostics.status == me::SerialStatus::finished);
+  CHECK(million.diagnostics.order.size() == 3141);
+
+  const auto hundred_million = run(1e8, 0);
+  CHECK(hundred_million.diagnostics.status == me::SerialStatus::collision_limit);
+  CHECK(hundred_million.diagnostics.max_collisions == 10000);
+  CHECK(hundred_million.diagnostics.order.size() == 10000);
+  CHECK(hundred_million.diagnostics.still_approaching >= 0);
+  CHECK(hundred_million.diagnostics.approach_left > 0.0);
+  const auto raised = run(1e8, 40000);
   REQUIRE(raised.diagnostics.status == me::SerialStatus::finished);
-  CHECK(raised.diagnostics.order.size() == 3141);
+  CHECK(raised.diagnostics.order.size() == 31415);
 }
 
 TEST_CASE(

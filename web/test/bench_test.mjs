@@ -489,8 +489,9 @@ const groups = {
     const twice = await pageState(p);
     checkAgainstCommandLine(twice, line(twice), 'two keys in a row: the answer for the scene the address holds');
 
-    // Beyond their bound (the default, 1,000 per contact): refused in the command line's words.
-    await navigate(p, hashOf(billiard(1e6)));
+    // Beyond their bound (the default, 100 per contact and at least 10,000; a ratio of 10^8 needs
+    // 31,415): refused in the command line's words.
+    await navigate(p, hashOf(billiard(1e8)));
     const bounded = await pageState(p);
     checkAgainstCommandLine(bounded, line(bounded), 'beyond the bound: the command line\'s refusal');
     checkClean(p, 'slices');

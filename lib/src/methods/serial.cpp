@@ -38,6 +38,11 @@ std::int64_t count_passes(std::span<const Eigen::Index> order) {
   return passes;
 }
 
+std::string default_collision_bound_words() {
+  return std::to_string(collisions_per_contact) + " per contact, at least " +
+         std::to_string(least_collisions);
+}
+
 namespace {
 
 using Eigen::Index;
@@ -48,7 +53,7 @@ using multipoint::Touch;
 void require_options(const SerialOptions& options) {
   if (options.max_collisions < 0) {
     throw InvalidInput("max_collisions must be at least 1 (or 0 for " +
-                       std::to_string(collisions_per_contact) + " per contact), got " +
+                       default_collision_bound_words() + "), got " +
                        std::to_string(options.max_collisions));
   }
   if (!(options.approach_tolerance >= 0.0 && std::isfinite(options.approach_tolerance))) {
@@ -208,9 +213,8 @@ struct SerialCollisions::State {
     }
     r.Fdt = Eigen::VectorXd::Zero(n);
     SerialDiagnostics& d = r.diagnostics;
-    d.max_collisions = options.max_collisions > 0
-                           ? options.max_collisions
-                           : collisions_per_contact * std::max<std::int64_t>(1, n);
+    d.max_collisions =
+        options.max_collisions > 0 ? options.max_collisions : default_collision_bound(n);
     double speed = 0.0;  // the largest speed of a body's point at a contact, before
     for (const Contact& contact : contacts) {
       speed = std::max(speed,
@@ -390,7 +394,7 @@ Outcome serial_outcome(SerialResolution s, const Paper& paper, const Options& op
     o.unfinished =
         "serial collisions did not end: after " + std::to_string(d.order.size()) +
         " collisions (the bound: solver.max_collisions, by default " +
-        std::to_string(collisions_per_contact) + " per contact), " +
+        default_collision_bound_words() + "), " +
         (d.still_approaching >= 0 ? detail::contact_name(options, d.still_approaching) +
                                         " still approaches at " + number_text(d.approach_left)
                                   : std::string("a contact still approaches")) +
