@@ -704,6 +704,23 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
                  "e^2}$$") == fails);
   CHECK(verdicts("assume: e > 1\n\n$$\\Delta K = K (1 - e^2)$$\n\n$$K = \\frac{\\Delta K}{1 - "
                  "e^2}$$") == free);
+  // The same with π in the equation before: θ = 90° pins θ at π/2, where cos θ = 0, so
+  // tan θ cos θ = 1 is defined nowhere the equation before holds (it was follows-if cos θ ≠ 0:
+  // GiNaC factors over the rationals only, and a point with π in it was not taken as exact).
+  CHECK(verdicts("$$\\theta = 90^\\circ$$\n\n$$\\tan\\theta \\cos\\theta = 1$$") == fails);
+  CHECK(verdicts("$$\\theta = \\frac{\\pi}{2}$$\n\n$$\\sin\\theta = 1$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
+  {
+    const d::DerivationReport at_pi = d::check_derivation(
+        "$$\\theta = \\frac{\\pi}{2}$$\n\n$$\\theta = 1$$", "student.md", pinned_options());
+    const d::EquationResult& e = at_pi.equations.at(1);
+    CHECK(e.verdict == d::Verdict::does_not_follow);
+    CHECK(e.counterexample_exact);  // θ = π/2 exactly (it was the numeric method's point)
+    REQUIRE(e.counterexample.size() == 1);
+    CHECK(e.counterexample[0].exact_x == "Pi/2");
+  }
+  // π factors as the symbol it is not: θ² = π² gives θ = π where θ + π ≠ 0.
+  CHECK(verdicts("$$\\theta^2 = \\pi^2$$\n\n$$\\theta = \\pi$$") == conditional);
   // x² + y² = 0 only where x = y = 0 (undecided before); x = 1 does not follow.
   CHECK(verdicts("$$x^2 + y^2 = 0$$\n\n$$x = 0$$") ==
         std::vector<std::string>{"premise", "follows-one-way"});

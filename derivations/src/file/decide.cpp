@@ -119,6 +119,12 @@ ex factored(const ex& e) {
   if (expanded_terms(e) > 200) {
     return e;
   }
+  if (e.has(GiNaC::Pi)) {
+    // GiNaC factors over the rationals only (θ - π/2 made it throw). π is transcendental, so as
+    // a symbol it factors the same: x - π/2 and x^2 - π^2 = (x - π)(x + π).
+    const GiNaC::symbol pi("\\pi");
+    return factored(e.subs(GiNaC::Pi == pi)).subs(pi == GiNaC::Pi);
+  }
   const ex parts = GiNaC::numer_denom(e);
   if (!in_factoring_bounds(parts.op(0)) || !in_factoring_bounds(parts.op(1))) {
     return e;  // beyond them, taken as it stands
@@ -1203,9 +1209,12 @@ class Decider {
       return std::nullopt;
     }
     try {
+      // π as a symbol, as factored() takes it: GiNaC divides over the rationals only.
+      const GiNaC::symbol pi("\\pi");
+      const auto polynomial = [&](const ex& e) { return GiNaC::expand(e).subs(GiNaC::Pi == pi); };
       ex quotient;
-      if (GiNaC::divide(GiNaC::expand(target), GiNaC::expand(p), quotient)) {
-        return quotient;
+      if (GiNaC::divide(polynomial(target), polynomial(p), quotient)) {
+        return quotient.subs(pi == GiNaC::Pi);
       }
     } catch (const std::exception&) {
       // not polynomials (a root, a function): no exact division
@@ -1348,6 +1357,19 @@ class Decider {
   // 10^-k.
   static numeric below(int k) { return numeric(10).power(-k); }
 
+  // A value exact without rounding although not a rational: a rational plus a rational multiple
+  // of π (θ = 90° solved is π/2), at which GiNaC gives sines and cosines exactly.
+  static bool rational_in_pi(const ex& v) {
+    const ex e = GiNaC::expand(v);
+    if (!e.is_polynomial(GiNaC::Pi) || e.degree(GiNaC::Pi) != 1) {
+      return false;
+    }
+    const ex k = e.coeff(GiNaC::Pi, 1);
+    const ex c = e.coeff(GiNaC::Pi, 0);
+    return is_a<numeric>(k) && GiNaC::ex_to<numeric>(k).is_rational() && is_a<numeric>(c) &&
+           GiNaC::ex_to<numeric>(c).is_rational();
+  }
+
   static bool real_number(const ex& v) {
     const ex f = GiNaC::evalf(v);
     return is_a<numeric>(f) && GiNaC::ex_to<numeric>(f).is_real();
@@ -1393,7 +1415,7 @@ class Decider {
             ok = false;
             break;
           }
-          if (exact_only && !is_a<numeric>(v)) {
+          if (exact_only && !is_a<numeric>(v) && !rational_in_pi(v)) {
             ok = false;
             break;
           }
