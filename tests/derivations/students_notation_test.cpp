@@ -719,6 +719,11 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
     REQUIRE(e.counterexample.size() == 1);
     CHECK(e.counterexample[0].exact_x == "Pi/2");
   }
+  // An angle from its components: cos(arctan(v_y/v_x)) is √(v_x²/(v_x² + v_y²)), zero only where
+  // v_x is, where the equation before is not defined; so tan θ = v_y/v_x needs no condition (it
+  // was follows-if cos θ ≠ 0), and follows one way (θ + π solves it too).
+  CHECK(verdicts("$$\\theta = \\arctan\\frac{v_y}{v_x}$$\n\n$$\\tan\\theta = \\frac{v_y}{v_x}$$") ==
+        std::vector<std::string>{"premise", "follows-one-way"});
   // π factors as the symbol it is not: θ² = π² gives θ = π where θ + π ≠ 0.
   CHECK(verdicts("$$\\theta^2 = \\pi^2$$\n\n$$\\theta = \\pi$$") == conditional);
   // x² + y² = 0 only where x = y = 0 (undecided before); x = 1 does not follow.

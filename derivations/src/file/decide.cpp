@@ -184,7 +184,13 @@ std::vector<ex> doubtful_factors(const ex& e, const Facts& facts) {
   const ex product = factorable(rest) ? factored(rest) : rest;
   const auto one = [&](const ex& f) {
     if (is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1))) {
-      add(f.op(0));
+      // b^k is 0 where b is, and b where its numerator is (√(x²/(x² + y²)), which
+      // cos(arctan(y/x)) becomes, where x is); b^-k never is.
+      if (!GiNaC::ex_to<numeric>(f.op(1)).is_negative()) {
+        for (const ex& g : doubtful_factors(safe_numerator(f.op(0)), facts)) {
+          add(g);
+        }
+      }
     } else {
       add(f);
     }
