@@ -115,15 +115,43 @@ bool in_factoring_bounds(const ex& e) {
 
 }  // namespace
 
+namespace {
+
+const GiNaC::symbol& pi_symbol() {
+  thread_local const GiNaC::symbol pi("\\pi");
+  return pi;
+}
+
+}  // namespace
+
+ex pi_as_symbol(const ex& e) {
+  return e.has(GiNaC::Pi) ? e.subs(GiNaC::Pi == pi_symbol()) : e;
+}
+
+ex symbol_as_pi(const ex& e) {
+  return e.has(pi_symbol()) ? e.subs(pi_symbol() == GiNaC::Pi) : e;
+}
+
+std::optional<ex> exact_quotient(const ex& dividend, const ex& divisor) {
+  try {
+    ex quotient;
+    if (GiNaC::divide(pi_as_symbol(GiNaC::expand(dividend)), pi_as_symbol(GiNaC::expand(divisor)),
+                      quotient)) {
+      return symbol_as_pi(quotient);
+    }
+  } catch (const std::exception&) {
+    // not polynomials (a root, a function): no exact division
+  }
+  return std::nullopt;
+}
+
 ex factored(const ex& e) {
   if (expanded_terms(e) > 200) {
     return e;
   }
   if (e.has(GiNaC::Pi)) {
-    // GiNaC factors over the rationals only (θ - π/2 made it throw). π is transcendental, so as
-    // a symbol it factors the same: x - π/2 and x^2 - π^2 = (x - π)(x + π).
-    const GiNaC::symbol pi("\\pi");
-    return factored(e.subs(GiNaC::Pi == pi)).subs(pi == GiNaC::Pi);
+    // θ - π/2 made GiNaC's factoring throw; x^2 - π^2 = (x - π)(x + π).
+    return symbol_as_pi(factored(pi_as_symbol(e)));
   }
   const ex parts = GiNaC::numer_denom(e);
   if (!in_factoring_bounds(parts.op(0)) || !in_factoring_bounds(parts.op(1))) {
@@ -1029,21 +1057,19 @@ class Decider {
             return written;
           }
         }
-        const ex polynomial = GiNaC::expand(d);
-        for (const ex& p : numerators) {
-          // p divides d only if d has every symbol of p (checked first: it costs no division).
-          const std::vector<ex> in_p = symbols_of(p);
-          if (in_p.empty() || expanded_terms(p) > small ||
-              !std::all_of(in_p.begin(), in_p.end(), [&](const ex& u) { return d.has(u); })) {
-            continue;
-          }
-          ex quotient;
-          if (GiNaC::divide(polynomial, GiNaC::expand(p), quotient)) {
-            return written;
-          }
-        }
       } catch (const std::exception&) {
-        continue;  // not polynomials (a root, a function): no exact division
+        continue;
+      }
+      for (const ex& p : numerators) {
+        // p divides d only if d has every symbol of p (checked first: it costs no division).
+        const std::vector<ex> in_p = symbols_of(p);
+        if (in_p.empty() || expanded_terms(p) > small ||
+            !std::all_of(in_p.begin(), in_p.end(), [&](const ex& u) { return d.has(u); })) {
+          continue;
+        }
+        if (exact_quotient(d, p)) {
+          return written;
+        }
       }
     }
     return std::nullopt;
@@ -1214,18 +1240,7 @@ class Decider {
     if (expanded_terms(target) > budget_.terms || expanded_terms(p) > budget_.terms) {
       return std::nullopt;
     }
-    try {
-      // π as a symbol, as factored() takes it: GiNaC divides over the rationals only.
-      const GiNaC::symbol pi("\\pi");
-      const auto polynomial = [&](const ex& e) { return GiNaC::expand(e).subs(GiNaC::Pi == pi); };
-      ex quotient;
-      if (GiNaC::divide(polynomial(target), polynomial(p), quotient)) {
-        return quotient.subs(pi == GiNaC::Pi);
-      }
-    } catch (const std::exception&) {
-      // not polynomials (a root, a function): no exact division
-    }
-    return std::nullopt;
+    return exact_quotient(target, p);
   }
 
   // Premises that are linear in none of their symbols (and divide no step: see run()).

@@ -82,6 +82,16 @@ struct Budget {
 /// over one denominator, a function's rule read from an equation); a larger one is left as it is.
 inline constexpr double most_expanded_terms = 4000;
 
+/// @p e with π as a symbol: GiNaC's polynomial algorithms (factor, divide, rem) take rational
+/// coefficients only, and π, transcendental, factors and divides as a symbol does.
+[[nodiscard]] GiNaC::ex pi_as_symbol(const GiNaC::ex& e);
+/// @p e with the symbol of pi_as_symbol() as π again.
+[[nodiscard]] GiNaC::ex symbol_as_pi(const GiNaC::ex& e);
+/// The quotient @p dividend / @p divisor when it is a polynomial (π taken as a symbol); none when
+/// the division leaves a remainder or either is not a polynomial (a root, a function).
+[[nodiscard]] std::optional<GiNaC::ex> exact_quotient(const GiNaC::ex& dividend,
+                                                      const GiNaC::ex& divisor);
+
 /// Whether @p e is small enough to factor: few terms, symbols and degrees (factoring a
 /// polynomial of many symbols and high degrees can take minutes).
 [[nodiscard]] bool factorable(const GiNaC::ex& e);

@@ -197,13 +197,15 @@ ex reduced(const ex& e, const std::vector<ex>& equalities) {
   } catch (const std::exception&) {
     return e;
   }
-  ex numerator = GiNaC::expand(parts.op(0));
-  ex denominator = GiNaC::expand(parts.op(1));
+  // π as a symbol (GiNaC divides over the rationals only), never the one reduced.
+  ex numerator = pi_as_symbol(GiNaC::expand(parts.op(0)));
+  ex denominator = pi_as_symbol(GiNaC::expand(parts.op(1)));
   for (const ex& q : equalities) {
-    const ex p = GiNaC::expand(q);
+    const ex p = pi_as_symbol(GiNaC::expand(q));
     for (const ex& v : symbols_of(p)) {
-      if (!p.is_polynomial(v) || p.degree(v) < 1 || !GiNaC::is_a<GiNaC::numeric>(p.lcoeff(v)) ||
-          !numerator.is_polynomial(v) || !denominator.is_polynomial(v)) {
+      if (v.is_equal(pi_as_symbol(GiNaC::Pi)) || !p.is_polynomial(v) || p.degree(v) < 1 ||
+          !GiNaC::is_a<GiNaC::numeric>(p.lcoeff(v)) || !numerator.is_polynomial(v) ||
+          !denominator.is_polynomial(v)) {
         continue;
       }
       try {
@@ -218,7 +220,7 @@ ex reduced(const ex& e, const std::vector<ex>& equalities) {
   if (denominator.is_zero()) {
     return e;
   }
-  return numerator / denominator;
+  return symbol_as_pi(numerator / denominator);
 }
 
 }  // namespace
