@@ -4,6 +4,7 @@
 // can fail: were the two writings read as different things, the step would not follow. Every
 // "refused" case is a notation a silent guess would misread; the expected place was counted by
 // hand in the text given.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <string>
 #include <vector>
@@ -718,6 +719,21 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
     CHECK(e.counterexample_exact);  // θ = π/2 exactly (it was the numeric method's point)
     REQUIRE(e.counterexample.size() == 1);
     CHECK(e.counterexample[0].exact_x == "Pi/2");
+  }
+  {
+    // A fact θ = π/2 holds at a counterexample: θ = 1 was given for z = 2θ (θ - π/2 at θ = 1 is
+    // 1 - π/2, not a GiNaC number, and was not seen to be non-zero). The only point with y = 3
+    // and θ = π/2 where z ≠ π: θ = π/2 exactly.
+    const d::DerivationReport with_fact =
+        d::check_derivation("assume: \\theta = \\frac{\\pi}{2}\n\n$$y = 3$$\n\n$$z = 2\\theta$$",
+                            "student.md", pinned_options());
+    const d::EquationResult& e = with_fact.equations.at(1);
+    CHECK(e.verdict == d::Verdict::does_not_follow);
+    CHECK(e.counterexample_exact);
+    const auto theta = std::find_if(e.counterexample.begin(), e.counterexample.end(),
+                                    [](const auto& v) { return v.symbol == "\\theta"; });
+    REQUIRE(theta != e.counterexample.end());
+    CHECK(theta->exact_x == "Pi/2");
   }
   // An angle from its components: cos(arctan(v_y/v_x)) is √(v_x²/(v_x² + v_y²)), zero only where
   // v_x is, where the equation before is not defined; so tan θ = v_y/v_x needs no condition (it

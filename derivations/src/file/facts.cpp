@@ -1180,6 +1180,24 @@ bool Facts::extends(const GiNaC::exmap& point) const {
   return false;
 }
 
+namespace {
+
+// Whether @p value, a number or an expression in constants only (1 - π/2), is certainly not
+// zero: a rational other than 0, or beyond 1e-20 in 40 digits.
+bool certainly_nonzero(const ex& value) {
+  if (is_a<GiNaC::numeric>(value)) {
+    return !value.is_zero();
+  }
+  const long saved = GiNaC::Digits;
+  GiNaC::Digits = 40;
+  const ex f = GiNaC::evalf(value);
+  GiNaC::Digits = saved;
+  return is_a<GiNaC::numeric>(f) &&
+         GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(f)) > GiNaC::numeric(10).power(-20);
+}
+
+}  // namespace
+
 bool Facts::satisfied(const GiNaC::exmap& point) const {
   // Every relation holds at the point; a relation in symbols the point does not give (b of
   // a < b < c, where a counterexample names a and c) must hold for some values of them, with
@@ -1188,8 +1206,7 @@ bool Facts::satisfied(const GiNaC::exmap& point) const {
     return false;
   }
   for (const ex& q : equalities_) {
-    const ex value = GiNaC::normal(q.subs(point));
-    if (is_a<GiNaC::numeric>(value) && !value.is_zero()) {
+    if (certainly_nonzero(GiNaC::normal(q.subs(point)))) {
       return false;
     }
   }
