@@ -45,7 +45,7 @@ inline std::optional<double> common_elasticity(const scene::Scene& s) {
     if (body.kind == scene::BodyKind::static_body) {
       continue;
     }
-    const double e = body.elasticity.value_or(s.elasticity.value_or(1.0));
+    const double e = s.elasticity_of(body);
     if (common && *common != e) {
       return std::nullopt;
     }

@@ -208,7 +208,7 @@ void validate_contact_law(const Scene& scene, std::size_t v) {
     }
   }
   const auto elasticity_of = [&](std::size_t body) {
-    return scene.bodies[body].elasticity.value_or(scene.elasticity.value_or(1.0));
+    return scene.elasticity_of(scene.bodies[body]);
   };
   const std::string why = "with friction or solver.restitution other than \"newton\"";
   if (movable.size() == 2 && elasticity_of(movable[0]) != elasticity_of(movable[1])) {
@@ -299,7 +299,7 @@ std::vector<Elasticity> elasticities_of(const Scene& scene) {
     if (body.kind == BodyKind::static_body) {
       result.emplace_back();  // unused: a static body contributes nothing
     } else {
-      result.emplace_back(body.elasticity ? *body.elasticity : scene.elasticity.value_or(1.0));
+      result.emplace_back(scene.elasticity_of(body));
     }
   }
   return result;
@@ -429,8 +429,7 @@ Result report(const World& world, const Solution& paper, methods::Outcome outcom
                              multipoint::kinetic_energy(after[k])});
     if (scene.bodies[k].kind != BodyKind::static_body) {
       result.bodies.back().own_elasticity = scene.bodies[k].elasticity.has_value();
-      result.bodies.back().elasticity =
-          scene.bodies[k].elasticity.value_or(scene.elasticity.value_or(1.0));
+      result.bodies.back().elasticity = scene.elasticity_of(scene.bodies[k]);
     }
   }
   result.energy_before = multipoint::kinetic_energy(before);

@@ -121,6 +121,14 @@ struct Scene {
   /// How the elasticity is applied once the bodies stop approaching (`solver.restitution`):
   /// Newton's (the paper's) by default, Poisson's or the energetic law.
   friction::RestitutionLaw restitution = friction::RestitutionLaw::newton;
+
+  /// @brief The elasticity @p body collides at: its own, else the scene's (a World refuses a
+  /// body with neither; 1 is returned for it here).
+  /// @param body one of the scene's bodies
+  /// @return the elasticity
+  [[nodiscard]] double elasticity_of(const Body& body) const {
+    return body.elasticity.value_or(elasticity.value_or(1.0));
+  }
 };
 
 /// @brief A scene checked once: every rule of the scene format, then its bodies and contacts as
