@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // impulselab check run as a user runs it: the formats, the section filter, the exit statuses.
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -70,6 +71,29 @@ TEST_CASE("The same seed gives the same report", "[cli]") {
       c.erase("seconds");
   }
   CHECK(a == b);
+}
+
+TEST_CASE("check runs at fixed addresses, so that GiNaC's order of terms is one per program",
+          "[cli]") {
+  if (std::system("setarch --addr-no-randomize true > /dev/null 2>&1") != 0) {
+    WARN("this system refuses fixed addresses (ADDR_NO_RANDOMIZE): check runs as it is");
+    return;
+  }
+  // The program reads a file that is a pipe, and waits for it; meanwhile a watcher reads the
+  // process's personality (the shell's process becomes impulselab by exec), then writes the file.
+  // Without the second start at fixed addresses, the personality stays 00000000.
+  const t::fs::path folder = t::fresh_folder("fixed-addresses");
+  const std::string fifo = (folder / "student.md").string();
+  const std::string seen = (folder / "personality").string();
+  const std::string watcher = "mkfifo " + t::quote(fifo) +
+                              " && ( for i in $(seq 1 200); do p=$(cat /proc/$$/personality); " +
+                              "[ \"$p\" = 00040000 ] && break; sleep 0.05; done; echo \"$p\" > " +
+                              t::quote(seen) + "; printf '$$x = 1$$\\n\\n$$2x = 2$$\\n' > " +
+                              t::quote(fifo) + " ) & ";
+  const t::Run r = t::run("check " + t::quote(fifo), "/dev/null", watcher);
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Contains("Every step follows."));
+  CHECK(t::read_text(seen) == "00040000\n");
 }
 
 TEST_CASE("check --section friction: the checks beyond the paper, apart", "[cli]") {
