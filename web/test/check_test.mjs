@@ -137,20 +137,20 @@ function examplesOfSite() {
 //    derivations/src/file/sample.hpp): the WebAssembly build and the native one round differently
 //    (1.3e-12 natively against 1.25e-11 for a step of lab 8's derivation A), and either says the
 //    same of the step;
-//  - what the command line itself does not repeat from one run to the next. GiNaC orders the
-//    terms of a sum and the factors of a product by hashes seeded with the address of each type's
-//    name (GiNaC's hash_seed.h), which moves from run to run natively (address space layout
-//    randomisation) and is another again in WebAssembly: where the checker's output follows that
-//    order (the factors named in `how`, which branch of a factored equation the residual comes
-//    from), the command line prints one of several texts. A value of the page that differs from
-//    the command line's first run is looked for in up to 20 more runs; and a `how` that none of
-//    them printed, where the runs printed `how` in several ways, must still say the same thing
-//    with the formulas ($…$) left out; a residual none of them printed must be the same
-//    expression as theirs in another order: the command line, given the two as the equations
-//    \Xi = page's and \Xi = command line's, finds the second to follow exactly (`follows` by
-//    its exact method; a refusal or any other verdict leaves the difference reported).
+//  - the order of terms in a formula. GiNaC orders the terms of a sum and the factors of a product
+//    by hashes seeded with the address of each type's name (GiNaC's hash_seed.h): the command
+//    line starts `check` at fixed addresses, so it prints one order on every run, but the
+//    WebAssembly build meets another. A residual that differs must be the same expression in
+//    another order: the command line, given the two as the equations \Xi = page's and
+//    \Xi = command line's, finds the second to follow exactly (`follows` by its exact method; a
+//    refusal or any other verdict leaves the difference reported); its plain text
+//    (`residual_text`) is then the same too. A `how` that differs must have the same words, and
+//    each of its formulas ($…$) that differs must be the same expression so (a formula with a
+//    relation in it must be the same text; a condition X ≠ 0 is compared by its X; a formula may
+//    also be the other's negative, and the formulas may come in another order: GiNaC writes a
+//    factor with either sign, and lists the factors of an equation in its order).
 const roundingBelow = 1e-9;
-const residualFigure = /worst relative residual (-?[0-9.]+(?:e[-+]?[0-9]+)?)/g;
+const residualFigure = /worst relative residual (?:below )?(-?[0-9.]+(?:e[-+]?[0-9]+)?)/g;
 
 // The values of a report by their places ("equations[3].how"), with the keys of each object in
 // order and the length of each array; timings and `file` left out, residuals of rounding as one.
@@ -174,6 +174,7 @@ function leaves(value, path = '', out = new Map()) {
 }
 
 const withoutFormulas = (how) => how.replace(/\$[^$]*\$/g, '$…$');
+const formulasOf = (how) => [...how.matchAll(/\$([^$]*)\$/g)].map((m) => m[1]);
 
 // Whether the residuals @p a and @p b (LaTeX, as the report prints them) are one expression
 // written in two orders: the command line checks \Xi = a then \Xi = b.
@@ -188,31 +189,64 @@ function sameExpression(a, b) {
   return step.verdict === 'follows' && step.decided_by === 'exact';
 }
 
-// The places where the page's report @p page differs from every report the command line gave for
-// @p file (@p first, and more runs as needed): [] when it is the command line's.
-function differences(page, first, file) {
-  const mine = leaves(page);
-  const runs = [leaves(first)];
-  const unseen = () => [...mine].filter(([path, value]) => !runs.some((r) => r.has(path) && r.get(path) === value))
-      .concat([...runs[0].keys()].filter((path) => !mine.has(path)).map((path) => [path, undefined]));
-  let left = unseen();
-  while (left.length > 0 && runs.length < 21) {
-    const run = spawnSync(cli, ['check', file, '--format', 'json'], {encoding: 'utf8'});
-    runs.push(leaves(JSON.parse(run.stdout)));
-    left = unseen();
+// Whether two formulas of a `how` are one: the same text, or (without a relation) the same
+// expression in another order or with the other sign (a factor GiNaC wrote the other way round,
+// v_2' - v_2 against -v_2' + v_2); a condition X \neq 0 likewise by its X.
+function sameFormula(f, g) {
+  if (f === g) {
+    return true;
   }
-  return left.filter(([path, value]) => {
-    if (path.endsWith('.residual') && typeof value === 'string' && value !== '' &&
-        typeof runs[0].get(path) === 'string' && runs[0].get(path) !== '') {
-      return !sameExpression(value, runs[0].get(path));
-    }
-    if (!path.endsWith('.how') || value === undefined) {
-      return true;
-    }
-    const printed = new Set(runs.map((r) => r.get(path)));
-    return printed.size < 2 || ![...printed].some((h) => h !== undefined && withoutFormulas(h) === withoutFormulas(value));
-  }).map(([path, value]) => `${path}: ${JSON.stringify(value)} against ${JSON.stringify(runs[0].get(path))}` +
-                             ` (${runs.length} runs of the command line)`);
+  const condition = /^(.*) \\neq 0$/;
+  const [cf, cg] = [f.match(condition), g.match(condition)];
+  if (cf && cg) {
+    return sameFormula(cf[1], cg[1]);
+  }
+  const relation = /=|\\neq\b|<|>|\\leq?\b|\\geq?\b/;
+  if (relation.test(f) || relation.test(g)) {
+    return false;
+  }
+  return sameExpression(f, g) || sameExpression(f, `-\\left(${g}\\right)`);
+}
+
+// Whether two `how` texts say the same: the same words, and the same formulas (sameFormula), in
+// any order (the factors of one equation are listed in GiNaC's order).
+function sameHow(a, b) {
+  const left = formulasOf(b);
+  return withoutFormulas(a) === withoutFormulas(b) && formulasOf(a).length === left.length &&
+    formulasOf(a).every((f) => {
+      const at = left.findIndex((g) => sameFormula(f, g));
+      return at >= 0 && left.splice(at, 1).length === 1;
+    });
+}
+
+// The places where the page's report @p page differs from the command line's, @p line: [] when
+// it is the command line's.
+function differences(page, line) {
+  const mine = leaves(page);
+  const theirs = leaves(line);
+  const sameResidual = (path) => {
+    const a = mine.get(path);
+    const b = theirs.get(path);
+    return typeof a === 'string' && typeof b === 'string' && a !== '' && b !== '' &&
+      (a === b || sameExpression(a, b));
+  };
+  return [...mine].filter(([path, value]) => !theirs.has(path) || theirs.get(path) !== value)
+      .concat([...theirs.keys()].filter((path) => !mine.has(path)).map((path) => [path, undefined]))
+      .filter(([path, value]) => {
+        if (value === undefined || !theirs.has(path)) {
+          return true;
+        }
+        if (path.endsWith('.residual')) {
+          return !sameResidual(path);
+        }
+        if (path.endsWith('.residual_text')) {
+          return !sameResidual(path.replace(/_text$/, ''));
+        }
+        if (path.endsWith('.how')) {
+          return !sameHow(value, theirs.get(path));
+        }
+        return true;
+      }).map(([path, value]) => `${path}: ${JSON.stringify(value)} against ${JSON.stringify(theirs.get(path))}`);
 }
 
 // The page shows what the command line gives for the same file; @p name is the `file` the page's
@@ -238,7 +272,7 @@ function checkAgainstCommandLine(state, line, name, where) {
     return;
   }
   check(report.file === name, `${where}: the report names the file ${name}`, report.file);
-  const found = differences(report, line.report, line.file);
+  const found = differences(report, line.report);
   check(found.length === 0, `${where}: result-json is the command line's (timings aside)`, found.slice(0, 8).join('\n'));
   // The command line's exit 1 names the first equation that does not pass: the page marks it.
   const marked = line.firstFailing === null ? '' : `line ${line.firstFailing}`;
