@@ -455,6 +455,20 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
   // a < b makes b - a positive.
   CHECK(verdicts("assume: a < b\n\n$$(b - a) x = 1$$\n\n$$x = \\frac{1}{b - a}$$") ==
         std::vector<std::string>{"premise", "follows"});
+  // A divisor kept from 0 by a combination of linear facts whose terms agree in sign (each was
+  // follows-if before): by hand, x = 2(2x + 3y) - 3(x + 2y) > 0; x = ((2x - y) + y)/2 > 0;
+  // 3x = (x + y + z) + (x - y) + (x - z) > 0; x - 1 = ((x - y) + (x + y - 2))/2 > 0.
+  const auto divided = [](const std::string& facts, const std::string& d) {
+    return verdicts("assume: " + facts + "\n\n$$J " + d + " = p$$\n\n$$J = \\frac{p}{" + d + "}$$")
+        .back();
+  };
+  CHECK(divided("2x + 3y > 0, x + 2y < 0", "x") == "follows");
+  CHECK(divided("2x - y > 0, y > 0", "x") == "follows");
+  CHECK(divided("x + y + z > 0, x - y \\ge 0, x - z \\ge 0", "x") == "follows");
+  CHECK(divided("x + y = 2, x - y > 0", "(x - 1)") == "follows");
+  // Where the terms disagree, or give ≥ 0 only, the divisor may be 0 (x = 0, y = 1; x = y = 1).
+  CHECK(divided("x + y > 0, x - y < 0", "x") == "follows-if");
+  CHECK(divided("x + y = 2, x - y \\ge 0", "(x - 1)") == "follows-if");
   // The length of a unit vector, and of one turned a quarter: 1 by the equality n_x² + n_y² = 1
   // (undecided before, with GiNaC's "rem: arguments must be polynomials" as the reason).
   const std::string unit = "vector: n, t\n\nunit: n\n\n";

@@ -717,7 +717,7 @@ Sign Facts::sign(const ex& e) const {
   }
   const Sign known = s != Sign::unknown ? s : r;
   if (known == Sign::unknown) {
-    const Sign combined = of_two_relations(e);
+    const Sign combined = of_linear_facts(e);
     return combined != Sign::unknown ? combined : of_quadratic(e);
   }
   return known;
@@ -754,12 +754,76 @@ Sign Facts::of_quadratic(const ex& e) const {
   return Sign::unknown;
 }
 
-// e = λ r + μ q + c with two linear relations r, q of the facts, λ and μ numbers of one sign
-// (both ≥ 0, or both ≤ 0: then -e's the same way) and c a number: the sign of that sum (x + y > 0
-// and x - y > 0 give x = (r + q)/2 > 0). Only for e linear in a few symbols, which is what a fact
-// on a sum or difference bounds.
-Sign Facts::of_two_relations(const ex& e) const {
-  if (relations_.size() < 2 || relations_.size() > 12 ||
+namespace {
+
+// The sign of e = Σ λ_i r_i + c for the facts r_i of @p chosen (each with its sign) when that
+// combination exists with numbers λ_i and c; unknown when it does not, or when its terms' signs
+// disagree.
+Sign combined_sign(const ex& e, const std::vector<const std::pair<ex, Sign>*>& chosen) {
+  std::vector<GiNaC::symbol> lambdas;
+  ex rest = e;
+  GiNaC::lst unknowns;
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    lambdas.emplace_back("lambda" + std::to_string(i));
+    unknowns.append(lambdas.back());
+    rest -= lambdas.back() * chosen[i]->first;
+  }
+  rest = GiNaC::expand(rest);
+  GiNaC::exset in_rest;
+  for (GiNaC::const_preorder_iterator it = rest.preorder_begin(); it != rest.preorder_end(); ++it) {
+    if (is_a<GiNaC::symbol>(*it) && std::none_of(lambdas.begin(), lambdas.end(),
+                                                 [&](const ex& l) { return it->is_equal(l); })) {
+      in_rest.insert(*it);
+    }
+  }
+  if (in_rest.size() > 6) {
+    return Sign::unknown;
+  }
+  GiNaC::lst equations;
+  for (const ex& v : in_rest) {
+    equations.append(rest.coeff(v, 1) == 0);
+  }
+  ex solution;
+  try {
+    solution = GiNaC::lsolve(equations, unknowns);
+  } catch (const std::exception&) {
+    return Sign::unknown;
+  }
+  if (solution.nops() != chosen.size()) {
+    return Sign::unknown;
+  }
+  GiNaC::lst values;
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    const ex k = solution.op(i).rhs();
+    if (!is_a<GiNaC::numeric>(k)) {
+      return Sign::unknown;  // not one combination (a λ left free)
+    }
+    values.append(lambdas[i] == k);
+  }
+  const ex c = GiNaC::expand(rest.subs(values));
+  if (!is_a<GiNaC::numeric>(c)) {
+    return Sign::unknown;
+  }
+  Sign total = GiNaC::ex_to<GiNaC::numeric>(c).is_zero()       ? Sign::zero
+               : GiNaC::ex_to<GiNaC::numeric>(c).is_positive() ? Sign::positive
+                                                               : Sign::negative;
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    const auto& k = GiNaC::ex_to<GiNaC::numeric>(values.op(i).rhs());
+    const Sign s = chosen[i]->second;
+    total = plus(total, k.is_zero() ? Sign::zero : k.is_positive() ? s : flipped(s));
+  }
+  return total;
+}
+
+}  // namespace
+
+// e = Σ λ_i r_i + c with two or three linear facts r_i (relations, signs of symbols, the ends of
+// ranges, equalities), numbers λ_i and c: the sign of that sum when its terms agree (x + y > 0
+// and x - y > 0 give x = (r + q)/2 > 0; 2x + 3y > 0 and x + 2y < 0 give x = 2r - 3q > 0;
+// x + y + z > 0, x ≥ y and x ≥ z give 3x > 0). Only for e linear in a few symbols, which is what
+// a fact on a sum or difference bounds.
+Sign Facts::of_linear_facts(const ex& e) const {
+  if (relations_.empty() || relations_.size() > 12 ||
       (!is_a<GiNaC::add>(e) && !is_a<GiNaC::symbol>(e))) {
     return Sign::unknown;
   }
@@ -770,9 +834,9 @@ Sign Facts::of_two_relations(const ex& e) const {
       symbols.append(*it);
     }
   }
-  const auto linear = [&](const ex& x) {
-    for (const ex& v : symbols) {
-      if (!x.is_polynomial(v) || x.degree(v) > 1) {
+  const auto linear = [](const ex& x) {
+    for (GiNaC::const_preorder_iterator it = x.preorder_begin(); it != x.preorder_end(); ++it) {
+      if (is_a<GiNaC::symbol>(*it) && (!x.is_polynomial(*it) || x.degree(*it) > 1)) {
         return false;
       }
     }
@@ -781,68 +845,83 @@ Sign Facts::of_two_relations(const ex& e) const {
   if (symbols.nops() == 0 || symbols.nops() > 4 || !linear(e)) {
     return Sign::unknown;
   }
-  const GiNaC::symbol lambda("lambda");
-  const GiNaC::symbol mu("mu");
-  for (std::size_t i = 0; i < relations_.size(); ++i) {
-    for (std::size_t j = i + 1; j < relations_.size(); ++j) {
-      // (Named, not bound: clang 14 cannot capture a structured binding in the lambda below.)
-      const ex& r = relations_[i].first;
-      const Sign r_sign = relations_[i].second;
-      const ex& q = relations_[j].first;
-      const Sign q_sign = relations_[j].second;
-      const bool cover = std::all_of(symbols.begin(), symbols.end(),
-                                     [&](const ex& v) { return r.has(v) || q.has(v); });
-      if (!cover || !linear(r) || !linear(q)) {
-        continue;
-      }
-      // Every symbol's coefficient in e - λ r - μ q is 0 (y of x + y and x - y too).
-      const ex rest = GiNaC::expand(e - lambda * r - mu * q);
-      GiNaC::exset in_rest;
-      for (GiNaC::const_preorder_iterator it = rest.preorder_begin(); it != rest.preorder_end();
-           ++it) {
-        if (is_a<GiNaC::symbol>(*it) && !it->is_equal(lambda) && !it->is_equal(mu)) {
-          in_rest.insert(*it);
+  // The linear facts: the relations, then what the facts say of each symbol of them or of e
+  // alone (its sign, the ends of its range) and the linear equalities.
+  std::vector<std::pair<ex, Sign>> facts;
+  GiNaC::exset named(symbols.begin(), symbols.end());
+  for (const auto& relation : relations_) {
+    if (linear(relation.first)) {
+      facts.push_back(relation);
+      for (GiNaC::const_preorder_iterator it = relation.first.preorder_begin();
+           it != relation.first.preorder_end(); ++it) {
+        if (is_a<GiNaC::symbol>(*it)) {
+          named.insert(*it);
         }
-      }
-      if (in_rest.size() > 6) {
-        continue;
-      }
-      GiNaC::lst equations;
-      for (const ex& v : in_rest) {
-        equations.append(rest.coeff(v, 1) == 0);
-      }
-      ex solution;
-      try {
-        solution = GiNaC::lsolve(equations, GiNaC::lst{lambda, mu});
-      } catch (const std::exception&) {
-        continue;
-      }
-      if (solution.nops() != 2) {
-        continue;
-      }
-      const ex l = solution.op(0).rhs();
-      const ex m = solution.op(1).rhs();
-      if (!is_a<GiNaC::numeric>(l) || !is_a<GiNaC::numeric>(m)) {
-        continue;  // not one combination (λ or μ left free)
-      }
-      const ex c = GiNaC::expand(rest.subs(GiNaC::lst{lambda == l, mu == m}));
-      const auto& lv = GiNaC::ex_to<GiNaC::numeric>(l);
-      const auto& mv = GiNaC::ex_to<GiNaC::numeric>(m);
-      // λ and μ of one sign (both ≤ 0: the sign of -e the same way).
-      if (!is_a<GiNaC::numeric>(c) || (lv.is_negative() && mv.is_positive()) ||
-          (lv.is_positive() && mv.is_negative())) {
-        continue;
-      }
-      const auto scaled = [](const GiNaC::numeric& k, Sign s) {
-        return k.is_zero() ? Sign::zero : k.is_positive() ? s : flipped(s);
-      };
-      const Sign total = plus(plus(scaled(lv, r_sign), scaled(mv, q_sign)), structural(c));
-      if (total != Sign::unknown) {
-        return total;
       }
     }
   }
-  return Sign::unknown;
+  if (facts.empty() || named.size() > 6) {
+    return Sign::unknown;
+  }
+  for (const ex& v : named) {
+    if (const Sign s = of_symbol(v); s != Sign::unknown) {
+      facts.emplace_back(v, s);
+    }
+    if (const auto found = exact_bounds_.find(v); found != exact_bounds_.end()) {
+      const auto is_strict = strict_.find(v);
+      const bool low_strict = is_strict != strict_.end() && is_strict->second.first;
+      const bool high_strict = is_strict != strict_.end() && is_strict->second.second;
+      if (found->second.first) {
+        facts.emplace_back(v - *found->second.first,
+                           low_strict ? Sign::positive : Sign::nonnegative);
+      }
+      if (found->second.second) {
+        facts.emplace_back(*found->second.second - v,
+                           high_strict ? Sign::positive : Sign::nonnegative);
+      }
+    }
+  }
+  for (const ex& q : equalities_) {
+    if (linear(q)) {
+      facts.emplace_back(q, Sign::zero);
+    }
+  }
+  if (facts.size() > 16) {
+    return Sign::unknown;
+  }
+  const auto covers = [&](const std::vector<const std::pair<ex, Sign>*>& chosen) {
+    return std::all_of(symbols.begin(), symbols.end(), [&](const ex& v) {
+      return std::any_of(chosen.begin(), chosen.end(),
+                         [&](const auto* f) { return f->first.has(v); });
+    });
+  };
+  // A strict sign ends the search; a weak one (≥ 0) is kept in case a strict one follows.
+  Sign weak = Sign::unknown;
+  const auto strict = [&](const std::vector<const std::pair<ex, Sign>*>& chosen) {
+    if (!covers(chosen)) {
+      return false;
+    }
+    const Sign s = combined_sign(e, chosen);
+    if (s == Sign::nonnegative || s == Sign::nonpositive) {
+      weak = s;
+    }
+    return s != Sign::unknown && s != Sign::nonnegative && s != Sign::nonpositive;
+  };
+  for (std::size_t i = 0; i < facts.size(); ++i) {
+    for (std::size_t j = i + 1; j < facts.size(); ++j) {
+      std::vector<const std::pair<ex, Sign>*> chosen{&facts[i], &facts[j]};
+      if (strict(chosen)) {
+        return combined_sign(e, chosen);
+      }
+      for (std::size_t k = j + 1; k < facts.size() && facts.size() <= 8; ++k) {
+        chosen = {&facts[i], &facts[j], &facts[k]};
+        if (strict(chosen)) {
+          return combined_sign(e, chosen);
+        }
+      }
+    }
+  }
+  return weak;
 }
 
 Sign Facts::of_range(const ex& e) const {

@@ -108,7 +108,7 @@ class Facts {
   [[nodiscard]] std::pair<std::optional<double>, std::optional<double>> exact_wave_ends(
       const GiNaC::ex& argument, bool cosine, double low_end, double high_end) const;
   [[nodiscard]] Sign through_relation(const GiNaC::ex& x) const;
-  [[nodiscard]] Sign of_two_relations(const GiNaC::ex& e) const;
+  [[nodiscard]] Sign of_linear_facts(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_quadratic(const GiNaC::ex& e) const;
   /// Whether every relation that can be judged at @p at holds (and, with @p all_judged, every
   /// relation can be).
