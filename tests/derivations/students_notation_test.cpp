@@ -764,6 +764,18 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   CHECK(verdicts("assume: m_2 > 1, m_1 \\le 1\n\n$$z = \\frac{1}{m_2 - m_1}$$\n\n$$\\sqrt{z} = "
                  "\\frac{1}{\\sqrt{m_2 - m_1}}$$")
             .back() == "follows");
+  // Where a - b may be negative, √(1/(a - b)) = 1/√(a - b) is not shown (at a - b = -1/4 the
+  // left is 2i and the right -2i): undecided, as for x = 1/y. Both were follows: the value put
+  // in for a was b + 1/x, and the root's base, x^(-1)(1 + x b) - b, was not seen to be 1/x; and
+  // -1/(m_2 - m_1) was not seen as 1 over anything.
+  CHECK(verdicts("$$x = \\frac{1}{a - b}$$\n\n$$\\sqrt{x} = \\frac{1}{\\sqrt{a - b}}$$").back() ==
+        "undecided");
+  CHECK(verdicts("assume: m_1 > 1, m_2 < 2\n\n$$z = \\frac{1}{m_1 - m_2}$$\n\n$$\\sqrt{z} = "
+                 "\\frac{1}{\\sqrt{m_1 - m_2}}$$")
+            .back() == "undecided");
+  CHECK(verdicts("assume: m_2 > 1, m_1 < 2\n\n$$z = \\frac{1}{m_2 - m_1}$$\n\n$$\\sqrt{z} = "
+                 "\\frac{1}{\\sqrt{m_2 - m_1}}$$")
+            .back() == "undecided");
   // π factors as the symbol it is not: θ² = π² gives θ = π where θ + π ≠ 0.
   CHECK(verdicts("$$\\theta^2 = \\pi^2$$\n\n$$\\theta = \\pi$$") == conditional);
   // x² + y² = 0 only where x = y = 0 (undecided before); x = 1 does not follow.

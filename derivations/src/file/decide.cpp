@@ -617,19 +617,38 @@ ex safe_numerator(const ex& e, double terms) {
 
 namespace {
 
-// @p base as k/X, a number k > 0 over X (1/y, 4/y, 1/(m_1 - m_2)): k and X; else nothing.
+// @p base as k/X, a number k > 0 over X (1/y, 4/y, 1/(m_1 - m_2)): k and X; else nothing. A
+// negative number in front goes into X: GiNaC writes 1/(m_1 - m_2) as -1/(m_2 - m_1) when its
+// order of terms (which follows addresses) puts m_2 first.
 std::optional<std::pair<ex, ex>> over_something(const ex& base) {
   ex k = 1;
   ex rest = base;
   if (is_a<GiNaC::mul>(base) && base.nops() == 2 && is_a<numeric>(base.op(1)) &&
-      GiNaC::ex_to<numeric>(base.op(1)).is_positive()) {
+      GiNaC::ex_to<numeric>(base.op(1)).is_real() && !base.op(1).is_zero()) {
     k = base.op(1);
     rest = base.op(0);
   }
-  if (is_a<GiNaC::power>(rest) && rest.op(1).is_equal(-1)) {
-    return std::pair{k, rest.op(0)};
+  if (!is_a<GiNaC::power>(rest) || !rest.op(1).is_equal(-1)) {
+    return std::nullopt;
   }
-  return std::nullopt;
+  if (GiNaC::ex_to<numeric>(k).is_negative()) {
+    return std::pair{ex(-k), ex(-rest.op(0))};
+  }
+  return std::pair{k, rest.op(0)};
+}
+
+// @p base with @p value put for @p symbol, over one denominator where that is small: b + 1/x
+// put in a - b is 1/x, not x^(-1) (1 + x b) - b.
+ex base_put_in(const ex& base, const ex& symbol, const ex& value) {
+  const ex put = base.subs(GiNaC::exmap{{symbol, value}});
+  if (expanded_terms(put) > 60) {
+    return put;
+  }
+  try {
+    return GiNaC::normal(put);
+  } catch (const std::exception&) {
+    return put;  // a division by zero: as it stands
+  }
 }
 
 // The first X of @p e such that putting @p value for @p symbol makes a non-integer power of
@@ -643,7 +662,7 @@ std::optional<ex> reciprocal_under_power(const ex& e, const ex& symbol, const ex
       continue;
     }
     // The base as it will be, built without evaluating its power.
-    if (const auto reciprocal = over_something(i->op(0).subs(GiNaC::exmap{{symbol, value}}))) {
+    if (const auto reciprocal = over_something(base_put_in(i->op(0), symbol, value))) {
       return reciprocal->second;
     }
   }
@@ -667,7 +686,7 @@ ex put_in_below_zero(const ex& e, const ex& symbol, const ex& value, const ex& u
         return part.subs(GiNaC::exmap{{symbol, value}});
       }
       if (is_a<GiNaC::power>(part) && !part.op(1).info(GiNaC::info_flags::integer)) {
-        const auto reciprocal = over_something(part.op(0).subs(GiNaC::exmap{{symbol, value}}));
+        const auto reciprocal = over_something(base_put_in(part.op(0), symbol, value));
         if (reciprocal && reciprocal->second.is_equal(under)) {
           const ex c = part.op(1).subs(GiNaC::exmap{{symbol, value}});
           return GiNaC::pow(reciprocal->first, c) * GiNaC::pow(-1, c) * GiNaC::pow(-under, -c);
