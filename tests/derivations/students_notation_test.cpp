@@ -466,6 +466,8 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
   CHECK(divided("2x - y > 0, y > 0", "x") == "follows");
   CHECK(divided("x + y + z > 0, x - y \\ge 0, x - z \\ge 0", "x") == "follows");
   CHECK(divided("x + y = 2, x - y > 0", "(x - 1)") == "follows");
+  // A symbol's sign so found bounds what is built on it: x > 0, so e^x - 1 > 0.
+  CHECK(divided("x + y > 0, x - y > 0", "(\\exp(x) - 1)") == "follows");
   // Where the terms disagree, or give ≥ 0 only, the divisor may be 0 (x = 0, y = 1; x = y = 1).
   CHECK(divided("x + y > 0, x - y < 0", "x") == "follows-if");
   CHECK(divided("x + y = 2, x - y \\ge 0", "(x - 1)") == "follows-if");

@@ -431,11 +431,13 @@ bool Facts::add(const ex& symbol, Sign sign) {
     }
   }
   signs_[symbol] = combined;
+  derived_signs_.clear();
   return true;
 }
 
 void Facts::add_relation(const ex& e, Sign sign) {
   wave_ends_.clear();
+  derived_signs_.clear();
   const ex expanded = GiNaC::expand(e);
   if (is_a<GiNaC::symbol>(expanded)) {
     add(expanded, sign);
@@ -529,6 +531,7 @@ void Facts::add_relation(const ex& e, Sign sign) {
 
 void Facts::add_equality(const ex& e) {
   wave_ends_.clear();
+  derived_signs_.clear();
   equalities_.push_back(GiNaC::expand(e));
 }
 
@@ -544,6 +547,7 @@ Facts Facts::carried(const std::vector<std::pair<ex, ex>>& renamed) const {
       copy.exact_bounds_[to] = exact_bounds_.at(from);
     }
   }
+  copy.derived_signs_.clear();
   return copy;
 }
 
@@ -924,6 +928,20 @@ Sign Facts::of_linear_facts(const ex& e) const {
   return weak;
 }
 
+// A symbol's sign as the facts give it, or as linear facts added give it (x + y > 0 and x - y > 0
+// give x > 0, and so e^x - 1 > 0), remembered until a fact is added.
+Sign Facts::derived_sign(const ex& symbol) const {
+  if (const Sign s = of_symbol(symbol); s != Sign::unknown || relations_.empty()) {
+    return s;
+  }
+  if (const auto found = derived_signs_.find(symbol); found != derived_signs_.end()) {
+    return found->second;
+  }
+  const Sign s = of_linear_facts(symbol);
+  derived_signs_[symbol] = s;
+  return s;
+}
+
 Sign Facts::of_range(const ex& e) const {
   const std::function<Range(const ex&)> range = [&](const ex& x) -> Range {
     if (is_a<GiNaC::numeric>(x)) {
@@ -938,7 +956,7 @@ Sign Facts::of_range(const ex& e) const {
     }
     if (is_a<GiNaC::symbol>(x)) {
       Range r;
-      switch (of_symbol(x)) {
+      switch (derived_sign(x)) {
         case Sign::positive:
           r.low = 0;
           break;

@@ -109,6 +109,7 @@ class Facts {
       const GiNaC::ex& argument, bool cosine, double low_end, double high_end) const;
   [[nodiscard]] Sign through_relation(const GiNaC::ex& x) const;
   [[nodiscard]] Sign of_linear_facts(const GiNaC::ex& e) const;
+  [[nodiscard]] Sign derived_sign(const GiNaC::ex& symbol) const;
   [[nodiscard]] Sign of_quadratic(const GiNaC::ex& e) const;
   /// Whether every relation that can be judged at @p at holds (and, with @p all_judged, every
   /// relation can be).
@@ -133,6 +134,8 @@ class Facts {
     std::optional<std::pair<double, double>> high;  // at, value
   };
   mutable std::vector<WaveEnds> wave_ends_;
+  // derived_sign's answers, by symbol, until a fact is added.
+  mutable std::map<GiNaC::ex, Sign, GiNaC::ex_is_less> derived_signs_;
   // Each bound as the fact writes it (π/6, not its double), by symbol: low, high.
   std::map<GiNaC::ex, std::pair<std::optional<GiNaC::ex>, std::optional<GiNaC::ex>>,
            GiNaC::ex_is_less>
