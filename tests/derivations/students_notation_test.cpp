@@ -625,6 +625,13 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   CHECK(division("0 < \\theta \\le \\pi/6", "1 - 2\\sin\\theta") == conditional);
   CHECK(division("0 < \\theta < \\pi/3", "2\\cos(2\\theta) + 1") == free);
   CHECK(division("0 < \\theta \\le \\pi/3", "2\\cos(2\\theta) + 1") == conditional);
+  // tan π/4 = 1 exactly (its double is 0.9999999999999999): tan θ - 1 < 0 below π/4, and 0 at it
+  // (follows-if before, either way); tan 2θ - 1 on 0 < θ < π/8 likewise. On π/4 < θ < 5π/4 the
+  // pole at π/2 lies inside: unknown, the condition stays.
+  CHECK(division("0 < \\theta < \\pi/4", "\\tan\\theta - 1") == free);
+  CHECK(division("0 < \\theta \\le \\pi/4", "\\tan\\theta - 1") == conditional);
+  CHECK(division("0 < \\theta < \\pi/8", "\\tan 2\\theta - 1") == free);
+  CHECK(division("\\pi/4 < \\theta < 5\\pi/4", "\\tan\\theta - 1") == conditional);
   // 3θ on 0 < θ ≤ π/6 reaches π/2, where cos 3θ = 0: its exact value at the end comes with the
   // fact's own closed end (the argument's double end, moved outward for rounding, is open). On
   // 0 < θ < π/6, cos 3θ > 0.

@@ -385,8 +385,9 @@ Range wave(const Range& a, bool cosine, std::optional<double> exact_low,
 // tan over a range of its argument within one branch (between two odd multiples of π/2): the
 // values at its ends; an end at an asymptote is infinite and left out, open or closed, for tan
 // has no value there (nor has whatever is written in it: on 0 ≤ θ ≤ π, tan(θ/2) ≥ 0 where it
-// is defined, and θ = π is decided apart); any other range, unknown.
-Range tangent(const Range& a) {
+// is defined, and θ = π is decided apart); any other range, unknown. @p exact_low and
+// @p exact_high are its exact values at the ends where known.
+Range tangent(const Range& a, std::optional<double> exact_low, std::optional<double> exact_high) {
   constexpr double pi = 3.14159265358979323846;
   if (!std::isfinite(a.low) || !std::isfinite(a.high)) {
     return {};
@@ -403,10 +404,11 @@ Range tangent(const Range& a) {
     const double v = std::tan(x);
     return std::abs(v) < 1e-15 ? 0.0 : v;
   };
-  const double low = at_left ? -infinity : value(a.low);
-  const double high = at_right ? infinity : value(a.high);
-  return {low == 0 ? 0.0 : down(low), high == 0 ? 0.0 : up(high), a.low_open || at_left,
-          a.high_open || at_right};
+  // An exact value at an end (tan π/4 = 1) is kept; a rounded one is moved outward.
+  const double low = at_left ? -infinity : exact_low ? *exact_low : value(a.low);
+  const double high = at_right ? infinity : exact_high ? *exact_high : value(a.high);
+  return {low == 0 || exact_low ? low : down(low), high == 0 || exact_high ? high : up(high),
+          a.low_open || at_left, a.high_open || at_right};
 }
 
 }  // namespace
@@ -1010,10 +1012,10 @@ Sign Facts::of_range(const ex& e) const {
       const Range base = range(x.op(0));
       return k >= 0 ? integer_power(base, k) : inverse(integer_power(base, -k));
     }
-    if (function_named(x, "sin") || function_named(x, "cos")) {
-      const bool cosine = function_named(x, "cos");
+    if (function_named(x, "sin") || function_named(x, "cos") || function_named(x, "tan")) {
+      const char function = function_named(x, "sin") ? 's' : function_named(x, "cos") ? 'c' : 't';
       Range a = range(x.op(0));
-      const auto [exact_low, exact_high] = exact_wave_ends(x.op(0), cosine, a.low, a.high);
+      const auto [exact_low, exact_high] = exact_wave_ends(x.op(0), function, a.low, a.high);
       if (exact_low || exact_high) {
         // An exact end is reached as the symbol's own end is: the argument's, moved outward
         // for rounding, is open (0 < θ ≤ π/6 reaches cos 3θ = 0).
@@ -1023,7 +1025,8 @@ Sign Facts::of_range(const ex& e) const {
         a.low_open = c.is_positive() ? own.low_open : own.high_open;
         a.high_open = c.is_positive() ? own.high_open : own.low_open;
       }
-      return wave(a, cosine, exact_low, exact_high);
+      return function == 't' ? tangent(a, exact_low, exact_high)
+                             : wave(a, function == 'c', exact_low, exact_high);
     }
     if (function_named(x, "log")) {
       const Range a = range(x.op(0));
@@ -1034,9 +1037,6 @@ Sign Facts::of_range(const ex& e) const {
       const auto log_up = [](double v) { return v == 1 ? 0.0 : up(std::log(v)); };
       return {a.low == 0 ? -infinity : log_down(a.low),
               a.high == infinity ? infinity : log_up(a.high), a.low_open, a.high_open};
-    }
-    if (function_named(x, "tan")) {
-      return tangent(range(x.op(0)));
     }
     if (function_named(x, "abs")) {
       return magnitude_range(range(x.op(0)));
@@ -1050,7 +1050,7 @@ Sign Facts::of_range(const ex& e) const {
 }
 
 std::pair<std::optional<double>, std::optional<double>> Facts::exact_wave_ends(
-    const ex& argument, bool cosine, double low_end, double high_end) const {
+    const ex& argument, char function, double low_end, double high_end) const {
   const auto near = [](const std::optional<std::pair<double, double>>& end,
                        double at) -> std::optional<double> {
     if (!end || std::abs(end->first - at) > 1e-10 * (1 + std::abs(at))) {
@@ -1059,11 +1059,11 @@ std::pair<std::optional<double>, std::optional<double>> Facts::exact_wave_ends(
     return end->second;
   };
   for (const WaveEnds& known : wave_ends_) {
-    if (known.cosine == cosine && known.argument.is_equal(argument)) {
+    if (known.function == function && known.argument.is_equal(argument)) {
       return {near(known.low, low_end), near(known.high, high_end)};
     }
   }
-  WaveEnds ends{argument, cosine, std::nullopt, std::nullopt};
+  WaveEnds ends{argument, function, std::nullopt, std::nullopt};
   const auto multiple = multiple_of_symbol(argument);
   const auto found = multiple ? exact_bounds_.find(multiple->first) : exact_bounds_.end();
   if (found != exact_bounds_.end()) {
@@ -1076,7 +1076,14 @@ std::pair<std::optional<double>, std::optional<double>> Facts::exact_wave_ends(
         return std::nullopt;
       }
       const ex where = GiNaC::evalf(c * *end);
-      const ex v = cosine ? GiNaC::cos(c * *end) : GiNaC::sin(c * *end);
+      ex v;
+      try {
+        v = function == 'c'   ? GiNaC::cos(c * *end)
+            : function == 's' ? GiNaC::sin(c * *end)
+                              : GiNaC::tan(c * *end);
+      } catch (const std::exception&) {
+        return std::nullopt;  // tan at a pole (π/2)
+      }
       if (!is_a<GiNaC::numeric>(where) || !is_a<GiNaC::numeric>(v) ||
           !GiNaC::ex_to<GiNaC::numeric>(v).is_rational()) {
         return std::nullopt;

@@ -102,11 +102,11 @@ class Facts {
   [[nodiscard]] Sign structural(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_relation(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_range(const GiNaC::ex& e) const;
-  /// sin or cos (@p cosine) at the ends @p low_end and @p high_end of the range of @p argument, a
-  /// symbol with bounds or a rational multiple of one, where they are numbers a double holds
-  /// exactly (sin π/6 = 1/2).
+  /// sin, cos or tan (@p function: 's', 'c', 't') at the ends @p low_end and @p high_end of the
+  /// range of @p argument, a symbol with bounds or a rational multiple of one, where they are
+  /// numbers a double holds exactly (sin π/6 = 1/2, tan π/4 = 1).
   [[nodiscard]] std::pair<std::optional<double>, std::optional<double>> exact_wave_ends(
-      const GiNaC::ex& argument, bool cosine, double low_end, double high_end) const;
+      const GiNaC::ex& argument, char function, double low_end, double high_end) const;
   [[nodiscard]] Sign through_relation(const GiNaC::ex& x) const;
   [[nodiscard]] Sign of_linear_facts(const GiNaC::ex& e) const;
   [[nodiscard]] Sign derived_sign(const GiNaC::ex& symbol) const;
@@ -129,7 +129,7 @@ class Facts {
   // as a double): the same sines of the same bounds are asked for again and again.
   struct WaveEnds {
     GiNaC::ex argument;
-    bool cosine;
+    char function;                                  // 's', 'c' or 't'
     std::optional<std::pair<double, double>> low;   // at, value
     std::optional<std::pair<double, double>> high;  // at, value
   };
