@@ -817,6 +817,26 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   CHECK(inverse("0 \\le \\theta \\le \\pi", "\\arcsin(\\sin\\theta)") == "does-not-follow");
   CHECK(inverse("-\\frac{\\pi}{2} < \\theta \\le \\pi", "\\arccos(\\cos\\theta)") ==
         "does-not-follow");
+  // An angle read off its sine, cosine or tangent where the facts keep it on the inverse's own
+  // range: tan θ = 1 on 0 < θ < π/2 is θ = π/4 (undecided before: tan(π/8) = √2 - 1 is beyond
+  // GiNaC), and cos θ = √3/2 there gives sin θ = 1/2 both ways (undecided before). Past that
+  // range the other angle is a counterexample: sin(5π/6) = 1/2, tan(5π/4) = 1.
+  const auto angle = [](const std::string& facts, const std::string& premise,
+                        const std::string& step) {
+    return verdicts((facts.empty() ? "" : "assume: " + facts + "\n\n") + "$$" + premise +
+                    "$$\n\n$$" + step + "$$")
+        .back();
+  };
+  CHECK(angle("0 < \\theta < \\pi/2", "\\tan\\theta = 1", "\\theta = 45^\\circ") == "follows");
+  CHECK(angle("0 < \\theta < \\pi/2", "\\tan\\theta = 1", "\\theta = 30^\\circ") ==
+        "does-not-follow");
+  CHECK(angle("", "\\tan\\theta = 1", "\\theta = 45^\\circ") == "does-not-follow");
+  CHECK(angle("0 < \\theta < \\pi/2", "2\\sin\\theta - 1 = 0", "\\theta = \\frac{\\pi}{6}") ==
+        "follows");
+  CHECK(angle("0 < \\theta < \\pi", "\\sin\\theta = \\frac{1}{2}", "\\theta = 30^\\circ") ==
+        "does-not-follow");
+  CHECK(angle("0 < \\theta < \\pi/2", "\\cos\\theta = \\frac{\\sqrt{3}}{2}",
+              "\\sin\\theta = \\frac{1}{2}") == "follows");
   CHECK(verdicts("assume: x \\ge 0, y \\ge 0\n\n$$v = \\sqrt{x y}$$\n\n$$v = \\sqrt{x} \\sqrt{y}$$")
             .back() == "follows");
   // An equation before is read where it is real: ln x in it needs x > 0, √x needs x ≥ 0. So

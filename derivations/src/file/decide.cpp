@@ -2094,6 +2094,56 @@ Facts with_domain(const Facts& facts, const std::vector<ex>& premises) {
   return result;
 }
 
+// Each premise a f(u) + b = 0, with f a sine, cosine or tangent, u a symbol that the premise holds
+// nowhere else, a and b numbers, and u kept by the facts where f is one-to-one (the inverse's own
+// range: arcsin's [-π/2, π/2], arccos' [0, π], arctan's (-π/2, π/2)), is u = f⁻¹(-b/a) there:
+// tan θ = 1 on 0 < θ < π/2 is θ = π/4. What was rewritten, as text ("" for nothing).
+std::string inverted_on_range(Problem& problem, const Facts& facts) {
+  std::string rewritten;
+  for (ex& p : problem.premises) {
+    std::optional<ex> inside;
+    bool one = true;
+    for (auto i = p.preorder_begin(); i != p.preorder_end() && one; ++i) {
+      if (is_a<GiNaC::function>(*i)) {
+        one = !inside || inside->is_equal(*i);
+        inside = *i;
+      }
+    }
+    if (!one || !inside || inside->nops() != 1 || !is_a<GiNaC::symbol>(inside->op(0))) {
+      continue;
+    }
+    const std::string& name = GiNaC::ex_to<GiNaC::function>(*inside).get_name();
+    const ex u = inside->op(0);
+    const GiNaC::symbol f("f");
+    const ex q = GiNaC::expand(p.subs(*inside == f));
+    // A real constant: a number, or one written with roots and π (√3/2).
+    const auto constant = [](const ex& e) {
+      const ex v = GiNaC::evalf(e);
+      return symbols_of(e).empty() && is_a<numeric>(v) && GiNaC::ex_to<numeric>(v).is_real();
+    };
+    if (q.has(u) || !q.is_polynomial(f) || q.degree(f) != 1 || !constant(q.coeff(f, 1)) ||
+        q.coeff(f, 1).is_zero() || !constant(q.coeff(f, 0))) {
+      continue;
+    }
+    const ex c = GiNaC::normal(-q.coeff(f, 0) / q.coeff(f, 1));
+    const bool in_one = GiNaC::abs(GiNaC::ex_to<numeric>(GiNaC::evalf(c))) <= 1;
+    const ex half = GiNaC::Pi / 2;
+    std::optional<ex> value;
+    if (name == "sin" && in_one && within(u, -half, half, false, facts)) {
+      value = GiNaC::asin(c);
+    } else if (name == "cos" && in_one && within(u, 0, GiNaC::Pi, false, facts)) {
+      value = GiNaC::acos(c);
+    } else if (name == "tan" && within(u, -half, half, true, facts)) {
+      value = GiNaC::atan(c);
+    }
+    if (value) {
+      p = u - *value;
+      rewritten += (rewritten.empty() ? "" : "; ") + text(u - *value) + " = 0";
+    }
+  }
+  return rewritten;
+}
+
 // Each premise k √A + R = 0, with the root in no other term, gives k² A = R², added beside it:
 // √x = 3 is x = 9 (and √x = -3 holds nowhere, which the premise kept says). What was added, as
 // text ("" for nothing).
@@ -2171,6 +2221,7 @@ Implication implies(const Problem& given, const Facts& written_facts, const Budg
     }
   }
   original.target = by_facts(original.target, facts);
+  const std::string inverted_text = inverted_on_range(original, facts);
   const std::string squared_text = add_squared_roots(original);
   // Sines and cosines become rational functions of tangents of half angles.
   std::vector<ex> all{original.target};
@@ -2237,6 +2288,10 @@ Implication implies(const Problem& given, const Facts& written_facts, const Budg
   result.point = found.point;
   if (!squared_text.empty()) {
     found.how.insert(found.how.begin(), "a root squared: " + squared_text);
+  }
+  if (!inverted_text.empty()) {
+    found.how.insert(found.how.begin(),
+                     "the equation before solved on the facts' range: " + inverted_text);
   }
   for (std::size_t i = 0; i < found.how.size(); ++i) {
     result.how += (i == 0 ? "" : "; ") + found.how[i];
