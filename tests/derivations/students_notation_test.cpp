@@ -785,6 +785,18 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   CHECK(verdicts("assume: m_2 > 1, m_1 < 2\n\n$$z = \\frac{1}{m_2 - m_1}$$\n\n$$\\sqrt{z} = "
                  "\\frac{1}{\\sqrt{m_2 - m_1}}$$")
             .back() == "undecided");
+  // The same with a sine: 1 - 2 sin θ < 0 on π/6 < θ < 0.6. Through tangents of half angles the
+  // value put in is (1 + τ²)/(1 + τ² - 4τ), a positive number times 1/X, and the root of
+  // 1 - 4τ/(1 + τ²) is taken by the facts before GiNaC's normal() could take (x)^(-1/2) as
+  // (1/x)^(1/2), false for x < 0 (both made it follow).
+  CHECK(
+      verdicts("assume: 0 < \\theta < 0.6\n\n$$z = \\frac{1}{1 - 2\\sin\\theta}$$\n\n$$\\sqrt{z} = "
+               "\\frac{1}{\\sqrt{1 - 2\\sin\\theta}}$$")
+          .back() == "undecided");
+  CHECK(verdicts(
+            "assume: 0 < \\theta < \\pi/6\n\n$$z = \\frac{1}{1 - 2\\sin\\theta}$$\n\n$$\\sqrt{z} "
+            "= \\frac{1}{\\sqrt{1 - 2\\sin\\theta}}$$")
+            .back() == "follows");
   // π factors as the symbol it is not: θ² = π² gives θ = π where θ + π ≠ 0.
   CHECK(verdicts("$$\\theta^2 = \\pi^2$$\n\n$$\\theta = \\pi$$") == conditional);
   // x² + y² = 0 only where x = y = 0 (undecided before); x = 1 does not follow.

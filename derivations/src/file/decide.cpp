@@ -407,13 +407,26 @@ ex exponential(const ex& y, const Facts& facts) {
 // (Π f^k)^(p/q): each factor the facts keep positive comes out as f^(k p/q), and each whose power
 // k is a multiple of q as |f|^(k p/q), the absolute value dropped where the facts give f's sign.
 ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts) {
-  // A polynomial under the root factored where that is cheap: M^2 + 2 M m + m^2 is (M + m)^2.
+  // A polynomial under the root factored where that is cheap: M^2 + 2 M m + m^2 is (M + m)^2. A
+  // sum of fractions over one denominator first, its numerator and denominator factored:
+  // 1 - 4τ/(1 + τ²) is (1 + τ² - 4τ)/(1 + τ²), whose factors' signs the facts may know (GiNaC's
+  // normal() takes (x)^(-1/2) as (1/x)^(1/2), which is false for x < 0: the root must be taken
+  // here, by the facts, before it).
   const auto in_factors = [](const ex& f) {
-    if (is_a<GiNaC::add>(f) && factorable(f)) {
-      try {
+    if (!is_a<GiNaC::add>(f)) {
+      return f;
+    }
+    try {
+      if (factorable(f)) {
         return factored(f);
-      } catch (const std::exception&) {
       }
+      if (f.info(GiNaC::info_flags::rational_function) && expanded_terms(f) <= 60) {
+        const ex parts = GiNaC::numer_denom(GiNaC::normal(f));
+        if (factorable(parts.op(0)) && factorable(parts.op(1))) {
+          return factored(parts.op(0)) / factored(parts.op(1));
+        }
+      }
+    } catch (const std::exception&) {
     }
     return f;
   };
@@ -617,24 +630,38 @@ ex safe_numerator(const ex& e, double terms) {
 
 namespace {
 
-// @p base as k/X, a number k > 0 over X (1/y, 4/y, 1/(m_1 - m_2)): k and X; else nothing. A
-// negative number in front goes into X: GiNaC writes 1/(m_1 - m_2) as -1/(m_2 - m_1) when its
-// order of terms (which follows addresses) puts m_2 first.
-std::optional<std::pair<ex, ex>> over_something(const ex& base) {
+// @p base as k/X, with k > 0 a number or what the facts keep positive (1/y, 4/y,
+// (1 + τ²)/(τ² - 4τ + 1)): k and X; else nothing. A k the facts keep negative goes into X with its
+// sign: GiNaC writes 1/(m_1 - m_2) as -1/(m_2 - m_1) when its order of terms (which follows
+// addresses) puts m_2 first.
+std::optional<std::pair<ex, ex>> over_something(const ex& base, const Facts& facts) {
+  std::optional<ex> under;
   ex k = 1;
-  ex rest = base;
-  if (is_a<GiNaC::mul>(base) && base.nops() == 2 && is_a<numeric>(base.op(1)) &&
-      GiNaC::ex_to<numeric>(base.op(1)).is_real() && !base.op(1).is_zero()) {
-    k = base.op(1);
-    rest = base.op(0);
+  const auto one = [&](const ex& f) {
+    if (is_a<GiNaC::power>(f) && f.op(1).is_equal(-1) && !is_a<numeric>(f.op(0)) && !under) {
+      under = f.op(0);
+    } else {
+      k *= f;
+    }
+  };
+  if (is_a<GiNaC::mul>(base)) {
+    for (std::size_t i = 0; i < base.nops(); ++i) {
+      one(base.op(i));
+    }
+  } else {
+    one(base);
   }
-  if (!is_a<GiNaC::power>(rest) || !rest.op(1).is_equal(-1)) {
+  if (!under) {
     return std::nullopt;
   }
-  if (GiNaC::ex_to<numeric>(k).is_negative()) {
-    return std::pair{ex(-k), ex(-rest.op(0))};
+  const Sign sign = facts.sign(k);
+  if (sign == Sign::positive) {
+    return std::pair{k, *under};
   }
-  return std::pair{k, rest.op(0)};
+  if (sign == Sign::negative) {
+    return std::pair{ex(-k), ex(-*under)};
+  }
+  return std::nullopt;
 }
 
 // @p base with @p value put for @p symbol, over one denominator where that is small: b + 1/x
@@ -655,14 +682,15 @@ ex base_put_in(const ex& base, const ex& symbol, const ex& value) {
 // k/X (k > 0 a number): GiNaC writes (k/X)^c as k^c X^{-c} at once, which is false for a real
 // X < 0 (√(1/X) = i/√|X|, but X^{-1/2} = -i/√|X|), so that x = 1/y would give √x = 1/√y for
 // every y. Nothing when there is none.
-std::optional<ex> reciprocal_under_power(const ex& e, const ex& symbol, const ex& value) {
+std::optional<ex> reciprocal_under_power(const ex& e, const ex& symbol, const ex& value,
+                                         const Facts& facts) {
   for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
     if (!is_a<GiNaC::power>(*i) || i->op(1).info(GiNaC::info_flags::integer) ||
         !i->op(0).has(symbol)) {
       continue;
     }
     // The base as it will be, built without evaluating its power.
-    if (const auto reciprocal = over_something(base_put_in(i->op(0), symbol, value))) {
+    if (const auto reciprocal = over_something(base_put_in(i->op(0), symbol, value), facts)) {
       return reciprocal->second;
     }
   }
@@ -672,12 +700,15 @@ std::optional<ex> reciprocal_under_power(const ex& e, const ex& symbol, const ex
 // @p e with @p value put for @p symbol where @p under < 0: a non-integer power of k/under is
 // written k^c (-1)^c (-under)^{-c}, its value there ((k/X)^c = (k/|X|)^c e^{iπc} for X < 0),
 // which GiNaC leaves as it is.
-ex put_in_below_zero(const ex& e, const ex& symbol, const ex& value, const ex& under) {
+ex put_in_below_zero(const ex& e, const ex& symbol, const ex& value, const ex& under,
+                     const Facts& facts) {
   struct Each : GiNaC::map_function {
     const ex& symbol;
     const ex& value;
     const ex& under;
-    Each(const ex& s, const ex& v, const ex& u) : symbol(s), value(v), under(u) {}
+    const Facts& facts;
+    Each(const ex& s, const ex& v, const ex& u, const Facts& f)
+        : symbol(s), value(v), under(u), facts(f) {}
     ex operator()(const ex& part) override {
       if (!part.has(symbol)) {
         return part;
@@ -686,7 +717,7 @@ ex put_in_below_zero(const ex& e, const ex& symbol, const ex& value, const ex& u
         return part.subs(GiNaC::exmap{{symbol, value}});
       }
       if (is_a<GiNaC::power>(part) && !part.op(1).info(GiNaC::info_flags::integer)) {
-        const auto reciprocal = over_something(base_put_in(part.op(0), symbol, value));
+        const auto reciprocal = over_something(base_put_in(part.op(0), symbol, value), facts);
         if (reciprocal && reciprocal->second.is_equal(under)) {
           const ex c = part.op(1).subs(GiNaC::exmap{{symbol, value}});
           return GiNaC::pow(reciprocal->first, c) * GiNaC::pow(-1, c) * GiNaC::pow(-under, -c);
@@ -694,7 +725,7 @@ ex put_in_below_zero(const ex& e, const ex& symbol, const ex& value, const ex& u
       }
       return part.map(*this);
     }
-  } each(symbol, value, under);
+  } each(symbol, value, under, facts);
   return each(e);
 }
 
@@ -991,7 +1022,7 @@ class Decider {
       std::vector<ex> all = premises;
       all.push_back(frame.target);
       for (const ex& e : all) {
-        const std::optional<ex> under = reciprocal_under_power(e, choice.symbol, value);
+        const std::optional<ex> under = reciprocal_under_power(e, choice.symbol, value, facts_);
         if (under && facts_.sign(*under) != Sign::positive) {
           return by_sign(frame, premises, choice, *under);
         }
@@ -999,7 +1030,7 @@ class Decider {
     }
     const auto put_in = [&](const ex& e) {
       return sign_case && sign_case->negative
-                 ? put_in_below_zero(e, choice.symbol, value, sign_case->under)
+                 ? put_in_below_zero(e, choice.symbol, value, sign_case->under, facts_)
                  : e.subs(GiNaC::exmap{{choice.symbol, value}});
     };
     Frame child;
