@@ -463,13 +463,14 @@ ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts)
       outside *= GiNaC::pow(base_of, (power ? factor.op(1) : ex(1)) * exponent);
       return;
     }
-    // f^k with -f > 0 and k odd is -(-f)^k: (-f)^k comes out and its sign stays inside. GiNaC
-    // writes an integer power of a difference with the sign its term order gives, an order that
-    // follows addresses: 1/(m_1 - m_2) is -(m_2 - m_1)^(-1) in some runs, and its root under
-    // m_1 > m_2 was left whole in those.
-    if (const ex k = power ? factor.op(1) : ex(1); !is_a<numeric>(base_of) && is_a<numeric>(k) &&
-                                                   GiNaC::ex_to<numeric>(k).is_odd() &&
-                                                   facts.sign(-base_of) == Sign::positive) {
+    // Under an even root, f^k with -f > 0 and k odd is -(-f)^k: (-f)^k comes out and its sign
+    // stays inside (an odd root is the real one, below). GiNaC writes an integer power of a
+    // difference with the sign its term order gives, an order that follows addresses:
+    // 1/(m_1 - m_2) is -(m_2 - m_1)^(-1) in some runs, and its root under m_1 > m_2 was left
+    // whole in those.
+    if (const ex k = power ? factor.op(1) : ex(1);
+        q.is_even() && !is_a<numeric>(base_of) && is_a<numeric>(k) &&
+        GiNaC::ex_to<numeric>(k).is_odd() && facts.sign(-base_of) == Sign::positive) {
       outside *= GiNaC::pow(-base_of, k * exponent);
       inside *= -1;
       return;
