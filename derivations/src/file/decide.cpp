@@ -526,8 +526,18 @@ bool within(const ex& u, const ex& low, const ex& high, bool open, const Facts& 
   return keeps(ends.first, low, true) && keeps(ends.second, high, false);
 }
 
-// arcsin(sin u) = u where -π/2 ≤ u ≤ π/2, arccos(cos u) = u where 0 ≤ u ≤ π, arctan(tan u) = u
-// where -π/2 < u < π/2 (each inverse's own range), for a symbol u the facts keep there.
+// Whether the facts keep the symbol @p u on the range where @p function (sin, cos or tan) is
+// one-to-one, its inverse's own range: arcsin's [-π/2, π/2], arccos' [0, π], arctan's
+// (-π/2, π/2).
+bool on_inverse_range(const std::string& function, const ex& u, const Facts& facts) {
+  const ex half = GiNaC::Pi / 2;
+  return (function == "sin" && within(u, -half, half, false, facts)) ||
+         (function == "cos" && within(u, 0, GiNaC::Pi, false, facts)) ||
+         (function == "tan" && within(u, -half, half, true, facts));
+}
+
+// arcsin(sin u) = u, arccos(cos u) = u, arctan(tan u) = u for a symbol u the facts keep on the
+// inverse's own range.
 std::optional<ex> inverse_of_own(const ex& x, const Facts& facts) {
   if (!is_a<GiNaC::function>(x) || x.nops() != 1 || !is_a<GiNaC::function>(x.op(0)) ||
       x.op(0).nops() != 1) {
@@ -536,10 +546,7 @@ std::optional<ex> inverse_of_own(const ex& x, const Facts& facts) {
   const std::string& outer = GiNaC::ex_to<GiNaC::function>(x).get_name();
   const std::string& inner = GiNaC::ex_to<GiNaC::function>(x.op(0)).get_name();
   const ex u = x.op(0).op(0);
-  const ex half = GiNaC::Pi / 2;
-  const bool own = (outer == "asin" && inner == "sin" && within(u, -half, half, false, facts)) ||
-                   (outer == "acos" && inner == "cos" && within(u, 0, GiNaC::Pi, false, facts)) ||
-                   (outer == "atan" && inner == "tan" && within(u, -half, half, true, facts));
+  const bool own = outer == "a" + inner && on_inverse_range(inner, u, facts);
   return own ? std::optional<ex>(u) : std::nullopt;
 }
 
@@ -1406,18 +1413,7 @@ class Decider {
   // sum of roots that is 0 came out 1e-17 in them, which made a point where the step holds a
   // counterexample. Nothing in the value: empty.
   static std::optional<numeric> value_at(const ex& v) {
-    const ex n = GiNaC::normal(by_facts(v, Facts{}));
-    if (is_a<numeric>(n)) {
-      return GiNaC::ex_to<numeric>(n);
-    }
-    const long saved = GiNaC::Digits;
-    GiNaC::Digits = 40;
-    const ex f = GiNaC::evalf(n);
-    GiNaC::Digits = saved;
-    if (!is_a<numeric>(f)) {
-      return std::nullopt;
-    }
-    return GiNaC::ex_to<numeric>(f);
+    return value_in_40_digits(GiNaC::normal(by_facts(v, Facts{})));
   }
 
   // Zero at the point: exactly, or within 1e-30 in 40 digits.
@@ -1429,12 +1425,9 @@ class Decider {
     return value && (value->is_zero() || (value->is_real() && GiNaC::abs(*value) < below(30)));
   }
 
-  // Certainly not zero, and real: a rational other than 0, or beyond 1e-20 in 40 digits (a value
-  // in between is neither shown to be 0 nor shown not to be).
+  // Certainly not zero, and real (certainly_nonzero of the facts' module).
   static bool nonzero_real(const ex& v) {
-    const std::optional<numeric> value = value_at(v);
-    return value && value->is_real() && !value->is_zero() &&
-           (value->is_rational() || GiNaC::abs(*value) > below(20));
+    return certainly_nonzero(GiNaC::normal(by_facts(v, Facts{})));
   }
 
   // 10^-k.
@@ -2159,19 +2152,14 @@ std::string inverted_on_range(Problem& problem, const Facts& facts) {
     }
     const ex c = GiNaC::normal(-q.coeff(f, 0) / q.coeff(f, 1));
     const bool in_one = GiNaC::abs(GiNaC::ex_to<numeric>(GiNaC::evalf(c))) <= 1;
-    const ex half = GiNaC::Pi / 2;
-    std::optional<ex> value;
-    if (name == "sin" && in_one && within(u, -half, half, false, facts)) {
-      value = GiNaC::asin(c);
-    } else if (name == "cos" && in_one && within(u, 0, GiNaC::Pi, false, facts)) {
-      value = GiNaC::acos(c);
-    } else if (name == "tan" && within(u, -half, half, true, facts)) {
-      value = GiNaC::atan(c);
+    if ((name != "tan" && !in_one) || !on_inverse_range(name, u, facts)) {
+      continue;
     }
-    if (value) {
-      p = u - *value;
-      rewritten += (rewritten.empty() ? "" : "; ") + text(u - *value) + " = 0";
-    }
+    const ex value = name == "sin"   ? GiNaC::asin(c)
+                     : name == "cos" ? GiNaC::acos(c)
+                                     : GiNaC::atan(c);
+    p = u - value;
+    rewritten += (rewritten.empty() ? "" : "; ") + text(p) + " = 0";
   }
   return rewritten;
 }

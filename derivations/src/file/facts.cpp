@@ -1284,23 +1284,25 @@ bool Facts::extends(const GiNaC::exmap& point) const {
   return false;
 }
 
-namespace {
-
-// Whether @p value, a number or an expression in constants only (1 - π/2), is certainly not
-// zero: a rational other than 0, or beyond 1e-20 in 40 digits.
-bool certainly_nonzero(const ex& value) {
+std::optional<GiNaC::numeric> value_in_40_digits(const ex& value) {
   if (is_a<GiNaC::numeric>(value)) {
-    return !value.is_zero();
+    return GiNaC::ex_to<GiNaC::numeric>(value);
   }
   const long saved = GiNaC::Digits;
   GiNaC::Digits = 40;
   const ex f = GiNaC::evalf(value);
   GiNaC::Digits = saved;
-  return is_a<GiNaC::numeric>(f) &&
-         GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(f)) > GiNaC::numeric(10).power(-20);
+  if (!is_a<GiNaC::numeric>(f)) {
+    return std::nullopt;
+  }
+  return GiNaC::ex_to<GiNaC::numeric>(f);
 }
 
-}  // namespace
+bool certainly_nonzero(const ex& value) {
+  const std::optional<GiNaC::numeric> v = value_in_40_digits(value);
+  return v && v->is_real() && !v->is_zero() &&
+         (v->is_rational() || GiNaC::abs(*v) > GiNaC::numeric(10).power(-20));
+}
 
 bool Facts::satisfied(const GiNaC::exmap& point) const {
   // Every relation holds at the point; a relation in symbols the point does not give (b of

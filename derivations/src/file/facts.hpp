@@ -143,6 +143,14 @@ class Facts {
 };
 
 /// @p argument as c x, a rational c ≠ 0 times a symbol x; else nothing.
+/// @p value, a number or an expression in constants only (1 - π/2), as a number: itself, or
+/// evaluated in 40 digits; nothing when it is not a number there.
+[[nodiscard]] std::optional<GiNaC::numeric> value_in_40_digits(const GiNaC::ex& value);
+/// Whether @p value (as value_in_40_digits takes it) is certainly a real number other than 0: a
+/// rational other than 0, or beyond 1e-20 in 40 digits (a value in between is neither shown to be
+/// 0 nor shown not to be).
+[[nodiscard]] bool certainly_nonzero(const GiNaC::ex& value);
+
 [[nodiscard]] std::optional<std::pair<GiNaC::ex, GiNaC::numeric>> multiple_of_symbol(
     const GiNaC::ex& argument);
 
