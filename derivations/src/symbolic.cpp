@@ -347,8 +347,10 @@ std::size_t depth(const ex& e) {
   return deepest + 1;
 }
 
-void emit(const ex& e, const std::vector<ex>& symbols,
-          std::vector<Compiled::Instruction>& program) {
+// The canonical forms of the operands are made once per compiled expression (@p made), not again
+// at each level the recursion descends.
+void emit(const ex& e, const std::vector<ex>& symbols, std::vector<Compiled::Instruction>& program,
+          CanonicalForms& made) {
   using Op = Compiled::Op;
   if (is_a<GiNaC::numeric>(e)) {
     program.push_back({Op::constant, GiNaC::ex_to<GiNaC::numeric>(e).to_double(), 0});
@@ -366,24 +368,24 @@ void emit(const ex& e, const std::vector<ex>& symbols,
   if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
     std::vector<std::pair<std::string, ex>> operands;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      operands.emplace_back(canonical(e.op(i)), e.op(i));
+      operands.emplace_back(canonical(e.op(i), made), e.op(i));
     }
     std::sort(operands.begin(), operands.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& operand : operands) {
-      emit(operand.second, symbols, program);
+      emit(operand.second, symbols, program, made);
     }
     program.push_back({is_a<GiNaC::add>(e) ? Op::add : Op::mul, 0.0, e.nops()});
     return;
   }
   if (is_a<GiNaC::power>(e) && is_a<GiNaC::numeric>(e.op(1))) {
-    emit(e.op(0), symbols, program);
+    emit(e.op(0), symbols, program, made);
     program.push_back({Op::power, GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_double(), 0});
     return;
   }
   if (is_a<GiNaC::power>(e)) {
-    emit(e.op(0), symbols, program);
-    emit(e.op(1), symbols, program);
+    emit(e.op(0), symbols, program, made);
+    emit(e.op(1), symbols, program, made);
     program.push_back({Op::raise, 0.0, 0});
     return;
   }
@@ -400,7 +402,7 @@ void emit(const ex& e, const std::vector<ex>& symbols,
         {"atan", F::atan}, {"sinh", F::sinh}, {"cosh", F::cosh}, {"tanh", F::tanh}};
     for (const auto& [n, f] : known) {
       if (name == n) {
-        emit(e.op(0), symbols, program);
+        emit(e.op(0), symbols, program, made);
         program.push_back({Op::function, 0.0, static_cast<std::size_t>(f)});
         return;
       }
@@ -443,6 +445,8 @@ std::string canonical(const ex& e, CanonicalForms& made) {
       key += canonical(e.op(i), made) + ",";
     }
     key += ")";
+  } else if (is_a<GiNaC::symbol>(e)) {  // its name, as GiNaC prints it
+    key = ex_to<GiNaC::symbol>(e).get_name();
   } else {
     std::ostringstream out;
     out << e;
@@ -458,7 +462,8 @@ Compiled compile(const ex& e, const std::vector<ex>& symbols) {
   }
   Compiled compiled;
   compiled.arguments_ = symbols.size();
-  emit(e, symbols, compiled.program_);
+  CanonicalForms made;
+  emit(e, symbols, compiled.program_, made);
   // The deepest the stack goes, found by running the program's stack effects.
   std::size_t top = 0;
   std::size_t deepest = 0;
