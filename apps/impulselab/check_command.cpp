@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app.hpp"
+#include "commands.hpp"
 #include "derivations/check.hpp"
 #include "derivations/derivation.hpp"
 #include "impulse/core/error.hpp"
@@ -306,6 +307,10 @@ void add_check_command(CLI::App& app) {
   verb->add_option("--output,-o", options->output,
                    "write here instead of standard output (atomically: all or nothing)");
   verb->callback([options]() { run_checks(*options); });
+}
+
+int check_program(int argc, char** argv) {
+  return run(argc, argv, [](CLI::App& app) { add_check_command(app); });
 }
 
 }  // namespace impulselab

@@ -16,7 +16,6 @@
 
 #include "app.hpp"
 #include "impulse/core/error.hpp"
-#include "impulse/scene/json.hpp"
 
 namespace impulselab {
 
@@ -82,12 +81,9 @@ std::string read_file(const std::string& path, std::size_t max_bytes) {
   return read_all(file.get(), max_bytes, path + ": cannot read:");
 }
 
-impulse::scene::World read_world(const std::string& path) {
-  constexpr std::size_t max_bytes = impulse::scene::ReadLimits{}.max_bytes;
-  // Read up to one byte past the limit: the reader then refuses the scene as too large.
-  return impulse::scene::parse_world(
-      path == "-" ? read_all(stdin, max_bytes, "cannot read <stdin>:") : read_file(path, max_bytes),
-      scene_name(path));
+std::string read_input(const std::string& path, std::size_t max_bytes) {
+  return path == "-" ? read_all(stdin, max_bytes, "cannot read <stdin>:")
+                     : read_file(path, max_bytes);
 }
 
 void print_warnings(const std::vector<std::string>& warnings) {

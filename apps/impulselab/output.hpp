@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Input and output of the verbs: scenes from a file or standard input, results to standard
-// output or, atomically, to a file.
+// Input and output of the verbs: files or standard input in, results to standard output or,
+// atomically, to a file. (Scenes are read in scene_input.hpp.)
 #pragma once
 
 #include <cstddef>
@@ -9,15 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "impulse/scene/scene.hpp"
-
 namespace impulselab {
-
-/// The scene in @p path, or in standard input when @p path is "-" (messages then name
-/// "<stdin>"), checked. Throws impulse::InvalidInput naming the file and the place.
-/// @param path a file or "-"
-/// @return the checked scene
-impulse::scene::World read_world(const std::string& path);
 
 /// The contents of a file up to one byte past @p max_bytes (a device or a pipe without end is
 /// read no further): the caller refuses a text longer than @p max_bytes with its own words.
@@ -26,6 +18,12 @@ impulse::scene::World read_world(const std::string& path);
 /// @param max_bytes the most the caller accepts
 /// @return its bytes, at most @p max_bytes + 1
 std::string read_file(const std::string& path, std::size_t max_bytes);
+
+/// read_file(), or standard input when @p path is "-".
+/// @param path a file or "-"
+/// @param max_bytes the most the caller accepts
+/// @return its bytes, at most @p max_bytes + 1
+std::string read_input(const std::string& path, std::size_t max_bytes);
 
 /// How messages name the scene at @p path: the path itself, or "<stdin>" for "-".
 /// @param path a file or "-"

@@ -9,6 +9,7 @@
 #include "impulse/scene/json.hpp"
 #include "impulse/scene/report.hpp"
 #include "output.hpp"
+#include "scene_input.hpp"
 
 namespace impulselab {
 

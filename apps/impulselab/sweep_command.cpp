@@ -14,6 +14,7 @@
 #include "impulse/core/error.hpp"
 #include "impulse/scene/run.hpp"
 #include "output.hpp"
+#include "scene_input.hpp"
 
 namespace impulselab {
 

@@ -96,6 +96,33 @@ TEST_CASE("check runs at fixed addresses, so that GiNaC's order of terms is one 
   CHECK(t::read_text(seen) == "00040000\n");
 }
 
+TEST_CASE("impulselab-check is impulselab check: the same checks and verdicts, no other verb",
+          "[cli]") {
+  // The two are different programs, each at its own fixed addresses: GiNaC's order of terms may
+  // differ between them, and with it the last digits of a numeric residual. What a check is and
+  // its verdict may not.
+  const std::string arguments = "check --section 3 --samples 200 --format json";
+  const t::Run whole = t::run(arguments);
+  const t::Run alone = t::run_program(IMPULSELAB_CHECK_BINARY, arguments);
+  REQUIRE(whole.status == 0);
+  REQUIRE(alone.status == 0);
+  const json a = json::parse(whole.out);
+  const json b = json::parse(alone.out);
+  REQUIRE(a.at("checks").size() == b.at("checks").size());
+  REQUIRE_FALSE(a.at("checks").empty());
+  for (std::size_t i = 0; i < a.at("checks").size(); ++i) {
+    for (const char* key : {"id", "kind", "statement", "status", "methods", "samples"}) {
+      CHECK(a.at("checks")[i].at(key) == b.at("checks")[i].at(key));
+    }
+  }
+  CHECK(a.at("summary") == b.at("summary"));
+  // solve is not one of its verbs: refused as impulselab refuses a verb it does not have.
+  const t::Run solve = t::run_program(IMPULSELAB_CHECK_BINARY, "solve scene.json");
+  CHECK(solve.status == 2);
+  CHECK_THAT(solve.err, Contains("A subcommand is required"));
+  CHECK(t::run("solve --help").status == 0);
+}
+
 TEST_CASE("check --section friction: the checks beyond the paper, apart", "[cli]") {
   const t::Run r = t::run("check --section friction --samples 500 --format json");
   REQUIRE(r.status == 0);

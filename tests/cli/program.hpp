@@ -85,17 +85,18 @@ struct Run {
   std::string err;         ///< standard error
 };
 
-/// Runs `impulselab <arguments>` (already quoted for the shell) with standard input from
+/// Runs `<program> <arguments>` (already quoted for the shell) with standard input from
 /// @p input (or /dev/null). @p shell_prefix runs before it in the same shell (e.g. "ulimit -f 8;
 /// cd DIR;").
-inline Run run(const std::string& arguments, const std::string& input = "/dev/null",
-               const std::string& shell_prefix = "") {
+inline Run run_program(const std::string& program, const std::string& arguments,
+                       const std::string& input = "/dev/null",
+                       const std::string& shell_prefix = "") {
   static int counter = 0;
   ++counter;
   const fs::path out = scratch() / ("out-" + std::to_string(counter));
   const fs::path err = scratch() / ("err-" + std::to_string(counter));
-  const std::string command = shell_prefix + " exec " + quote(IMPULSELAB_BINARY) + " " + arguments +
-                              " < " + quote(input) + " > " + quote(out.string()) + " 2> " +
+  const std::string command = shell_prefix + " exec " + quote(program) + " " + arguments + " < " +
+                              quote(input) + " > " + quote(out.string()) + " 2> " +
                               quote(err.string());
   const int raw = std::system(command.c_str());
   Run r;
@@ -108,6 +109,12 @@ inline Run run(const std::string& arguments, const std::string& input = "/dev/nu
   fs::remove(out);
   fs::remove(err);
   return r;
+}
+
+/// run_program() of the impulselab program.
+inline Run run(const std::string& arguments, const std::string& input = "/dev/null",
+               const std::string& shell_prefix = "") {
+  return run_program(IMPULSELAB_BINARY, arguments, input, shell_prefix);
 }
 
 /// The lines of a text, without their newlines.
