@@ -132,11 +132,57 @@ ex symbol_as_pi(const ex& e) {
   return e.has(pi_symbol()) ? e.subs(pi_symbol() == GiNaC::Pi) : e;
 }
 
+namespace {
+
+// The highest power of each symbol in the terms of an expanded sum (a symbol inside a function or
+// under a root is not counted: such a sum is no polynomial, and divides nothing).
+std::map<ex, int, GiNaC::ex_is_less> highest_powers(const ex& expanded) {
+  std::map<ex, int, GiNaC::ex_is_less> powers;
+  const auto factor = [&](const ex& f) {
+    if (is_a<GiNaC::symbol>(f)) {
+      powers[f] = std::max(powers[f], 1);
+    } else if (is_a<GiNaC::power>(f) && is_a<GiNaC::symbol>(f.op(0)) &&
+               f.op(1).info(GiNaC::info_flags::posint)) {
+      powers[f.op(0)] = std::max(powers[f.op(0)], GiNaC::ex_to<numeric>(f.op(1)).to_int());
+    }
+  };
+  const auto term = [&](const ex& t) {
+    if (is_a<GiNaC::mul>(t)) {
+      for (std::size_t i = 0; i < t.nops(); ++i) {
+        factor(t.op(i));
+      }
+    } else {
+      factor(t);
+    }
+  };
+  if (is_a<GiNaC::add>(expanded)) {
+    for (std::size_t i = 0; i < expanded.nops(); ++i) {
+      term(expanded.op(i));
+    }
+  } else {
+    term(expanded);
+  }
+  return powers;
+}
+
+}  // namespace
+
 std::optional<ex> exact_quotient(const ex& dividend, const ex& divisor) {
   try {
+    const ex a = GiNaC::expand(dividend);
+    const ex b = GiNaC::expand(divisor);
+    // A quick no before the long division: a polynomial b divides a polynomial a ≠ 0 only if a
+    // has each of b's symbols to at least b's power (exact powers: both are expanded). Where
+    // either is no polynomial, the division below says no as well.
+    if (!is_a<numeric>(b) && !a.is_zero() && !a.is_equal(b)) {
+      for (const auto& [s, power] : highest_powers(b)) {
+        if (a.degree(s) < power) {
+          return std::nullopt;
+        }
+      }
+    }
     ex quotient;
-    if (GiNaC::divide(pi_as_symbol(GiNaC::expand(dividend)), pi_as_symbol(GiNaC::expand(divisor)),
-                      quotient)) {
+    if (GiNaC::divide(pi_as_symbol(a), pi_as_symbol(b), quotient)) {
       return symbol_as_pi(quotient);
     }
   } catch (const std::exception&) {
