@@ -147,13 +147,7 @@ Signed print_product(const ex& e, Style style) {
     }
     (down ? below : above).push_back(factor);
   };
-  if (is_a<GiNaC::mul>(e)) {
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-      take(e.op(i));
-    }
-  } else {
-    take(e);
-  }
+  for_each_factor(e, take);
   Signed out;
   if (coefficient.is_real() && coefficient.is_negative()) {
     out.negative = true;

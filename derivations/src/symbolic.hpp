@@ -65,6 +65,34 @@ using CanonicalForms = std::map<ex, std::string, GiNaC::ex_is_less>;
 /// canonical(), its parts' forms taken from @p made and the new ones kept there.
 [[nodiscard]] std::string canonical(const ex& e, CanonicalForms& made);
 
+/// Calls @p each with every factor of @p e when it is a product, else with @p e itself.
+/// @param e an expression
+/// @param each what to do with a factor
+template <typename Each>
+void for_each_factor(const ex& e, Each&& each) {
+  if (GiNaC::is_a<GiNaC::mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      each(e.op(i));
+    }
+  } else {
+    each(e);
+  }
+}
+
+/// Calls @p each with every term of @p e when it is a sum, else with @p e itself.
+/// @param e an expression
+/// @param each what to do with a term
+template <typename Each>
+void for_each_term(const ex& e, Each&& each) {
+  if (GiNaC::is_a<GiNaC::add>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      each(e.op(i));
+    }
+  } else {
+    each(e);
+  }
+}
+
 /// What a costly function of an expression gave, remembered by expression (structurally equal
 /// expressions are one entry) for a caller that asks again: bounded, emptied when full.
 template <typename Value>

@@ -8,6 +8,8 @@
 #include <set>
 #include <sstream>
 
+#include "symbolic.hpp"
+
 namespace impulse::derivations::file {
 
 using GiNaC::ex;
@@ -132,13 +134,7 @@ std::vector<ex> terms(const ex& e) {
 std::pair<ex, ex> split_term(const ex& term, const std::function<bool(const ex&)>& depends) {
   ex constant = 1;
   ex varying = 1;
-  if (is_a<GiNaC::mul>(term)) {
-    for (std::size_t i = 0; i < term.nops(); ++i) {
-      (depends(term.op(i)) ? varying : constant) *= term.op(i);
-    }
-  } else {
-    (depends(term) ? varying : constant) *= term;
-  }
+  sym::for_each_factor(term, [&](const ex& f) { (depends(f) ? varying : constant) *= f; });
   return {constant, varying};
 }
 

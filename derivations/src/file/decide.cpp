@@ -146,22 +146,8 @@ std::map<ex, int, GiNaC::ex_is_less> highest_powers(const ex& expanded) {
       powers[f.op(0)] = std::max(powers[f.op(0)], GiNaC::ex_to<numeric>(f.op(1)).to_int());
     }
   };
-  const auto term = [&](const ex& t) {
-    if (is_a<GiNaC::mul>(t)) {
-      for (std::size_t i = 0; i < t.nops(); ++i) {
-        factor(t.op(i));
-      }
-    } else {
-      factor(t);
-    }
-  };
-  if (is_a<GiNaC::add>(expanded)) {
-    for (std::size_t i = 0; i < expanded.nops(); ++i) {
-      term(expanded.op(i));
-    }
-  } else {
-    term(expanded);
-  }
+  const auto term = [&](const ex& t) { sym::for_each_factor(t, factor); };
+  sym::for_each_term(expanded, term);
   return powers;
 }
 
@@ -269,13 +255,7 @@ std::vector<ex> doubtful_factors(const ex& e, const Facts& facts) {
       add(f);
     }
   };
-  if (is_a<GiNaC::mul>(product)) {
-    for (std::size_t i = 0; i < product.nops(); ++i) {
-      one(product.op(i));
-    }
-  } else {
-    one(product);
-  }
+  sym::for_each_factor(product, one);
   return factors;
 }
 
@@ -431,13 +411,7 @@ ex exponential(const ex& y, const Facts& facts) {
         k *= f;
       }
     };
-    if (is_a<GiNaC::mul>(term)) {
-      for (std::size_t i = 0; i < term.nops(); ++i) {
-        factor(term.op(i));
-      }
-    } else {
-      factor(term);
-    }
+    sym::for_each_factor(term, factor);
     return argument ? GiNaC::pow(*argument, k) : GiNaC::exp(term);
   };
   if (is_a<GiNaC::add>(expanded)) {
@@ -484,13 +458,7 @@ ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts)
       base *= in_factors(f);
     }
   };
-  if (is_a<GiNaC::mul>(given_base)) {
-    for (std::size_t i = 0; i < given_base.nops(); ++i) {
-      each(given_base.op(i));
-    }
-  } else {
-    each(given_base);
-  }
+  sym::for_each_factor(given_base, each);
   const numeric q = exponent.denom();
   ex outside = 1;
   ex inside = 1;
@@ -537,13 +505,7 @@ ex root_taken(const ex& given_base, const numeric& exponent, const Facts& facts)
       inside *= factor;
     }
   };
-  if (is_a<GiNaC::mul>(base)) {
-    for (std::size_t i = 0; i < base.nops(); ++i) {
-      one(base.op(i));
-    }
-  } else {
-    one(base);
-  }
+  sym::for_each_factor(base, one);
   if (outside.is_equal(1)) {
     return GiNaC::pow(given_base, exponent);
   }
@@ -698,13 +660,7 @@ std::optional<std::pair<ex, ex>> over_something(const ex& base, const Facts& fac
       k *= f;
     }
   };
-  if (is_a<GiNaC::mul>(base)) {
-    for (std::size_t i = 0; i < base.nops(); ++i) {
-      one(base.op(i));
-    }
-  } else {
-    one(base);
-  }
+  sym::for_each_factor(base, one);
   if (!under) {
     return std::nullopt;
   }
