@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Goal 3 (issue 7): the derivation checker's speed. `check_full` is `impulselab check` at its
+// The derivation checker's speed. `check_full` is `impulselab check` at its
 // defaults (10,000 samples per numeric method, seed 1) without the rendering; `check_section/N`
 // is section N alone, which says where the time goes.
-// Issue 13: `check_derivation_twenty_steps` is `impulselab check bench/derivations/twenty-steps.md`
+// `check_derivation_twenty_steps` is `impulselab check bench/derivations/twenty-steps.md`
 // (20 steps, every method: exact, converse, counterexamples, the numeric second opinion) without
 // reading the file or rendering the report; bench/sympy_steps.py times the same steps in SymPy.
 // A checker for homework: `check_student_corpus` is every file of tests/derivations/students/

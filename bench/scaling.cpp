@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Goal 2 of issue 7: many-body scenes that scale.
+// Many-body scenes that scale.
 //
 // `solve_<kind>/N` times what a caller does with a scene of N contacts: multipoint::assemble
 // (validation, every body's block, the ⊕) and impulse::solve, with the library's automatic

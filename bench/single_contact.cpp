@@ -15,7 +15,7 @@
 // (--benchmark_enable_random_interleaving=true, several repetitions): bench/run does.
 //
 // Not pairs, for the breakdown: `<case>/checked_each_time`, the overload that checks its plain
-// bodies (and the normal's length) at every collision, as every collision did before issue 16.
+// bodies (and the normal's length) at every collision (as the public path once did at every one).
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -280,7 +280,7 @@ struct FrictionOutcome {
   impulse::multipoint::Body bumper, wedge;
 };
 
-// Beyond the paper (issue 17): the same collisions with Coulomb friction (mu = 0.5, Newton's law
+// Beyond the paper: the same collisions with Coulomb friction (mu = 0.5, Newton's law
 // at the bumper's elasticity), followed through the normal impulse by the exact single-contact
 // rule through its public path: W and u0 from the bodies (multipoint::contribution), the phases,
 // and the bodies after (multipoint::apply_impulses). Not a pair: it computes more than the
