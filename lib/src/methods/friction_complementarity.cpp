@@ -84,14 +84,17 @@ FrictionSystem friction_system(const multipoint::Configuration& configuration,
   s.friction = Eigen::Map<const VectorXd>(friction.data(), static_cast<Index>(n));
   // W_nn is the paper's A and -u0 its B at elasticity 1 ((4.5)/(4.8), (5.3)/(5.5)); the
   // tangential rows are the same blocks along -t (impulse::friction::dynamics for one contact).
-  const ContactSystem both = with_tangential_contacts(configuration).assemble(Storage::dense);
-  s.W = both.A();
+  // Assembled sparse, then made dense once: the dense storage would be zeroed, filled and copied
+  // into W (the same sums, in the same order).
+  const ContactSystem both = with_tangential_contacts(configuration).assemble(Storage::sparse);
+  s.W = MatrixXd(both.sparse_A());
   s.u0 = -both.B();
   if (both.has_factor()) {
     VectorXd g;
     both.factor(s.G, g);
   }
-  s.B = configuration.assemble(Storage::dense).B();  // the paper's B, with its elasticities
+  // The paper's B, with its elasticities (its A, kept sparse, is not summed).
+  s.B = configuration.assemble(Storage::sparse).B();
   require_friction_system(s);
   return s;
 }
