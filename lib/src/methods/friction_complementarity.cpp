@@ -257,13 +257,43 @@ void finish_solution(const FrictionSystem& system, double tolerance, bool least_
   // P_t* = P_t - its part in the null space of the tangential columns (of G when the system
   // carries its factor: W_tt = G_t^T G_t, so G_t x = 0 exactly when W_t x = 0).
   constexpr double threshold = 1e-10;
-  const VectorXd least =
-      system.G.size() != 0
-          ? impulse::detail::least_norm(system.G.rightCols(n), system.G.rightCols(n) * s.tangential,
-                                        threshold)
-          : impulse::detail::least_norm(MatrixXd(tt), tt * s.tangential, threshold * threshold);
+  const MatrixXd columns = system.G.size() != 0 ? MatrixXd(system.G.rightCols(n)) : MatrixXd(tt);
+  // Two contacts with the same column C (a group, detail::groups_of) differ by a direction of
+  // that null space, so P_t*, orthogonal to it, has one value at all of a group's contacts: it is
+  // S z, S with one column per group, 1/sqrt(m) at its m contacts (orthonormal columns), and z
+  // the least-norm solution of (C S) z = C P_t. A stack's contacts pair up: half the columns, a
+  // quarter of the work of the factorisation.
+  VectorXd least;
+  if (least_norm) {
+    const std::vector<Index> group = detail::groups_of(system);
+    std::vector<Index> column_of(static_cast<std::size_t>(n), -1);
+    VectorXd members = VectorXd::Zero(n);
+    Index groups = 0;
+    for (Index v = 0; v < n; ++v) {
+      const auto g = static_cast<std::size_t>(group[static_cast<std::size_t>(v)]);
+      if (column_of[g] < 0) {
+        column_of[g] = groups++;
+      }
+      members(static_cast<Index>(g)) += 1.0;
+    }
+    VectorXd weight(n);  // 1/sqrt(m) of each contact's group
+    MatrixXd reduced = MatrixXd::Zero(columns.rows(), groups);
+    for (Index v = 0; v < n; ++v) {
+      const Index g = group[static_cast<std::size_t>(v)];
+      weight(v) = 1.0 / std::sqrt(members(g));
+      reduced.col(column_of[static_cast<std::size_t>(g)]) += weight(v) * columns.col(v);
+    }
+    const VectorXd z = impulse::detail::least_norm(
+        reduced, columns * s.tangential, system.G.size() != 0 ? threshold : threshold * threshold);
+    least.resize(n);
+    for (Index v = 0; v < n; ++v) {
+      least(v) =
+          weight(v) * z(column_of[static_cast<std::size_t>(group[static_cast<std::size_t>(v)])]);
+    }
+  }
   double least_scale = 0.0;
-  const double least_residual = friction_residual(system, s.normal, least, least_scale);
+  const double least_residual =
+      least_norm ? friction_residual(system, s.normal, least, least_scale) : 0.0;
   if (least_norm && all_finite_in(least) &&
       least_residual <= std::max(s.residual, tolerance * least_scale)) {
     s.tangential = least;

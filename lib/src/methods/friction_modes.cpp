@@ -16,32 +16,14 @@
 
 namespace impulse::methods::detail {
 
-namespace {
-
-using Eigen::Index;
-using Eigen::VectorXd;
-using SparseMatrix = Eigen::SparseMatrix<double>;
-
-// How a contact's friction acts. With its normal impulse (pushing, or separating with P_n = 0 and
-// no friction) it fixes two of the conditions as equations and leaves the others to check:
-//   sticking:  w_n = 0, slip after u'_t = 0;      check P_n >= 0, |P_t| <= mu P_n
-//   forwards:  w_n = 0, P_t = -mu P_n (u'_t > 0); check P_n >= 0, u'_t >= 0
-//   backwards: w_n = 0, P_t = +mu P_n (u'_t < 0); check P_n >= 0, u'_t <= 0
-//   separating (any of the three): P_n = 0, P_t = 0; check w_n >= 0
-enum class Friction : std::uint8_t { sticking, forwards, backwards };
-
-// The friction's sign for a sliding contact: P_t = sign mu P_n.
-double sign_of(Friction f) {
-  return f == Friction::forwards ? -1.0 : f == Friction::backwards ? 1.0 : 0.0;
-}
-
 // Contacts whose tangential columns of W are the same (two corners of a box on one face of
 // another: the same bodies, the same tangent line) slip alike, and the bodies feel only the sum
 // of their friction: only the sum is decided by the equations, and it meets each contact's bound
 // exactly when it meets the sum of the bounds (then shared in proportion to the bounds). Such
 // contacts form one group, with one friction mode; the first contact of each group stands for
 // it. Contacts without friction (mu = 0) stand alone.
-std::vector<Index> groups_of(const FrictionSystem& s) {
+std::vector<Eigen::Index> groups_of(const FrictionSystem& s) {
+  using Eigen::Index;
   const Index n = s.B.size();
   std::vector<Index> group(static_cast<std::size_t>(n));
   const double size = s.W.cwiseAbs().maxCoeff();
@@ -62,6 +44,25 @@ std::vector<Index> groups_of(const FrictionSystem& s) {
     }
   }
   return group;
+}
+
+namespace {
+
+using Eigen::Index;
+using Eigen::VectorXd;
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+// How a contact's friction acts. With its normal impulse (pushing, or separating with P_n = 0 and
+// no friction) it fixes two of the conditions as equations and leaves the others to check:
+//   sticking:  w_n = 0, slip after u'_t = 0;      check P_n >= 0, |P_t| <= mu P_n
+//   forwards:  w_n = 0, P_t = -mu P_n (u'_t > 0); check P_n >= 0, u'_t >= 0
+//   backwards: w_n = 0, P_t = +mu P_n (u'_t < 0); check P_n >= 0, u'_t <= 0
+//   separating (any of the three): P_n = 0, P_t = 0; check w_n >= 0
+enum class Friction : std::uint8_t { sticking, forwards, backwards };
+
+// The friction's sign for a sliding contact: P_t = sign mu P_n.
+double sign_of(Friction f) {
+  return f == Friction::forwards ? -1.0 : f == Friction::backwards ? 1.0 : 0.0;
 }
 
 // An LU factorisation with partial pivoting of a k x k matrix whose nonzeros lie within `lower`

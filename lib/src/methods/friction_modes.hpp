@@ -5,10 +5,16 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "impulse/methods/friction_complementarity.hpp"
 
 namespace impulse::methods::detail {
+
+// The groups of contacts whose tangential columns of W are the same (friction_modes.cpp says
+// why they share one friction): group[v] is the first contact of v's group, v itself for a
+// contact alone.
+[[nodiscard]] std::vector<Eigen::Index> groups_of(const FrictionSystem& system);
 
 // What the pivoting on modes found.
 struct ModePivoting {
