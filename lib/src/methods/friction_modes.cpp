@@ -163,6 +163,33 @@ struct Modes {
   }
 };
 
+// y with K y = rhs: by the band factorisation where K's band is narrow and no pivot small (@p
+// largest: K's largest entry), else by the general sparse LU; empty when neither factorises K.
+VectorXd factored_solution(const SparseMatrix& K, double largest, const VectorXd& rhs) {
+  Index lower = 0;
+  Index upper = 0;
+  for (Index c = 0; c < K.outerSize(); ++c) {
+    for (SparseMatrix::InnerIterator it(K, c); it; ++it) {
+      lower = std::max<Index>(lower, it.row() - it.col());
+      upper = std::max<Index>(upper, it.col() - it.row());
+    }
+  }
+  if (lower + upper <= widest_band) {
+    BandLU lu(K.rows(), lower, upper);
+    for (Index c = 0; c < K.outerSize(); ++c) {
+      for (SparseMatrix::InnerIterator it(K, c); it; ++it) {
+        lu.at(it.row(), it.col()) = it.value();
+      }
+    }
+    if (lu.factorise(smallest_band_pivot * largest)) {
+      return lu.solve(rhs);
+    }
+  }
+  Eigen::SparseLU<SparseMatrix, Eigen::NaturalOrdering<int>> lu;
+  lu.compute(K);
+  return lu.info() == Eigen::Success ? VectorXd(lu.solve(rhs)) : VectorXd();
+}
+
 // The impulses of one set of modes: the equations above, a square system in the normal impulses
 // of the contacts that push and the tangential impulse of each sticking group. Returns false
 // when it has no solution (within rounding).
@@ -244,31 +271,7 @@ bool solve_modes(const FrictionSystem& s, const SparseMatrix& W, const std::vect
     const double terms = (K_abs * x.cwiseAbs() + rhs.cwiseAbs()).maxCoeff();
     return residual <= 1e-12 * terms;
   };
-  Index lower = 0;
-  Index upper = 0;
-  for (const Eigen::Triplet<double>& e : entries) {
-    lower = std::max<Index>(lower, e.row() - e.col());
-    upper = std::max<Index>(upper, e.col() - e.row());
-  }
-  VectorXd y;
-  if (lower + upper <= widest_band) {
-    BandLU lu(k, lower, upper);
-    for (Index c = 0; c < K.outerSize(); ++c) {
-      for (SparseMatrix::InnerIterator it(K, c); it; ++it) {
-        lu.at(it.row(), it.col()) = it.value();
-      }
-    }
-    if (lu.factorise(smallest_band_pivot * K_abs.coeffs().maxCoeff())) {
-      y = lu.solve(rhs);
-    }
-  }
-  if (y.size() == 0) {
-    Eigen::SparseLU<SparseMatrix, Eigen::NaturalOrdering<int>> lu;
-    lu.compute(K);
-    if (lu.info() == Eigen::Success) {
-      y = lu.solve(rhs);
-    }
-  }
+  const VectorXd y = factored_solution(K, K_abs.coeffs().maxCoeff(), rhs);
   if (!solves(y)) {
     // Dependent equations (a pyramid's box on two boxes): Lemke's method takes the problem.
     return false;
