@@ -248,10 +248,10 @@ bool lemke_attempts(const FrictionSystem& system, double tolerance, FrictionSolu
 }
 
 // The impulses found, finished: the least-norm tangential impulses that change nothing, kept if
-// the conditions still hold (with @p least_norm), Coulomb's bound clipped, the velocities after
-// and the status.
+// the conditions still hold (with @p least_norm; @p group is then detail::groups_of(system)),
+// Coulomb's bound clipped, the velocities after and the status.
 void finish_solution(const FrictionSystem& system, double tolerance, bool least_norm,
-                     FrictionSolution& s) {
+                     const std::vector<Index>& group, FrictionSolution& s) {
   const Index n = system.B.size();
   const auto tt = system.W.bottomRightCorner(n, n);
   // P_t* = P_t - its part in the null space of the tangential columns (of G when the system
@@ -265,7 +265,6 @@ void finish_solution(const FrictionSystem& system, double tolerance, bool least_
   // quarter of the work of the factorisation.
   VectorXd least;
   if (least_norm) {
-    const std::vector<Index> group = detail::groups_of(system);
     std::vector<Index> column_of(static_cast<std::size_t>(n), -1);
     VectorXd members = VectorXd::Zero(n);
     Index groups = 0;
@@ -329,6 +328,8 @@ FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool
     return s;
   }
   bool found = false;
+  // The groups of contacts that share one friction, for the pivoting and the least-norm step.
+  const std::vector<Index> group = least_norm ? detail::groups_of(system) : std::vector<Index>();
   if (least_norm && all_finite_in(system.W) && all_finite_in(system.u0) &&
       all_finite_in(system.B)) {
     // First the pivoting on the contacts' modes, started from the normal impulses without
@@ -338,7 +339,7 @@ FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool
     // that takes more than 20 + N (a pyramid's dependent contacts make it cycle) goes on to
     // Lemke's method.
     const detail::ModePivoting modes =
-        detail::pivot_modes(system, start, tolerance, static_cast<int>(20 + n));
+        detail::pivot_modes(system, group, start, tolerance, static_cast<int>(20 + n));
     if (modes.solved) {
       found = true;
       s.algorithm = FrictionAlgorithm::modes;
@@ -369,7 +370,7 @@ FrictionSolution solve_from(const FrictionSystem& system, double tolerance, bool
     s.residual = friction_residual(system, s.normal, s.tangential, s.scale);
     return s;
   }
-  finish_solution(system, tolerance, least_norm, s);
+  finish_solution(system, tolerance, least_norm, group, s);
   return s;
 }
 

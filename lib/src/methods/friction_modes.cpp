@@ -424,11 +424,10 @@ void change_modes(const FrictionSystem& s, const std::vector<Index>& group,
 
 }  // namespace
 
-ModePivoting pivot_modes(const FrictionSystem& s, const VectorXd& start, double tolerance,
-                         int max_steps) {
+ModePivoting pivot_modes(const FrictionSystem& s, const std::vector<Index>& group,
+                         const VectorXd& start, double tolerance, int max_steps) {
   const Index n = s.B.size();
   ModePivoting result;
-  const std::vector<Index> group = groups_of(s);
   SparseMatrix W = s.W.sparseView();
   W.makeCompressed();
   const SparseMatrix W_abs = W.cwiseAbs();

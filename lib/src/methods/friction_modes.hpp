@@ -25,10 +25,13 @@ struct ModePivoting {
   int steps = 0;               // the systems solved
 };
 
-// Pivots on the modes of the contacts of `system`, starting from the modes that `start` (normal
-// impulses without friction, e.g. the paper's; empty: none) suggests, for at most `max_steps`
-// steps. `solved` only when friction_residual() is at most tolerance times its scale.
-[[nodiscard]] ModePivoting pivot_modes(const FrictionSystem& system, const Eigen::VectorXd& start,
-                                       double tolerance, int max_steps);
+// Pivots on the modes of the contacts of `system`, their groups `group` (groups_of(system)),
+// starting from the modes that `start` (normal impulses without friction, e.g. the paper's; empty:
+// none) suggests, for at most `max_steps` steps. `solved` only when friction_residual() is at most
+// tolerance times its scale.
+[[nodiscard]] ModePivoting pivot_modes(const FrictionSystem& system,
+                                       const std::vector<Eigen::Index>& group,
+                                       const Eigen::VectorXd& start, double tolerance,
+                                       int max_steps);
 
 }  // namespace impulse::methods::detail
