@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "app.hpp"
-#include "commands.hpp"
+#include "check_program.hpp"
 #include "derivations/check.hpp"
 #include "derivations/derivation.hpp"
 #include "impulse/core/error.hpp"

@@ -4,7 +4,7 @@
 // command line's input and output alone, not the solver's methods, the scene reader or the other
 // verbs: a newcomer's first report (scripts/check-the-paper) waits for no more compilation than
 // the check needs.
-#include "commands.hpp"
+#include "check_program.hpp"
 #include "fixed_addresses.hpp"
 
 int main(int argc, char** argv) {

@@ -11,11 +11,4 @@ namespace impulselab {
 /// @return the exit status
 int program(int argc, char** argv);
 
-/// @brief The program with the one verb `check` (impulselab-check): defined in check_command.cpp,
-/// so that it links without the other verbs.
-/// @param argc as main() receives it
-/// @param argv as main() receives it
-/// @return the exit status
-int check_program(int argc, char** argv);
-
 }  // namespace impulselab
