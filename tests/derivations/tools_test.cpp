@@ -7,6 +7,7 @@
 #include <random>
 
 #include "derivations/check.hpp"
+#include "file/decide.hpp"
 #include "file/time.hpp"
 #include "numeric.hpp"
 #include "symbolic.hpp"
@@ -141,4 +142,54 @@ TEST_CASE("Paper files: differentials at a pulse model's instant are its rates",
   CHECK(status("\\mathrm{d}S_v = " + element) == check::Status::verified);
   // The element holds at the model's t only (its rate there); the velocity before is not it.
   CHECK(status("\\mathrm{d}S_v = \\frac{p_v}{m} \\, \\mathrm{d}t") != check::Status::verified);
+}
+
+TEST_CASE("exact_quotient: the quick no before the division agrees with GiNaC's division",
+          "[tools]") {
+  // Random polynomials in x, y, z of degree up to 2 in each; every product p q must divide by q
+  // with quotient p (the quotient checked by multiplying back), and for every pair (a, b) the
+  // answer must be GiNaC's own divide() without the quick no: a says no where divide() says no,
+  // yes with its quotient where it says yes. Many pairs lack one of b's powers (the quick no's
+  // case), others have the powers and still leave a remainder (the division's).
+  const GiNaC::realsymbol x("x"), y("y"), z("z");
+  std::mt19937_64 rng(28);
+  std::uniform_int_distribution<int> coefficient(-3, 3);
+  std::uniform_int_distribution<int> power(0, 2);
+  const auto polynomial = [&] {
+    GiNaC::ex p = 0;
+    for (int term = 0; term < 3; ++term) {
+      p += coefficient(rng) * GiNaC::pow(x, power(rng)) * GiNaC::pow(y, power(rng)) *
+           GiNaC::pow(z, power(rng));
+    }
+    return GiNaC::expand(p);
+  };
+  int quick = 0;
+  int remainder = 0;
+  for (int i = 0; i < 300; ++i) {
+    const GiNaC::ex p = polynomial();
+    const GiNaC::ex q = polynomial();
+    if (q.is_zero()) {
+      continue;
+    }
+    const auto quotient = check::file::exact_quotient(p * q, q);
+    REQUIRE(quotient);
+    CHECK((GiNaC::expand(*quotient * q - p * q)).is_zero());
+    // a: a random polynomial, a multiple of q, or a multiple of q plus one (the powers of q are
+    // there, the remainder is 1 unless q is a constant).
+    const GiNaC::ex r = polynomial();
+    const GiNaC::ex a = i % 3 == 0 ? r : GiNaC::expand(r * q + (i % 3 == 2 ? 1 : 0));
+    GiNaC::ex expected;
+    const bool divides = GiNaC::divide(a, q, expected);
+    const auto answer = check::file::exact_quotient(a, q);
+    CHECK(answer.has_value() == divides);
+    if (answer && divides) {
+      CHECK((GiNaC::expand(*answer - expected)).is_zero());
+    }
+    const bool lacks =
+        a.degree(x) < q.degree(x) || a.degree(y) < q.degree(y) || a.degree(z) < q.degree(z);
+    quick += !divides && lacks ? 1 : 0;
+    remainder += !divides && !lacks ? 1 : 0;
+  }
+  CHECK(quick > 30);      // the quick no's case was met often enough to mean something,
+  CHECK(remainder > 30);  // and the division's no after the powers passed
 }
