@@ -135,7 +135,10 @@ ex symbol_as_pi(const ex& e) {
 namespace {
 
 // The highest power of each symbol in the terms of an expanded sum (a symbol inside a function or
-// under a root is not counted: such a sum is no polynomial, and divides nothing).
+// under a root is not counted: such a sum is no polynomial, and divides nothing). One walk over
+// the terms: GiNaC's degree() once per symbol of the divisor, after collecting its symbols, cost
+// more than the long division it was there to spare (210 against 60 million instructions on the
+// paper check).
 std::map<ex, int, GiNaC::ex_is_less> highest_powers(const ex& expanded) {
   std::map<ex, int, GiNaC::ex_is_less> powers;
   const auto factor = [&](const ex& f) {
