@@ -626,12 +626,50 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   CHECK(division("0 < \\theta < \\pi/3", "2\\cos(2\\theta) + 1") == free);
   CHECK(division("0 < \\theta \\le \\pi/3", "2\\cos(2\\theta) + 1") == conditional);
   // tan π/4 = 1 exactly (its double is 0.9999999999999999): tan θ - 1 < 0 below π/4, and 0 at it
-  // (follows-if before, either way); tan 2θ - 1 on 0 < θ < π/8 likewise. On π/4 < θ < 5π/4 the
-  // pole at π/2 lies inside: unknown, the condition stays.
+  // (follows-if before, either way); tan 2θ - 1 on 0 < θ < π/8 likewise.
   CHECK(division("0 < \\theta < \\pi/4", "\\tan\\theta - 1") == free);
   CHECK(division("0 < \\theta \\le \\pi/4", "\\tan\\theta - 1") == conditional);
   CHECK(division("0 < \\theta < \\pi/8", "\\tan 2\\theta - 1") == free);
-  CHECK(division("\\pi/4 < \\theta < 5\\pi/4", "\\tan\\theta - 1") == conditional);
+  // Where a sine, cosine or tangent takes the value that makes the sum 0: tan θ = 1 at π/4 + nπ,
+  // so on π/4 < θ < 5π/4 (across the pole at π/2, where neither side has a value) never, and at
+  // 5π/4 when that end is in; 2 sin θ = √3 at π/3 and 2π/3 (so not on 0 < θ < π/3, at its closed
+  // end, and at π/3 inside 0 < θ < π/2); 2 cos θ = √2 at ±π/4; tan θ = √3 at π/3 and 4π/3;
+  // 3 sin 2θ = 1 four times on 0 < θ < 2π; cos θ = 1/2 at π/3 ≈ 1.047, inside (0, 2). (Follows-if
+  // before, each that now follows: the ends' values are no doubles, the range rules cannot tell.)
+  CHECK(division("\\pi/4 < \\theta < 5\\pi/4", "\\tan\\theta - 1") == free);
+  CHECK(division("\\pi/4 < \\theta \\le 5\\pi/4", "\\tan\\theta - 1") == conditional);
+  CHECK(division("0 < \\theta < \\pi/3", "2\\sin\\theta - \\sqrt{3}") == free);
+  CHECK(division("0 < \\theta \\le \\pi/3", "2\\sin\\theta - \\sqrt{3}") == conditional);
+  CHECK(division("0 < \\theta < \\pi/2", "2\\sin\\theta - \\sqrt{3}") == conditional);
+  CHECK(division("0 < \\theta < \\pi/4", "2\\cos\\theta - \\sqrt{2}") == free);
+  CHECK(division("\\pi/3 < \\theta < 4\\pi/3", "\\sqrt{3} - \\tan\\theta") == free);
+  CHECK(division("0 < \\theta < 2\\pi", "3\\sin(2\\theta) - 1") == conditional);
+  CHECK(division("0 < \\theta < 2", "\\cos\\theta - 1/2") == conditional);
+  // An argument shifted by a constant, c θ + d: its exact ends are c times the fact's ends plus
+  // d. θ - π runs over 0 < θ - π < π on π < θ < 2π, where sin is positive, and reaches 0 at
+  // either closed end; on π/2 < θ < 2π it passes through 0 at θ = π. 2θ - π/3 runs over (0, π)
+  // on π/6 < θ < 2π/3, 2θ + π/3 over (2π/3, 5π/3), through π. θ - π/3 over (-π/2, π/2) on
+  // -π/6 < θ < 5π/6, where cos is positive; cos(π/2 - θ) = sin θ > 0 on 0 < θ < π (c = -1: the
+  // ends swap), and 0 at θ = π on 0 < θ < 3π/2. (Follows-if before, every one.)
+  CHECK(division("\\pi < \\theta < 2\\pi", "\\sin(\\theta - \\pi)") == free);
+  CHECK(division("\\pi \\le \\theta < 2\\pi", "\\sin(\\theta - \\pi)") == conditional);
+  CHECK(division("\\pi < \\theta \\le 2\\pi", "\\sin(\\theta - \\pi)") == conditional);
+  CHECK(division("\\pi/2 < \\theta < 2\\pi", "\\sin(\\theta - \\pi)") == conditional);
+  CHECK(division("\\pi/6 < \\theta < 2\\pi/3", "\\sin(2\\theta - \\pi/3)") == free);
+  CHECK(division("\\pi/6 < \\theta < 2\\pi/3", "\\sin(2\\theta + \\pi/3)") == conditional);
+  CHECK(division("-\\pi/6 < \\theta < 5\\pi/6", "\\cos(\\theta - \\pi/3)") == free);
+  CHECK(division("-\\pi/6 \\le \\theta < 5\\pi/6", "\\cos(\\theta - \\pi/3)") == conditional);
+  CHECK(division("0 < \\theta < \\pi", "\\cos(\\pi/2 - \\theta)") == free);
+  CHECK(division("0 < \\theta < 3\\pi/2", "\\cos(\\pi/2 - \\theta)") == conditional);
+  // e^x - e^y has the sign of x - y (exp increases): positive for x > 1 > y, though the ranges of
+  // e^x and e^y meet at e; on x > 1, y < 2 both may be 1.5. Likewise 3e^y - 3e^x < 0 and
+  // arctan x - arctan y > 0; 2e^x - 3e^y is no such difference, and is 0 at x = 1.1,
+  // y = 1.1 + ln(2/3) ≈ 0.69. (Follows-if before, all three that now follow.)
+  CHECK(division("x > 1, y < 1", "\\exp(x) - \\exp(y)") == free);
+  CHECK(division("x > 1, y < 2", "\\exp(x) - \\exp(y)") == conditional);
+  CHECK(division("x > 1, y < 1", "3\\exp(y) - 3\\exp(x)") == free);
+  CHECK(division("x > 1, y < 1", "\\arctan x - \\arctan y") == free);
+  CHECK(division("x > 1, y < 1", "2\\exp(x) - 3\\exp(y)") == conditional);
   // 3θ on 0 < θ ≤ π/6 reaches π/2, where cos 3θ = 0: its exact value at the end comes with the
   // fact's own closed end (the argument's double end, moved outward for rounding, is open). On
   // 0 < θ < π/6, cos 3θ > 0.

@@ -721,12 +721,205 @@ Sign Facts::sign(const ex& e) const {
   if (r == Sign::positive || r == Sign::negative) {
     return r;
   }
+  if (const Sign d = of_increasing_difference(e); d != Sign::unknown) {
+    return d;
+  }
+  if (of_wave_zeros(e) == Sign::nonzero) {
+    // Never 0, and ≥ 0 or ≤ 0 by the other rules: of that strict sign.
+    const Sign weak = s != Sign::unknown ? s : r;
+    return weak == Sign::nonnegative   ? Sign::positive
+           : weak == Sign::nonpositive ? Sign::negative
+                                       : Sign::nonzero;
+  }
   const Sign known = s != Sign::unknown ? s : r;
   if (known == Sign::unknown) {
     const Sign combined = of_linear_facts(e);
     return combined != Sign::unknown ? combined : of_quadratic(e);
   }
   return known;
+}
+
+namespace {
+
+// @p term as k f(…), a real number k ≠ 0 times one function named in @p names: k and f(…).
+std::optional<std::pair<GiNaC::numeric, ex>> scaled_function(
+    const ex& term, const std::vector<const char*>& names) {
+  GiNaC::numeric k = 1;
+  std::optional<ex> f;
+  const auto factor = [&](const ex& x) {
+    const bool named = std::any_of(names.begin(), names.end(),
+                                   [&](const char* name) { return function_named(x, name); });
+    if (is_a<GiNaC::numeric>(x)) {
+      k *= GiNaC::ex_to<GiNaC::numeric>(x);
+    } else if (!f && named) {
+      f = x;
+    } else {
+      k = 0;  // another factor: no such term
+    }
+  };
+  if (is_a<GiNaC::mul>(term)) {
+    for (std::size_t i = 0; i < term.nops(); ++i) {
+      factor(term.op(i));
+    }
+  } else {
+    factor(term);
+  }
+  if (!f || k.is_zero() || !k.is_real()) {
+    return std::nullopt;
+  }
+  return std::pair{k, *f};
+}
+
+}  // namespace
+
+// k f(a) - k f(b) for a function f that increases strictly on the whole real line (exp, arctan;
+// the reader writes sinh in exponentials): the sign of k (a - b), where the facts give a - b a
+// strict sign (e^x - e^y > 0 for x > 1 > y, which the ranges of e^x and e^y, both open at e, cannot
+// show once rounded).
+Sign Facts::of_increasing_difference(const ex& e) const {
+  if (!is_a<GiNaC::add>(e) || e.nops() != 2) {
+    return Sign::unknown;
+  }
+  const std::vector<const char*> increasing{"exp", "atan"};
+  const auto first = scaled_function(e.op(0), increasing);
+  const auto second = scaled_function(e.op(1), increasing);
+  if (!first || !second || first->first != -second->first ||
+      GiNaC::ex_to<GiNaC::function>(first->second).get_name() !=
+          GiNaC::ex_to<GiNaC::function>(second->second).get_name()) {
+    return Sign::unknown;
+  }
+  const Sign between = sign(GiNaC::expand(first->second.op(0) - second->second.op(0)));
+  if (between != Sign::positive && between != Sign::negative) {
+    return Sign::unknown;
+  }
+  return first->first.is_positive() == (between == Sign::positive) ? Sign::positive
+                                                                   : Sign::negative;
+}
+
+namespace {
+
+// Whether f (sin, cos or tan) takes the value v at an angle of the range from `from` to `to`
+// (Facts::End: an open end is left out; from_value and to_value their values), an angle within
+// 1e-20 of an end taken as at it only where f there is v exactly; nothing when that cannot be
+// told, or when the range spans more than eight turns.
+std::optional<bool> reaches(const ex& f, const ex& v, const Facts::End& from, const Facts::End& to,
+                            const GiNaC::numeric& from_value, const GiNaC::numeric& to_value) {
+  const bool tangent = function_named(f, "tan");
+  const bool sine = function_named(f, "sin");
+  const double step = tangent ? 3.141592653589793 : 6.283185307179586;
+  if (!((to_value - from_value).to_double() / step < 8)) {
+    return std::nullopt;
+  }
+  std::vector<ex> angles;
+  if (tangent) {
+    angles = {GiNaC::atan(v)};
+  } else if (sine) {
+    angles = {GiNaC::asin(v), GiNaC::Pi - GiNaC::asin(v)};
+  } else {
+    angles = {GiNaC::acos(v), -GiNaC::acos(v)};
+  }
+  const auto value_at = [&](const ex& u) {
+    return tangent ? GiNaC::tan(u) : sine ? GiNaC::sin(u) : GiNaC::cos(u);
+  };
+  // Where an angle is against an end: +1 beyond it (inside the range), 0 at it, -1 short of it;
+  // nothing when that cannot be told.
+  const GiNaC::numeric tiny("1e-20");
+  const auto against = [&](const ex& angle, const Facts::End& end,
+                           int inward) -> std::optional<int> {
+    const std::optional<GiNaC::numeric> gap = value_in_40_digits(angle - end.at);
+    if (!gap) {
+      return std::nullopt;
+    }
+    if (abs(*gap) > tiny) {
+      return (gap->is_positive() ? 1 : -1) * inward;
+    }
+    try {
+      if (GiNaC::normal(GiNaC::expand(value_at(end.at) - v)).is_zero()) {
+        return 0;
+      }
+    } catch (const std::exception&) {
+      // a pole at the end
+    }
+    return std::nullopt;
+  };
+  const ex period = tangent ? GiNaC::Pi : 2 * GiNaC::Pi;
+  for (const ex& angle : angles) {
+    const std::optional<GiNaC::numeric> base = value_in_40_digits(angle);
+    if (!base) {
+      return std::nullopt;
+    }
+    const auto first = static_cast<long>(std::floor((from_value - *base).to_double() / step)) - 1;
+    const auto last = static_cast<long>(std::ceil((to_value - *base).to_double() / step)) + 1;
+    for (long n = first; n <= last; ++n) {
+      const ex u = angle + n * period;
+      const std::optional<int> past_from = against(u, from, 1);
+      const std::optional<int> before_to = against(u, to, -1);
+      if (!past_from || !before_to) {
+        return std::nullopt;
+      }
+      if ((*past_from > 0 || (*past_from == 0 && !from.strict)) &&
+          (*before_to > 0 || (*before_to == 0 && !to.strict))) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+// k f(c x + d) + b for f = sin, cos or tan, numbers k ≠ 0 and b (π and roots allowed), x a symbol
+// with two exact ends: f takes the value v = -b/k at the angles asin v + 2nπ and π - asin v + 2nπ
+// (sin), ±acos v + 2nπ (cos), atan v + nπ (tan). Where none of them lies in the range of c x + d
+// (at an open end is not in it), the sum is never 0 (where it is defined: tan's poles are no
+// zeros): 2 sin θ - √3 on 0 < θ < π/3, tan θ - 1 on π/4 < θ < 5π/4.
+Sign Facts::of_wave_zeros(const ex& e) const {
+  if (!is_a<GiNaC::add>(e) || e.nops() > 4) {
+    return Sign::unknown;
+  }
+  std::optional<std::pair<GiNaC::numeric, ex>> wave;
+  std::size_t at = 0;
+  for (; at < e.nops() && !wave; ++at) {
+    wave = scaled_function(e.op(at), {"sin", "cos", "tan"});
+  }
+  if (!wave) {
+    return Sign::unknown;
+  }
+  ex b = 0;  // the other terms, each a real number
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (i + 1 == at) {
+      continue;
+    }
+    const std::optional<GiNaC::numeric> value = value_in_40_digits(e.op(i));
+    if (!value || !value->is_real()) {
+      return Sign::unknown;
+    }
+    b += e.op(i);
+  }
+  const ex& f = wave->second;
+  const std::optional<Affine> affine = affine_in_symbol(f.op(0));
+  if (!affine) {
+    return Sign::unknown;
+  }
+  const auto [low, high] = exact_ends(affine->symbol);
+  if (!low || !high) {
+    return Sign::unknown;
+  }
+  const bool rising = affine->c.is_positive();
+  const End from{affine->c * (rising ? low : high)->at + affine->d, (rising ? low : high)->strict};
+  const End to{affine->c * (rising ? high : low)->at + affine->d, (rising ? high : low)->strict};
+  const ex v = -b / wave->first;
+  const std::optional<GiNaC::numeric> v_value = value_in_40_digits(v);
+  const std::optional<GiNaC::numeric> from_value = value_in_40_digits(from.at);
+  const std::optional<GiNaC::numeric> to_value = value_in_40_digits(to.at);
+  if (!v_value || !from_value || !to_value || !v_value->is_real()) {
+    return Sign::unknown;
+  }
+  if (!function_named(f, "tan") && abs(*v_value) > 1) {
+    return Sign::nonzero;  // sin and cos never reach it
+  }
+  const std::optional<bool> zero = reaches(f, v, from, to, *from_value, *to_value);
+  return zero && !*zero ? Sign::nonzero : Sign::unknown;
 }
 
 // a x² + b x + c in one of its symbols x, with a of a strict sign and b² - 4 a c < 0: never 0,
@@ -1019,11 +1212,11 @@ Sign Facts::of_range(const ex& e) const {
       if (exact_low || exact_high) {
         // An exact end is reached as the symbol's own end is: the argument's, moved outward
         // for rounding, is open (0 < θ ≤ π/6 reaches cos 3θ = 0).
-        const auto multiple = multiple_of_symbol(x.op(0));  // (kept: the names below are in it)
-        const auto& [symbol, c] = *multiple;
-        const Range own = range(symbol);
-        a.low_open = c.is_positive() ? own.low_open : own.high_open;
-        a.high_open = c.is_positive() ? own.high_open : own.low_open;
+        const std::optional<Affine> affine = affine_in_symbol(x.op(0));  // (exact ends: it is)
+        const Range own = range(affine->symbol);
+        const bool rising = affine->c.is_positive();
+        a.low_open = rising ? own.low_open : own.high_open;
+        a.high_open = rising ? own.high_open : own.low_open;
       }
       return function == 't' ? tangent(a, exact_low, exact_high)
                              : wave(a, function == 'c', exact_low, exact_high);
@@ -1064,23 +1257,22 @@ std::pair<std::optional<double>, std::optional<double>> Facts::exact_wave_ends(
     }
   }
   WaveEnds ends{argument, function, std::nullopt, std::nullopt};
-  const auto multiple = multiple_of_symbol(argument);
-  const auto found = multiple ? exact_bounds_.find(multiple->first) : exact_bounds_.end();
+  const std::optional<Affine> affine = affine_in_symbol(argument);
+  const auto found = affine ? exact_bounds_.find(affine->symbol) : exact_bounds_.end();
   if (found != exact_bounds_.end()) {
-    const GiNaC::numeric& c = multiple->second;
-    // The value at c times an exact bound, where it is a number a double holds, and where that
-    // is: the argument's end must be there (not at a bound another fact made tighter).
+    const GiNaC::numeric& c = affine->c;
+    // The value at c times an exact bound plus d, where it is a number a double holds, and where
+    // that is: the argument's end must be there (not at a bound another fact made tighter).
     const auto value =
         [&](const std::optional<ex>& end) -> std::optional<std::pair<double, double>> {
       if (!end) {
         return std::nullopt;
       }
-      const ex where = GiNaC::evalf(c * *end);
+      const ex at = c * *end + affine->d;
+      const ex where = GiNaC::evalf(at);
       ex v;
       try {
-        v = function == 'c'   ? GiNaC::cos(c * *end)
-            : function == 's' ? GiNaC::sin(c * *end)
-                              : GiNaC::tan(c * *end);
+        v = function == 'c' ? GiNaC::cos(at) : function == 's' ? GiNaC::sin(at) : GiNaC::tan(at);
       } catch (const std::exception&) {
         return std::nullopt;  // tan at a pole (π/2)
       }
@@ -1148,16 +1340,42 @@ std::pair<std::optional<Facts::End>, std::optional<Facts::End>> Facts::exact_end
 }
 
 std::optional<std::pair<ex, GiNaC::numeric>> multiple_of_symbol(const ex& argument) {
-  ex symbol = argument;
+  const std::optional<Affine> affine = affine_in_symbol(argument);
+  if (!affine || !affine->d.is_zero()) {
+    return std::nullopt;
+  }
+  return std::pair{affine->symbol, affine->c};
+}
+
+std::optional<Affine> affine_in_symbol(const ex& argument) {
+  // The constant terms of a sum (numbers, and terms with π that are real numbers in 40 digits) are
+  // d; what is left must be one term c x.
+  ex rest = argument;
+  ex d = 0;
+  if (is_a<GiNaC::add>(argument)) {
+    rest = 0;
+    for (std::size_t i = 0; i < argument.nops(); ++i) {
+      const ex& term = argument.op(i);
+      const std::optional<GiNaC::numeric> value = is_a<GiNaC::numeric>(term) || term.has(GiNaC::Pi)
+                                                      ? value_in_40_digits(term)
+                                                      : std::nullopt;
+      if (value && value->is_real()) {
+        d += term;
+      } else {
+        rest += term;
+      }
+    }
+  }
+  ex symbol = rest;
   GiNaC::numeric c = 1;
-  if (is_a<GiNaC::mul>(argument) && argument.nops() == 2 && is_a<GiNaC::numeric>(argument.op(1))) {
-    symbol = argument.op(0);
-    c = GiNaC::ex_to<GiNaC::numeric>(argument.op(1));
+  if (is_a<GiNaC::mul>(rest) && rest.nops() == 2 && is_a<GiNaC::numeric>(rest.op(1))) {
+    symbol = rest.op(0);
+    c = GiNaC::ex_to<GiNaC::numeric>(rest.op(1));
   }
   if (!is_a<GiNaC::symbol>(symbol) || !c.is_rational() || c.is_zero()) {
     return std::nullopt;
   }
-  return std::pair{symbol, c};
+  return Affine{symbol, c, d};
 }
 
 bool Facts::strict_bound(const ex& symbol, bool high) const {

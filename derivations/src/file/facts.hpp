@@ -111,6 +111,8 @@ class Facts {
   [[nodiscard]] Sign of_linear_facts(const GiNaC::ex& e) const;
   [[nodiscard]] Sign derived_sign(const GiNaC::ex& symbol) const;
   [[nodiscard]] Sign of_quadratic(const GiNaC::ex& e) const;
+  [[nodiscard]] Sign of_increasing_difference(const GiNaC::ex& e) const;
+  [[nodiscard]] Sign of_wave_zeros(const GiNaC::ex& e) const;
   /// Whether every relation that can be judged at @p at holds (and, with @p all_judged, every
   /// relation can be).
   [[nodiscard]] bool relations_hold(const GiNaC::exmap& at, bool all_judged) const;
@@ -142,7 +144,6 @@ class Facts {
       exact_bounds_;
 };
 
-/// @p argument as c x, a rational c ≠ 0 times a symbol x; else nothing.
 /// @p value, a number or an expression in constants only (1 - π/2), as a number: itself, or
 /// evaluated in 40 digits; nothing when it is not a number there.
 [[nodiscard]] std::optional<GiNaC::numeric> value_in_40_digits(const GiNaC::ex& value);
@@ -151,7 +152,17 @@ class Facts {
 /// 0 nor shown not to be).
 [[nodiscard]] bool certainly_nonzero(const GiNaC::ex& value);
 
+/// @p argument as c x, a rational c ≠ 0 times a symbol x; else nothing.
 [[nodiscard]] std::optional<std::pair<GiNaC::ex, GiNaC::numeric>> multiple_of_symbol(
     const GiNaC::ex& argument);
+
+/// An argument c x + d: a rational c ≠ 0 times a symbol x, plus a real constant d (0, 1/2, -π/3).
+struct Affine {
+  GiNaC::ex symbol;
+  GiNaC::numeric c;
+  GiNaC::ex d;
+};
+/// @p argument as c x + d (Affine); else nothing.
+[[nodiscard]] std::optional<Affine> affine_in_symbol(const GiNaC::ex& argument);
 
 }  // namespace impulse::derivations::file
