@@ -645,6 +645,9 @@ TEST_CASE("Students' facts: the ends of a range, reached or not, decide division
   CHECK(division("\\pi/3 < \\theta < 4\\pi/3", "\\sqrt{3} - \\tan\\theta") == free);
   CHECK(division("0 < \\theta < 2\\pi", "3\\sin(2\\theta) - 1") == conditional);
   CHECK(division("0 < \\theta < 2", "\\cos\\theta - 1/2") == conditional);
+  // sin θ = 1 at π/2 alone: an open end leaves it out, a range around it does not.
+  CHECK(division("0 < \\theta < \\pi/2", "\\sin\\theta - 1") == free);
+  CHECK(division("0 < \\theta < \\pi", "\\sin\\theta - 1") == conditional);
   // An argument shifted by a constant, c θ + d: its exact ends are c times the fact's ends plus
   // d. θ - π runs over 0 < θ - π < π on π < θ < 2π, where sin is positive, and reaches 0 at
   // either closed end; on π/2 < θ < 2π it passes through 0 at θ = π. 2θ - π/3 runs over (0, π)

@@ -845,8 +845,8 @@ std::optional<bool> reaches(const ex& f, const ex& v, const Facts::End& from, co
   const ex period = tangent ? GiNaC::Pi : 2 * GiNaC::Pi;
   for (const ex& angle : angles) {
     const std::optional<GiNaC::numeric> base = value_in_40_digits(angle);
-    if (!base) {
-      return std::nullopt;
+    if (!base || !base->is_real()) {
+      return std::nullopt;  // (asin of a v just past 1 in 40 digits)
     }
     const auto first = static_cast<long>(std::floor((from_value - *base).to_double() / step)) - 1;
     const auto last = static_cast<long>(std::ceil((to_value - *base).to_double() / step)) + 1;
@@ -915,8 +915,8 @@ Sign Facts::of_wave_zeros(const ex& e) const {
   if (!v_value || !from_value || !to_value || !v_value->is_real()) {
     return Sign::unknown;
   }
-  if (!function_named(f, "tan") && abs(*v_value) > 1) {
-    return Sign::nonzero;  // sin and cos never reach it
+  if (!function_named(f, "tan") && abs(*v_value) > 1 + GiNaC::numeric("1e-20")) {
+    return Sign::nonzero;  // sin and cos never reach it (v = 1 in 40 digits may be 1 exactly)
   }
   const std::optional<bool> zero = reaches(f, v, from, to, *from_value, *to_value);
   return zero && !*zero ? Sign::nonzero : Sign::unknown;
