@@ -597,6 +597,29 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
         std::vector<std::string>{"premise", "does-not-follow"});
 }
 
+TEST_CASE("Students' facts: a symbol with a range is drawn over it and at its closed ends",
+          "[derivations][students-notation]") {
+  // arcsin(sin θ) = θ holds on -π/2 ≤ θ ≤ π/2 and fails past it: on -π/2 ≤ θ ≤ 1.571 only in
+  // (π/2, 1.571], 2e-4 wide, which values drawn by sign alone (0.2 to 5, kept where the facts
+  // hold) reach about once in twenty thousand. The closed end 1.571 shows it: arcsin(sin 1.571)
+  // = π - 1.571 ≈ 1.5706. (Undecided before: the exact method cannot tell where it fails.) On
+  // -π/2 ≤ θ ≤ π/2 it follows.
+  const auto past = d::check_derivation(
+      "assume: -\\pi/2 \\le \\theta \\le 1.571\n\n$$v = \\arcsin(\\sin\\theta)$$\n\n$$v = "
+      "\\theta$$",
+      "end.md", pinned_options());
+  const d::EquationResult& step = past.equations.at(1);
+  CHECK(step.verdict == d::Verdict::does_not_follow);
+  const auto theta =
+      std::find_if(step.counterexample.begin(), step.counterexample.end(),
+                   [](const d::CounterexampleValue& v) { return v.symbol == "\\theta"; });
+  REQUIRE(theta != step.counterexample.end());
+  CHECK(theta->x > 1.5707963267948966);
+  CHECK(theta->x <= 1.571);
+  CHECK(verdicts("assume: -\\pi/2 \\le \\theta \\le \\pi/2\n\n$$v = \\arcsin(\\sin\\theta)$$\n\n"
+                 "$$v = \\theta$$") == std::vector<std::string>{"premise", "follows"});
+}
+
 TEST_CASE("Students' facts: the ends of a range, reached or not, decide divisions and roots",
           "[derivations][students-notation]") {
   // J (d) = p q, then J = p q / d: follows when the facts keep d from 0, else follows-if d ≠ 0.

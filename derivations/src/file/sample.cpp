@@ -493,11 +493,27 @@ class Sampler {
     return names;
   }
 
-  double draw_value(Sign sign) { return draw_with_sign(random_, sign); }
+  // A symbol with both ends of a range (0 ≤ e ≤ 1, 0 < θ < π/2): half its values spread
+  // evenly over the range, and one in eight at each closed end itself (arcsin(sin θ) = θ fails only
+  // past π/2, on θ ≤ 1.571); the other values by its sign, as every other symbol's.
+  double draw_value(const ex& symbol) {
+    const auto [low, high] = facts_.bounds(symbol);
+    if (low && high && *low < *high && random_.coin()) {
+      const int end = random_.integer(0, 3);
+      if (end == 0 && !facts_.strict_bound(symbol, false)) {
+        return *low;
+      }
+      if (end == 1 && !facts_.strict_bound(symbol, true)) {
+        return *high;
+      }
+      return random_.uniform(*low, *high);
+    }
+    return draw_with_sign(random_, facts_.of_symbol(symbol));
+  }
 
   void draw() {
     for (std::size_t i = 0; i < symbols_.size(); ++i) {
-      values_[i] = draw_value(facts_.of_symbol(symbols_[i]));
+      values_[i] = draw_value(symbols_[i]);
     }
   }
 
