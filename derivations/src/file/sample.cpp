@@ -339,6 +339,9 @@ class Sampler {
       }
     }
     values_.assign(symbols_.size(), 0.0);
+    for (const ex& x : symbols_) {
+      ranges_.push_back(range_of(x));
+    }
   }
 
   NumericOpinion run(std::size_t wanted, WorkClock::time_point deadline) {
@@ -493,27 +496,28 @@ class Sampler {
     return names;
   }
 
-  // A symbol with both ends of a range (0 ≤ e ≤ 1, 0 < θ < π/2): half its values spread
-  // evenly over the range, and one in eight at each closed end itself (arcsin(sin θ) = θ fails only
-  // past π/2, on θ ≤ 1.571); the other values by its sign, as every other symbol's.
-  double draw_value(const ex& symbol) {
-    const auto [low, high] = facts_.bounds(symbol);
-    if (low && high && *low < *high && random_.coin()) {
+  // A symbol with both ends of a range (0 ≤ e ≤ 1, 0 < θ < π/2; an end from its sign too): half
+  // its values spread evenly over the range, and one in eight at each closed end itself
+  // (arcsin(sin θ) = θ fails only past π/2, on θ ≤ 1.571); the other values by its sign, as every
+  // other symbol's.
+  double draw_value(std::size_t i) {
+    const Range& range = ranges_[i];
+    if (range.low < range.high && random_.coin()) {
       const int end = random_.integer(0, 3);
-      if (end == 0 && !facts_.strict_bound(symbol, false)) {
-        return *low;
+      if (end == 0 && !range.low_open) {
+        return range.low;
       }
-      if (end == 1 && !facts_.strict_bound(symbol, true)) {
-        return *high;
+      if (end == 1 && !range.high_open) {
+        return range.high;
       }
-      return random_.uniform(*low, *high);
+      return random_.uniform(range.low, range.high);
     }
-    return draw_with_sign(random_, facts_.of_symbol(symbol));
+    return draw_with_sign(random_, facts_.of_symbol(symbols_[i]));
   }
 
   void draw() {
     for (std::size_t i = 0; i < symbols_.size(); ++i) {
-      values_[i] = draw_value(symbols_[i]);
+      values_[i] = draw_value(i);
     }
   }
 
@@ -569,11 +573,33 @@ class Sampler {
     return std::abs(value) / std::max(scale, 1e-300);
   }
 
+  // A symbol's ends as the facts give them (Facts::exact_ends), as doubles; low = high = 0 when
+  // it has not both.
+  struct Range {
+    double low = 0.0;
+    double high = 0.0;
+    bool low_open = true;
+    bool high_open = true;
+  };
+  [[nodiscard]] Range range_of(const ex& symbol) const {
+    const auto [low, high] = facts_.exact_ends(symbol);
+    if (!low || !high) {
+      return {};
+    }
+    const std::optional<GiNaC::numeric> a = value_in_40_digits(low->at);
+    const std::optional<GiNaC::numeric> b = value_in_40_digits(high->at);
+    if (!a || !b || !a->is_real() || !b->is_real()) {
+      return {};
+    }
+    return {a->to_double(), b->to_double(), low->strict, high->strict};
+  }
+
   const NumericProblem& problem_;
   const Facts& facts_;
   num::Random random_;
   std::vector<ex> symbols_;
   std::vector<double> values_;
+  std::vector<Range> ranges_;  // of each symbol
   std::vector<sym::Compiled> premises_;
   std::vector<sym::Compiled> premise_scales_;
   std::vector<sym::Compiled> denominators_;
