@@ -6,6 +6,8 @@
 #include <functional>
 #include <limits>
 
+#include "symbolic.hpp"
+
 namespace impulse::derivations::file {
 
 using GiNaC::ex;
@@ -757,13 +759,7 @@ std::optional<std::pair<GiNaC::numeric, ex>> scaled_function(
       k = 0;  // another factor: no such term
     }
   };
-  if (is_a<GiNaC::mul>(term)) {
-    for (std::size_t i = 0; i < term.nops(); ++i) {
-      factor(term.op(i));
-    }
-  } else {
-    factor(term);
-  }
+  sym::for_each_factor(term, factor);
   if (!f || k.is_zero() || !k.is_real()) {
     return std::nullopt;
   }
