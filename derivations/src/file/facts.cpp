@@ -842,7 +842,7 @@ std::optional<bool> reaches(const ex& f, const ex& v, const Facts::End& from, co
   for (const ex& angle : angles) {
     const std::optional<GiNaC::numeric> base = value_in_40_digits(angle);
     if (!base || !base->is_real()) {
-      return std::nullopt;  // (asin of a v just past 1 in 40 digits)
+      return std::nullopt;  // |v| > 1: sin and cos never reach it, which their ranges show
     }
     const auto first = static_cast<long>(std::floor((from_value - *base).to_double() / step)) - 1;
     const auto last = static_cast<long>(std::ceil((to_value - *base).to_double() / step)) + 1;
@@ -874,16 +874,16 @@ Sign Facts::of_wave_zeros(const ex& e) const {
     return Sign::unknown;
   }
   std::optional<std::pair<GiNaC::numeric, ex>> wave;
-  std::size_t at = 0;
-  for (; at < e.nops() && !wave; ++at) {
-    wave = scaled_function(e.op(at), {"sin", "cos", "tan"});
+  std::size_t at = 0;  // the term that is k f(…)
+  while (at < e.nops() && !(wave = scaled_function(e.op(at), {"sin", "cos", "tan"}))) {
+    ++at;
   }
   if (!wave) {
     return Sign::unknown;
   }
   ex b = 0;  // the other terms, each a real number
   for (std::size_t i = 0; i < e.nops(); ++i) {
-    if (i + 1 == at) {
+    if (i == at) {
       continue;
     }
     const std::optional<GiNaC::numeric> value = value_in_40_digits(e.op(i));
@@ -910,9 +910,6 @@ Sign Facts::of_wave_zeros(const ex& e) const {
   const std::optional<GiNaC::numeric> to_value = value_in_40_digits(to.at);
   if (!v_value || !from_value || !to_value || !v_value->is_real()) {
     return Sign::unknown;
-  }
-  if (!function_named(f, "tan") && abs(*v_value) > 1 + GiNaC::numeric("1e-20")) {
-    return Sign::nonzero;  // sin and cos never reach it (v = 1 in 40 digits may be 1 exactly)
   }
   const std::optional<bool> zero = reaches(f, v, from, to, *from_value, *to_value);
   return zero && !*zero ? Sign::nonzero : Sign::unknown;
