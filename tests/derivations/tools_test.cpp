@@ -8,6 +8,7 @@
 
 #include "derivations/check.hpp"
 #include "file/decide.hpp"
+#include "file/facts.hpp"
 #include "file/time.hpp"
 #include "numeric.hpp"
 #include "symbolic.hpp"
@@ -192,4 +193,32 @@ TEST_CASE("exact_quotient: the quick no before the division agrees with GiNaC's 
   }
   CHECK(quick > 30);      // the quick no's case was met often enough to mean something,
   CHECK(remainder > 30);  // and the division's no after the powers passed
+}
+
+TEST_CASE("Facts at a point of doubles: each symbol's own sign, its bounds and the relations",
+          "[tools]") {
+  namespace file = impulse::derivations::file;
+  const GiNaC::symbol x("x");
+  const GiNaC::symbol e("e");
+  const GiNaC::symbol m("m");
+  file::Facts facts;
+  facts.add(x, file::Sign::positive);     // x > 0
+  facts.add(e, file::Sign::nonnegative);  // 0 ≤ e ≤ 1
+  facts.add_relation(e - 1, file::Sign::nonpositive);
+  const std::vector<GiNaC::ex> symbols{x, e, m};
+  // Every fact holds: m is free.
+  CHECK(facts.satisfied_numerically(symbols, {2.0, 0.5, -3.0}));
+  CHECK(facts.satisfied_numerically(symbols, {1e-12, 0.0, 3.0}));  // e at its closed end
+  CHECK(facts.satisfied_numerically(symbols, {2.0, 1.0, 0.0}));
+  // A symbol against its own sign, with every relation holding: x = -1 (x > 0), e = -0.5.
+  CHECK_FALSE(facts.satisfied_numerically(symbols, {-1.0, 0.5, 1.0}));
+  CHECK_FALSE(facts.satisfied_numerically(symbols, {0.0, 0.5, 1.0}));
+  CHECK_FALSE(facts.satisfied_numerically(symbols, {2.0, -0.5, 1.0}));
+  // Past a bound: e = 1.5 > 1.
+  CHECK_FALSE(facts.satisfied_numerically(symbols, {2.0, 1.5, 1.0}));
+  // A fact on a symbol alone, no relation at all, is still judged.
+  file::Facts signs_only;
+  signs_only.add(x, file::Sign::negative);
+  CHECK(signs_only.satisfied_numerically({x}, {-0.3}));
+  CHECK_FALSE(signs_only.satisfied_numerically({x}, {0.3}));
 }

@@ -1530,8 +1530,30 @@ bool Facts::satisfied(const GiNaC::exmap& point) const {
   return true;
 }
 
+namespace {
+
+// Whether a value has a sign, a strict sign only beyond @p clear.
+bool has_sign(double v, Sign sign, double clear) {
+  return sign == Sign::positive      ? v > clear
+         : sign == Sign::negative    ? v < -clear
+         : sign == Sign::nonnegative ? v >= 0
+         : sign == Sign::nonpositive ? v <= 0
+         : sign == Sign::nonzero     ? std::abs(v) > clear
+                                     : true;
+}
+
+}  // namespace
+
 bool Facts::satisfied_numerically(const std::vector<ex>& symbols,
                                   const std::vector<double>& values) const {
+  // Each symbol's own sign, as Facts::satisfied asks of a number (its bounds are relations): the
+  // sampler draws a symbol by its sign and the solver keeps the roots that have it; this holds it
+  // whatever drew the point.
+  for (std::size_t i = 0; i < symbols.size(); ++i) {
+    if (!has_sign(values[i], of_symbol(symbols[i]), 0.0)) {
+      return false;
+    }
+  }
   if (relations_.empty() && equalities_.empty()) {
     return true;
   }
@@ -1552,16 +1574,7 @@ bool Facts::satisfied_numerically(const std::vector<ex>& symbols,
   constexpr double clear = 1e-9;
   for (const auto& [r, sign] : relations_) {
     const auto v = value_of(r);
-    if (!v) {
-      continue;
-    }
-    const bool ok = sign == Sign::positive      ? *v > clear
-                    : sign == Sign::negative    ? *v < -clear
-                    : sign == Sign::nonnegative ? *v >= 0
-                    : sign == Sign::nonpositive ? *v <= 0
-                    : sign == Sign::nonzero     ? std::abs(*v) > clear
-                                                : true;
-    if (!ok) {
+    if (v && !has_sign(*v, sign, clear)) {
       return false;
     }
   }

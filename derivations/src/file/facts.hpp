@@ -65,7 +65,8 @@ class Facts {
   /// Whether a point (every symbol of the facts it names) satisfies the facts on expressions
   /// and the equalities; symbols the point does not give are not judged.
   [[nodiscard]] bool satisfied(const GiNaC::exmap& point) const;
-  /// The same at a point of doubles (equalities within a relative 1e-9).
+  /// The same at a point of doubles (equalities within a relative 1e-9), and the sign of each
+  /// symbol of the point.
   [[nodiscard]] bool satisfied_numerically(const std::vector<GiNaC::ex>& symbols,
                                            const std::vector<double>& values) const;
   /// The bounds of a symbol as the facts write them (π/6, not its double), [low, high] (either
