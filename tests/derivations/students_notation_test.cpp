@@ -618,11 +618,12 @@ TEST_CASE("Students' facts: a symbol with a range is drawn over it and at its cl
   CHECK(theta->x <= 1.571);
   CHECK(verdicts("assume: -\\pi/2 \\le \\theta \\le \\pi/2\n\n$$v = \\arcsin(\\sin\\theta)$$\n\n"
                  "$$v = \\theta$$") == std::vector<std::string>{"premise", "follows"});
-  // An end from the symbol's sign: 0 ≤ θ ≤ 2 is a sign and a bound; θ = 2 (or any past π/2)
-  // refutes it. And the sign keeps the draws on its side of a looser bound: with x ≥ 0 and
+  // An end from the symbol's sign: 0 ≤ θ ≤ 1.571 is a sign and a bound, and the closed end 1.571
+  // refutes it (with the low end taken from the bounds alone, θ had none and was drawn by its
+  // sign: undecided). And the sign keeps the draws on its side of a looser bound: with x ≥ 0 and
   // -1 < x < 2, |x| = x holds; drawn over (-1, 2), x < 0 made the numeric method disagree with
   // the exact one (undecided).
-  CHECK(verdicts("assume: 0 \\le \\theta \\le 2\n\n$$v = \\arcsin(\\sin\\theta)$$\n\n"
+  CHECK(verdicts("assume: 0 \\le \\theta \\le 1.571\n\n$$v = \\arcsin(\\sin\\theta)$$\n\n"
                  "$$v = \\theta$$") == std::vector<std::string>{"premise", "does-not-follow"});
   CHECK(verdicts("assume: x \\ge 0, -1 < x < 2\n\n$$v = |x|$$\n\n$$v = x$$") ==
         std::vector<std::string>{"premise", "follows"});
