@@ -56,6 +56,44 @@ TEST_CASE("Students' displays: \\[ \\], environments, ```math; the rest refused"
   refused("$$a = b$$\n\n\\[ a = 2b\n", 3, 1, "closed by \\]");
 }
 
+TEST_CASE("Students' inline math: an equation alone on its line is not checked, and said so",
+          "[derivations][students-notation]") {
+  // The contract reads no inline math; an equation that stands alone on its line in it reads like
+  // a display meant to be checked, so the report names it (line and column counted by hand).
+  const auto notes = [](const std::string& text) {
+    const d::DerivationReport report = d::check_derivation(text, "student.md", pinned_options());
+    std::vector<std::string> found;
+    for (const d::FileNote& n : report.notes) {
+      found.push_back(std::to_string(n.line) + ":" + std::to_string(n.column) + " " + n.written);
+    }
+    return found;
+  };
+  const std::string after = "\n\n$$y = x/2$$\n";
+  CHECK(notes("# Notes\n\n$x = 2 y$" + after) == std::vector<std::string>{"3:1 $x = 2 y$"});
+  CHECK(notes("\\(x = 2 y\\)" + after) == std::vector<std::string>{"1:1 \\(x = 2 y\\)"});
+  // As a list item, indented, before a full stop; two of them.
+  CHECK(notes("- $m_1 = 2$\n  1. $v = 3$.\n" + after) ==
+        std::vector<std::string>{"1:3 $m_1 = 2$", "2:6 $v = 3$"});
+  // Not an equation alone on its line: a sentence, a symbol, two pieces, a relation, a display,
+  // inline math in a code span or inside a display's text.
+  CHECK(
+      notes("Here $x = 2 y$ holds.\n$v$\n$a = 1$ and $b = 2$\n$x > 0$\n`$x = 1$`" + after).empty());
+  CHECK(notes("$$x = 2 y$$\n\n$$y = x/2$$\n").empty());
+  // The note changes nothing else: the equations and their verdicts are those without the line.
+  CHECK(verdicts("$x = 2 y$\n\n$$y = x/2$$\n\n$$y = x$$\n") ==
+        std::vector<std::string>{"premise", "does-not-follow"});
+  // The reports say it: the text names the line, the JSON has the note (and no "notes" key when
+  // there is none).
+  const d::DerivationReport report =
+      d::check_derivation("$x = 2 y$" + after, "student.md", pinned_options());
+  CHECK_THAT(d::render(report, d::Format::text, false),
+             Catch::Contains("Note, line 1: $x = 2 y$ is not checked: inline math is not read"));
+  CHECK_THAT(d::render(report, d::Format::json, false), Catch::Contains("\"notes\": ["));
+  CHECK_THAT(d::render(d::check_derivation("$$y = x/2$$\n", "student.md", pinned_options()),
+                       d::Format::json, false),
+             !Catch::Contains("notes"));
+}
+
 TEST_CASE("Students' arrows, annotations and separators inside a display",
           "[derivations][students-notation]") {
   CHECK(verdicts("$$a = b \\Rightarrow a - b = 0$$") ==

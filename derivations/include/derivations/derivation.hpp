@@ -131,10 +131,20 @@ struct TaskResult {
   std::string reason;
 };
 
+/// @brief Something the file holds that is not checked and that its writer may have meant to be:
+/// an equation in inline math on a line of its own.
+struct FileNote {
+  std::size_t line = 0;    ///< 1-based line in the file
+  std::size_t column = 0;  ///< 1-based column (characters) where it begins
+  std::string written;     ///< what stands there, as written
+  std::string text;        ///< what the checker did with it, and how to have it checked
+};
+
 /// @brief A checked derivation file.
 struct DerivationReport {
   std::string file;                       ///< how the file was named
   std::vector<EquationResult> equations;  ///< in the file's order
+  std::vector<FileNote> notes;            ///< in the file's order
   std::size_t counts[7] = {};             ///< per verdict, in the order of all_verdicts
   double seconds = 0.0;                   ///< wall time of the check
   std::optional<TaskResult> task;         ///< checked against a task: what it made of it

@@ -40,9 +40,17 @@ DerivationReport checked(std::string text, const std::string& file_name,
   try {
     const file::Source source(std::move(text), limits);
     file::Reader reader(source, limits);
-    const std::vector<file::Equation> equations = reader.read().equations;
+    file::ReadFile read = reader.read();
+    const std::vector<file::Equation> equations = std::move(read.equations);
     DerivationReport report;
     report.file = file_name;
+    for (const file::LoneInline& lone : read.lone_inline) {
+      const file::Place place = source.place(lone.offset);
+      report.notes.push_back(
+          {place.line, place.column, std::string(lone.written),
+           "not checked: inline math is not read, so this equation is neither a premise nor a "
+           "step; write it between $$ and $$ to have it checked"});
+    }
     file::Checker checker(reader.symbols(), options);
     for (std::size_t i = 0; i < equations.size(); ++i) {
       const auto begin = std::chrono::steady_clock::now();

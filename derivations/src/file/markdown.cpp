@@ -72,7 +72,62 @@ class Scanner {
     if (directive_at(start, end)) {
       return next_line(end);
     }
+    lone_inline(start, end);
     return prose(start);
+  }
+
+  // A line that is nothing but inline math holding an equation: `$v = u + a t$` or
+  // `\(v = u + a t\)`, perhaps after a list's mark ("- ", "* ", "1. ") and before a full stop,
+  // comma, semicolon or colon. Inline math is not read; this one is listed, to be reported.
+  void lone_inline(std::size_t start, std::size_t end) {
+    std::size_t i = start;
+    while (i < end && blank(text_[i])) {
+      ++i;
+    }
+    if (i + 1 < end && (text_[i] == '-' || text_[i] == '*' || text_[i] == '+') &&
+        blank(text_[i + 1])) {
+      i += 2;
+    } else {
+      std::size_t digits = i;
+      while (digits < end && std::isdigit(static_cast<unsigned char>(text_[digits])) != 0) {
+        ++digits;
+      }
+      if (digits > i && digits + 1 < end && (text_[digits] == '.' || text_[digits] == ')') &&
+          blank(text_[digits + 1])) {
+        i = digits + 2;
+      }
+    }
+    while (i < end && blank(text_[i])) {
+      ++i;
+    }
+    const std::string_view line = std::string_view(text_).substr(i, end - i);
+    const bool dollar = line.starts_with('$') && !line.starts_with("$$");
+    if (!dollar && !line.starts_with("\\(")) {
+      return;
+    }
+    const std::string_view closing = dollar ? "$" : "\\)";
+    const std::size_t open_length = dollar ? 1 : 2;
+    const std::size_t close = line.find(closing, open_length);
+    if (close == std::string_view::npos || close == open_length) {
+      return;
+    }
+    const std::string_view math = line.substr(open_length, close - open_length);
+    std::string_view rest = line.substr(close + closing.size());
+    while (!rest.empty() && blank(rest.back())) {
+      rest.remove_suffix(1);
+    }
+    if (rest.size() > 1 ||
+        (rest.size() == 1 && std::string_view(".,;:").find(rest[0]) == std::string_view::npos)) {
+      return;
+    }
+    if (math.find('=') == std::string_view::npos || math.find('$') != std::string_view::npos ||
+        (dollar && math.back() == '\\')) {
+      return;
+    }
+    if (lone_ < limits_.equations) {  // the first ones, as many as display blocks may be
+      items_.push_back(LoneInline{i, line.substr(0, close + closing.size())});
+      ++lone_;
+    }
   }
 
   std::size_t line_end(std::size_t i) const {
@@ -134,7 +189,7 @@ class Scanner {
   }
 
   void add_block(std::size_t open, std::size_t content, std::size_t close) {
-    if (items_.size() >= limits_.equations) {
+    if (items_.size() - lone_ >= limits_.equations) {
       throw source_.error(open, "expected at most " + std::to_string(limits_.equations) +
                                     " display blocks in one file (this checker's limit)");
     }
@@ -379,6 +434,7 @@ class Scanner {
   const std::string& text_;
   const Limits& limits_;
   std::vector<Item> items_;
+  std::size_t lone_ = 0;  // how many of items_ are LoneInline
 };
 
 }  // namespace

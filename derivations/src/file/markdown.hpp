@@ -4,7 +4,8 @@
 // environments equation, align, gather, multline (and their starred forms) outside $$, or a
 // fenced ```math block; a display written any other way (\begin{eqnarray}, …) is refused at its
 // line. Prose, inline math, code and HTML comments are skipped (a $$ inside a code span, a
-// fenced code block or a comment is not a display block).
+// fenced code block or a comment is not a display block); a line that is an equation in inline
+// math alone is listed, to be reported as not checked.
 #pragma once
 
 #include <cstddef>
@@ -66,7 +67,15 @@ struct Block {
   std::string_view content;        ///< up to the closing `$$`
 };
 
-using Item = std::variant<Directive, Block>;
+/// A line of prose that is nothing but an equation in inline math (`$x = 2 y$`, `\(x = 2 y\)`,
+/// perhaps as a list item or before a full stop): not read, as inline math is not, but reported,
+/// since it reads like a display the writer meant to be checked.
+struct LoneInline {
+  std::size_t offset = 0;    ///< where the opening `$` or `\(` stands
+  std::string_view written;  ///< the inline math with its delimiters
+};
+
+using Item = std::variant<Directive, Block, LoneInline>;
 
 /// The directives and display blocks of @p source, in order. Throws ReadError for a block that
 /// is never closed, a fenced code block or comment never closed, or more display blocks than

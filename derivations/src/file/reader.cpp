@@ -75,6 +75,8 @@ ReadFile Reader::read() {
   for (const Item& item : read_markdown(source_, limits_)) {
     if (const auto* directive = std::get_if<Directive>(&item)) {
       read_directive(*directive);
+    } else if (const auto* lone = std::get_if<LoneInline>(&item)) {
+      lone_inline_.push_back(*lone);
     } else if (group_open_ && groups_.back().kind == Kind::claim &&
                awaiting_ == Awaiting::statement) {
       read_claim(std::get<Block>(item));
@@ -102,7 +104,7 @@ ReadFile Reader::read() {
     throw source_.error(source_.text().size(),
                         "expected a display equation ($$ … $$): the file has none");
   }
-  return {std::move(equations_), std::move(groups_), std::move(targets_)};
+  return {std::move(equations_), std::move(groups_), std::move(targets_), std::move(lone_inline_)};
 }
 
 bool Reader::used_scalar(const SymbolName& name) const {

@@ -82,7 +82,8 @@ struct Group {
 struct ReadFile {
   std::vector<Equation> equations;
   std::vector<Group> groups;
-  std::vector<Equation> targets;  ///< the equations of the block after target: (a task file)
+  std::vector<Equation> targets;        ///< the equations of the block after target: (a task file)
+  std::vector<LoneInline> lone_inline;  ///< equations in inline math on lines of their own
 };
 
 /// Reads a derivation file (throws ReadError at the first place not understood). Its parts:
@@ -157,6 +158,7 @@ class Reader {
   std::vector<Equation> equations_;
   std::vector<Group> groups_;
   std::vector<Equation> targets_;
+  std::vector<LoneInline> lone_inline_;
   std::map<std::string, std::vector<std::size_t>> tags_;
   std::set<std::string> used_;
   std::optional<std::size_t> given_;

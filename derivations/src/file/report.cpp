@@ -102,6 +102,16 @@ std::string pad(std::string text, std::size_t width) {
   return text;
 }
 
+// The report's notes, a line each, and a blank line after them.
+std::string notes_text(const DerivationReport& r, bool colour) {
+  std::string text;
+  for (const FileNote& n : r.notes) {
+    const std::string head = "Note, line " + std::to_string(n.line) + ": ";
+    text += (colour ? "\033[33m" + head + "\033[0m" : head) + n.written + " is " + n.text + "\n";
+  }
+  return text.empty() ? text : text + "\n";
+}
+
 std::string render_text(const DerivationReport& r, bool colour) {
   const auto paint = [&](const std::string& text, const char* code) {
     return colour ? std::string(code) + text + "\033[0m" : text;
@@ -167,6 +177,7 @@ std::string render_text(const DerivationReport& r, bool colour) {
     }
   }
   out << "\n";
+  out << notes_text(r, colour);
   if (first_failure) {
     out << paint("First failing line: " + std::to_string(*first_failure), "\033[1;31m") << "\n";
   } else if (r.count(Verdict::follows_if) > 0) {
@@ -224,6 +235,9 @@ std::string render_markdown(const DerivationReport& r) {
     out << "| " << e.line << " | " << (fails ? "**" : "") << to_string(e.verdict)
         << (fails ? "**" : "") << " | $" << escape_markdown(e.latex) << "$ | "
         << escape_markdown(details) << " |\n";
+  }
+  for (const FileNote& n : r.notes) {
+    out << "\n- Note, line " << n.line << ": `" << n.written << "` is " << n.text << "\n";
   }
   if (r.count(Verdict::follows_if) > 0 && exit_status(r) == 0) {
     out << "\nEvery step follows, but " << conditional_text(r) << "\n";
@@ -304,6 +318,15 @@ std::string render_json(const DerivationReport& r) {
     equations.push_back(std::move(j));
   }
   root["equations"] = std::move(equations);
+  if (!r.notes
+           .empty()) {  // (the key only where there are notes: reports without stay as they were)
+    ordered_json notes = ordered_json::array();
+    for (const FileNote& n : r.notes) {
+      notes.push_back(
+          {{"line", n.line}, {"column", n.column}, {"written", n.written}, {"text", n.text}});
+    }
+    root["notes"] = std::move(notes);
+  }
   ordered_json summary;
   for (const Verdict v : all_verdicts) {
     summary[std::string(to_string(v))] = r.count(v);
@@ -416,6 +439,14 @@ std::string render_rows_text(const std::vector<FileRow>& rows, bool markdown) {
       equations = std::to_string(row.report->equations.size());
       const auto f = first_failing(*row.report);
       first = f ? std::to_string(*f) : "-";
+      if (!row.report->notes.empty()) {
+        std::vector<std::size_t> lines;
+        for (const FileNote& n : row.report->notes) {
+          lines.push_back(n.line);
+        }
+        verdicts += "; not checked: inline math at line" +
+                    std::string(lines.size() == 1 ? " " : "s ") + lines_text(lines);
+      }
       if (row.report->task) {
         task = row.report->task->target_reached
                    ? "target reached at line " + std::to_string(row.report->task->line.value_or(0))
