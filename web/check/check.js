@@ -336,6 +336,7 @@
       $('summary').textContent = 'Nothing is checked until the file can be read: ' +
                                  (answer.line > 0 ? `see line ${answer.line} in the editor.` : answer.error);
       $('equations').innerHTML = '';
+      showNotes([]);
     } else {
       state.report = JSON.parse(answer.result);
       showReport(state.report, answer.seconds);
@@ -347,6 +348,18 @@
     times.answers.push({changed: asked.changedAt, sent: asked.started, shown: performance.now(),
                         worker: answer.seconds * 1000});
     document.body.dataset.ready = 'true';
+  }
+
+  // What the file holds that is not checked (an equation in inline math on a line of its own), as
+  // the report's notes say it.
+  function showNotes(notes) {
+    const list = $('notes');
+    list.replaceChildren(...notes.map((n) => {
+      const item = document.createElement('li');
+      item.innerHTML = `Line ${n.line}: <code>${escapeHtml(n.written)}</code> is ${escapeHtml(n.text)}.`;
+      return item;
+    }));
+    list.hidden = notes.length === 0;
   }
 
   function showReport(report, seconds) {
@@ -363,6 +376,7 @@
       (first ? ` <a href="#" class="first-failure-link" data-line="${first.line}">The first that does not ` +
                `pass: line ${first.line}</a>.` : ' Every step passes.');
     status(`Checked in ${seconds.toFixed(2)} s${first ? `; the first equation that does not pass is on line ${first.line}` : ''}.`);
+    showNotes(report.notes || []);
     const list = $('equations');
     list.replaceChildren();  // first, so that each formula typeset before can move into the new list
     list.append(...report.equations.map((e) => equationItem(e, e === first)));

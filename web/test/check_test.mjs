@@ -426,6 +426,19 @@ const groups = {
     await p.waitFor(`Number(document.body.dataset.shown) > ${before} && document.body.dataset.ready === "true"`, 30000);
     checkAgainstCommandLine(await pageState(p), commandLine(binary), 'check.html', 'a file that is not UTF-8');
 
+    // An equation in inline math on a line of its own: not checked, and the page says so, as the
+    // command line's report does (its notes).
+    const lone = join(scratch, 'lone-inline.md');
+    writeFileSync(lone, '# Notes\n\n$x = 2 y$\n\n$$y = x/2$$\n\n$$x = 2 y$$\n');
+    before = await shown(p);
+    await p.send('DOM.setFileInputFiles', {nodeId, files: [lone]});
+    await p.waitFor(`Number(document.body.dataset.shown) > ${before} && document.body.dataset.ready === "true"`, 30000);
+    checkAgainstCommandLine(await pageState(p), commandLine(lone), 'check.html', 'an equation in inline math alone');
+    const notes = await p.evaluate(`(() => { const l = document.getElementById('notes');
+      return {hidden: l.hidden, items: [...l.querySelectorAll('li')].map((i) => i.textContent)}; })()`);
+    check(!notes.hidden && notes.items.length === 1 && notes.items[0].startsWith('Line 3: $x = 2 y$ is not checked'),
+          'the equation in inline math is listed as not checked', JSON.stringify(notes));
+
     // The text downloaded: the file opened, byte for byte.
     await p.send('DOM.setFileInputFiles', {nodeId, files: [opened]});
     await p.waitFor(`document.getElementById('example').value === 'c-spinning-body' && document.body.dataset.ready === "true"`, 30000);
