@@ -120,8 +120,7 @@ class Scanner {
         (rest.size() == 1 && std::string_view(".,;:").find(rest[0]) == std::string_view::npos)) {
       return;
     }
-    if (math.find('=') == std::string_view::npos || math.find('$') != std::string_view::npos ||
-        (dollar && math.back() == '\\')) {
+    if (math.find('=') == std::string_view::npos || (dollar && math.back() == '\\')) {
       return;
     }
     if (lone_ < limits_.equations) {  // the first ones, as many as display blocks may be
