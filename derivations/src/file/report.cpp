@@ -318,8 +318,8 @@ std::string render_json(const DerivationReport& r) {
     equations.push_back(std::move(j));
   }
   root["equations"] = std::move(equations);
-  if (!r.notes
-           .empty()) {  // (the key only where there are notes: reports without stay as they were)
+  // The key only where there are notes: reports without them stay as they were.
+  if (!r.notes.empty()) {
     ordered_json notes = ordered_json::array();
     for (const FileNote& n : r.notes) {
       notes.push_back(
