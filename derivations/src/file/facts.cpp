@@ -70,6 +70,15 @@ namespace {
 bool strict(Sign s) {
   return s == Sign::positive || s == Sign::negative;
 }
+// Whether a number has a sign (unknown: any number has it).
+bool has_sign(const GiNaC::numeric& v, Sign sign) {
+  return sign == Sign::positive      ? v.is_positive()
+         : sign == Sign::negative    ? v.is_negative()
+         : sign == Sign::nonnegative ? !v.is_negative()
+         : sign == Sign::nonpositive ? !v.is_positive()
+         : sign == Sign::nonzero     ? !v.is_zero()
+                                     : true;
+}
 bool at_least_zero(Sign s) {
   return s == Sign::positive || s == Sign::nonnegative || s == Sign::zero;
 }
@@ -1377,26 +1386,7 @@ bool Facts::strict_bound(const ex& symbol, bool high) const {
 }
 
 bool Facts::satisfied(const ex& symbol, const GiNaC::numeric& value) const {
-  bool ok = true;
-  switch (of_symbol(symbol)) {
-    case Sign::positive:
-      ok = value.is_positive();
-      break;
-    case Sign::negative:
-      ok = value.is_negative();
-      break;
-    case Sign::nonnegative:
-      ok = !value.is_negative();
-      break;
-    case Sign::nonpositive:
-      ok = !value.is_positive();
-      break;
-    case Sign::nonzero:
-      ok = !value.is_zero();
-      break;
-    default:
-      break;
-  }
+  bool ok = has_sign(value, of_symbol(symbol));
   if (const auto found = bounds_.find(symbol); ok && found != bounds_.end()) {
     const double v = value.to_double();
     const auto [low_strict, high_strict] = strict_.at(symbol);
@@ -1429,13 +1419,7 @@ bool Facts::relations_hold(const GiNaC::exmap& at, bool all_judged) const {
       }
       continue;
     }
-    const bool ok = sign == Sign::positive      ? v->is_positive()
-                    : sign == Sign::negative    ? v->is_negative()
-                    : sign == Sign::nonnegative ? !v->is_negative()
-                    : sign == Sign::nonpositive ? !v->is_positive()
-                    : sign == Sign::nonzero     ? !v->is_zero()
-                                                : true;
-    if (!ok) {
+    if (!has_sign(*v, sign)) {
       return false;
     }
   }
@@ -1532,7 +1516,8 @@ bool Facts::satisfied(const GiNaC::exmap& point) const {
 
 namespace {
 
-// Whether a value has a sign, a strict sign only beyond @p clear.
+// Whether a double has a sign, a strict sign only beyond @p clear (has_sign of a number, above,
+// with rounding allowed for).
 bool has_sign(double v, Sign sign, double clear) {
   return sign == Sign::positive      ? v > clear
          : sign == Sign::negative    ? v < -clear
