@@ -36,8 +36,11 @@ struct Implication {
   };
   Outcome outcome = Outcome::unknown;
   std::vector<GiNaC::ex> conditions;  ///< holds_if: each must not be zero
-  bool conditions_needed = true;      ///< whether every condition was shown to be needed
-  GiNaC::ex residual;                 ///< fails, unknown: the target once the premises are used
+  /// holds_if: symbols that must be positive besides (where the rules of logarithms need them:
+  /// \ln(a b) = \ln a + \ln b for a, b > 0), which the facts do not give
+  std::vector<GiNaC::ex> positive;
+  bool conditions_needed = true;  ///< whether every condition was shown to be needed
+  GiNaC::ex residual;             ///< fails, unknown: the target once the premises are used
   /// fails: exact values of every symbol; holds_if, when one was found: values where a
   /// condition is zero, the premises and the facts hold and the target does not
   std::optional<GiNaC::exmap> point;

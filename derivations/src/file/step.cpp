@@ -367,7 +367,10 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
   } else {
     forward = exact(before, step, e.facts, budget);
   }
-  const NumericOpinion opinion = numeric(before, step, forward, e.facts, index, budget);
+  NumericOpinion opinion = numeric(before, step, forward, e.facts, index, budget);
+  if (forward.implication.outcome == Implication::Outcome::unknown && !opinion.counterexample) {
+    positive_reading(before, step, e.facts, index, budget, forward, opinion);
+  }
   r.numeric_points = opinion.points;
   r.numeric_worst = opinion.worst;
   if (multiple && !opinion.counterexample) {
@@ -660,6 +663,82 @@ Checker::Forward Checker::exact(const Scalars& given_before, const Scalars& give
     }
   }
   return forward;
+}
+
+namespace {
+
+// The symbols in the arguments of the logarithms of @p e, each once, in the order found.
+void logarithm_symbols(const ex& e, std::vector<ex>& out) {
+  if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "log") {
+    for (const ex& s : symbols_of(e.op(0))) {
+      if (std::none_of(out.begin(), out.end(), [&](const ex& o) { return o.is_equal(s); })) {
+        out.push_back(s);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    logarithm_symbols(e.op(i), out);
+  }
+}
+
+// At most this many symbols are assumed positive for a logarithm's rules: a condition on more
+// says little a reader can use.
+constexpr std::size_t most_positive_symbols = 4;
+
+}  // namespace
+
+// A step the exact method could not decide, whose logarithms' arguments hold symbols the facts
+// do not keep positive (\ln(a b) then \ln a + \ln b; \ln x^2 then 2 \ln x): decided again
+// as if the file assumed them positive. Where it then holds, the verdict is follows-if with those
+// signs as the condition, and the numeric opinion is taken at points that keep them. (Where one
+// of them is negative, a logarithm of the step or the equations before often has no real value;
+// whether the condition is needed is not decided.) Returns whether it did.
+bool Checker::positive_reading(const Scalars& before, const Scalars& step, const Facts& facts,
+                               std::size_t index, const Budget& budget, Forward& forward,
+                               NumericOpinion& opinion) {
+  std::vector<ex> found;
+  for (const Scalars* s : {&before, &step}) {
+    for (const std::vector<ex>* list : {&s->differences, &s->denominators}) {
+      for (const ex& d : *list) {
+        logarithm_symbols(d, found);
+      }
+    }
+  }
+  Facts with = facts;
+  std::vector<ex> assumed;
+  for (const ex& s : found) {
+    if (facts.of_symbol(s) == Sign::positive) {
+      continue;
+    }
+    if (!with.add(s, Sign::positive)) {
+      return false;  // the facts keep it from being positive: no such reading
+    }
+    assumed.push_back(s);
+  }
+  if (assumed.empty() || assumed.size() > most_positive_symbols) {
+    return false;
+  }
+  Forward positive = exact(before, step, with, budget);
+  using O = Implication::Outcome;
+  if (positive.implication.outcome != O::holds && positive.implication.outcome != O::holds_if) {
+    return false;
+  }
+  Implication& i = positive.implication;
+  i.outcome = O::holds_if;
+  i.positive = assumed;
+  i.conditions_needed = false;
+  i.point.reset();
+  std::string signs;
+  for (const ex& s : assumed) {
+    signs += (signs.empty() ? "" : ", ") + relation_latex(latex_of(s), Sign::positive);
+  }
+  i.how = (i.how.empty() ? std::string("it holds once the equations before are used") : i.how) +
+          " where " + signs +
+          " (the rules of logarithms hold for positive arguments; the facts do not give these "
+          "signs: assume them where they hold)";
+  forward = positive;
+  opinion = numeric(before, step, forward, with, index, budget);
+  return true;
 }
 
 namespace {
@@ -1106,13 +1185,21 @@ void Checker::condition(const Implication& forward, const Scalars& before, const
     }
     latex.push_back(text + " \\neq 0");
   }
-  product = sym::up_to_sign(product);  // its sign does not matter: one form in every run
+  std::string plain;
+  if (!forward.conditions.empty()) {
+    product = sym::up_to_sign(product);  // its sign does not matter: one form in every run
+    plain = plain_of(product) + " != 0";
+  }
+  for (const ex& s : forward.positive) {
+    latex.push_back(relation_latex(latex_of(s), Sign::positive));
+    plain += (plain.empty() ? "" : ", ") + plain_of(s) + " > 0";
+  }
   std::string joined;
   for (const std::string& l : latex) {
     joined += (joined.empty() ? "" : ", \\quad ") + l;
   }
   r.condition = joined;
-  r.condition_text = plain_of(product) + " != 0";
+  r.condition_text = plain;
 }
 
 bool Checker::follows(const std::vector<const Equation*>& premises, const Equation& target,
