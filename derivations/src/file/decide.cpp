@@ -1572,6 +1572,42 @@ class Decider {
         return false;
       }
     }
+    // Every root and logarithm real there: at a = b = -1, GiNaC's √a √b is i i = -1, and
+    // √(a b) = √a √b "failed" at a point where its right side has no real value.
+    for (const std::vector<ex>* list :
+         {&problem_.premises, &problem_.premise_denominators, &problem_.target_denominators}) {
+      for (const ex& e : *list) {
+        if (!real_at(e, point)) {
+          return false;
+        }
+      }
+    }
+    return real_at(problem_.target, point);
+  }
+
+  // Whether each even root and each logarithm in @p e has a real value at the point: the root's
+  // base is not negative, the logarithm's argument is positive. (An odd root of a negative number
+  // is real: by_facts writes it as the real root.)
+  static bool real_at(const ex& e, const GiNaC::exmap& point) {
+    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+      const bool even_root = is_a<GiNaC::power>(*it) && is_a<numeric>(it->op(1)) &&
+                             !it->op(1).info(GiNaC::info_flags::integer) &&
+                             GiNaC::ex_to<numeric>(it->op(1)).denom().is_even();
+      const bool logarithm =
+          is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == "log";
+      if (!even_root && !logarithm) {
+        continue;
+      }
+      const ex exact = GiNaC::normal(it->op(0).subs(point));
+      const ex v = is_a<numeric>(exact) ? exact : GiNaC::evalf(exact);
+      if (!is_a<numeric>(v) || !GiNaC::ex_to<numeric>(v).is_real()) {
+        return false;
+      }
+      const numeric n = GiNaC::ex_to<numeric>(v);
+      if (n.is_negative() || (logarithm && n.is_zero())) {
+        return false;
+      }
+    }
     return true;
   }
 

@@ -36,9 +36,9 @@ struct Implication {
   };
   Outcome outcome = Outcome::unknown;
   std::vector<GiNaC::ex> conditions;  ///< holds_if: each must not be zero
-  /// holds_if: symbols that must be positive besides (where the rules of logarithms need them:
-  /// \ln(a b) = \ln a + \ln b for a, b > 0), which the facts do not give
-  std::vector<GiNaC::ex> positive;
+  /// holds_if: signs that symbols must have besides, which the facts do not give (where the rules
+  /// of roots and logarithms need them: \ln(a b) = \ln a + \ln b for a, b > 0)
+  std::vector<std::pair<GiNaC::ex, Sign>> signs;
   bool conditions_needed = true;  ///< whether every condition was shown to be needed
   GiNaC::ex residual;             ///< fails, unknown: the target once the premises are used
   /// fails: exact values of every symbol; holds_if, when one was found: values where a

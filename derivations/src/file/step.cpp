@@ -369,7 +369,7 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
   }
   NumericOpinion opinion = numeric(before, step, forward, e.facts, index, budget);
   if (forward.implication.outcome == Implication::Outcome::unknown && !opinion.counterexample) {
-    positive_reading(before, step, e.facts, index, budget, forward, opinion);
+    domain_reading(before, step, e.facts, index, budget, forward, opinion);
   }
   r.numeric_points = opinion.points;
   r.numeric_worst = opinion.worst;
@@ -667,76 +667,113 @@ Checker::Forward Checker::exact(const Scalars& given_before, const Scalars& give
 
 namespace {
 
-// The symbols in the arguments of the logarithms of @p e, each once, in the order found.
-void logarithm_symbols(const ex& e, std::vector<ex>& out) {
-  if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "log") {
+// Whether @p e is a product of symbols and their powers, times a positive number (2 g h, k/m,
+// x^3): then the signs of its symbols give its own. Of a - b, the signs of a and b say nothing.
+bool signed_by_symbols(const ex& e) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    return true;
+  }
+  if (GiNaC::is_a<GiNaC::numeric>(e)) {
+    return GiNaC::ex_to<GiNaC::numeric>(e).is_positive();
+  }
+  if (GiNaC::is_a<GiNaC::power>(e)) {
+    return GiNaC::is_a<GiNaC::symbol>(e.op(0)) && GiNaC::is_a<GiNaC::numeric>(e.op(1));
+  }
+  if (GiNaC::is_a<GiNaC::mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      if (!signed_by_symbols(e.op(i))) {
+        return false;
+      }
+    }
+    return true;
+  }
+  return false;
+}
+
+// The symbols in the arguments of the logarithms of @p e (each to be positive) and in the bases
+// of its even roots (not negative), each once, in the order found; only of arguments that are
+// products of symbols (signed_by_symbols).
+void domain_signs(const ex& e, std::vector<std::pair<ex, Sign>>& out) {
+  const bool logarithm =
+      GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "log";
+  const bool even_root = GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+                         !e.op(1).info(GiNaC::info_flags::integer) &&
+                         GiNaC::ex_to<GiNaC::numeric>(e.op(1)).denom().is_even();
+  if ((logarithm || even_root) && signed_by_symbols(e.op(0))) {
+    const Sign sign = logarithm ? Sign::positive : Sign::nonnegative;
     for (const ex& s : symbols_of(e.op(0))) {
-      if (std::none_of(out.begin(), out.end(), [&](const ex& o) { return o.is_equal(s); })) {
-        out.push_back(s);
+      const auto known =
+          std::find_if(out.begin(), out.end(), [&](const auto& o) { return o.first.is_equal(s); });
+      if (known == out.end()) {
+        out.emplace_back(s, sign);
+      } else if (sign == Sign::positive) {
+        known->second = sign;
       }
     }
   }
   for (std::size_t i = 0; i < e.nops(); ++i) {
-    logarithm_symbols(e.op(i), out);
+    domain_signs(e.op(i), out);
   }
 }
 
-// At most this many symbols are assumed positive for a logarithm's rules: a condition on more
+// At most this many symbols get a sign for the rules of roots and logarithms: a condition on more
 // says little a reader can use.
-constexpr std::size_t most_positive_symbols = 4;
+constexpr std::size_t most_signed_symbols = 4;
 
 }  // namespace
 
-// A step the exact method could not decide, whose logarithms' arguments hold symbols the facts
-// do not keep positive (\ln(a b) then \ln a + \ln b; \ln x^2 then 2 \ln x): decided again
-// as if the file assumed them positive. Where it then holds, the verdict is follows-if with those
-// signs as the condition, and the numeric opinion is taken at points that keep them. (Where one
-// of them is negative, a logarithm of the step or the equations before often has no real value;
-// whether the condition is needed is not decided.) Returns whether it did.
-bool Checker::positive_reading(const Scalars& before, const Scalars& step, const Facts& facts,
-                               std::size_t index, const Budget& budget, Forward& forward,
-                               NumericOpinion& opinion) {
-  std::vector<ex> found;
+// A step the exact method could not decide, whose logarithms and even roots hold symbols the
+// facts do not give the sign they need (\ln(a b) then \ln a + \ln b; \sqrt{a b} then
+// \sqrt{a} \sqrt{b}): decided again as if the file assumed them positive (a logarithm's) or not
+// negative (a root's). Where it then holds, the verdict is follows-if with those signs as the
+// condition, and the numeric opinion is taken at points that keep them. (Where one of them has
+// the other sign, a root or logarithm of the step or of the equations before often has no real
+// value; whether the condition is needed is not decided.) Returns whether it did.
+bool Checker::domain_reading(const Scalars& before, const Scalars& step, const Facts& facts,
+                             std::size_t index, const Budget& budget, Forward& forward,
+                             NumericOpinion& opinion) {
+  std::vector<std::pair<ex, Sign>> found;
   for (const Scalars* s : {&before, &step}) {
     for (const std::vector<ex>* list : {&s->differences, &s->denominators}) {
       for (const ex& d : *list) {
-        logarithm_symbols(d, found);
+        domain_signs(d, found);
       }
     }
   }
   Facts with = facts;
-  std::vector<ex> assumed;
-  for (const ex& s : found) {
-    if (facts.of_symbol(s) == Sign::positive) {
+  std::vector<std::pair<ex, Sign>> assumed;
+  for (const auto& [symbol, sign] : found) {
+    const Sign known = facts.of_symbol(symbol);
+    if (known == Sign::positive || (known == Sign::nonnegative && sign == Sign::nonnegative)) {
       continue;
     }
-    if (!with.add(s, Sign::positive)) {
-      return false;  // the facts keep it from being positive: no such reading
+    if (!with.add(symbol, sign)) {
+      return false;  // the facts give it the other sign: no such reading
     }
-    assumed.push_back(s);
+    assumed.emplace_back(symbol, sign);
   }
-  if (assumed.empty() || assumed.size() > most_positive_symbols) {
+  if (assumed.empty() || assumed.size() > most_signed_symbols) {
     return false;
   }
-  Forward positive = exact(before, step, with, budget);
+  Forward read = exact(before, step, with, budget);
   using O = Implication::Outcome;
-  if (positive.implication.outcome != O::holds && positive.implication.outcome != O::holds_if) {
+  if (read.implication.outcome != O::holds && read.implication.outcome != O::holds_if) {
     return false;
   }
-  Implication& i = positive.implication;
+  Implication& i = read.implication;
   i.outcome = O::holds_if;
-  i.positive = assumed;
+  i.signs = assumed;
   i.conditions_needed = false;
   i.point.reset();
   std::string signs;
-  for (const ex& s : assumed) {
-    signs += (signs.empty() ? "" : ", ") + relation_latex(latex_of(s), Sign::positive);
+  for (const auto& [symbol, sign] : assumed) {
+    signs += (signs.empty() ? "" : ", ") + relation_latex(latex_of(symbol), sign);
   }
   i.how = (i.how.empty() ? std::string("it holds once the equations before are used") : i.how) +
           " where " + signs +
-          " (the rules of logarithms hold for positive arguments; the facts do not give these "
-          "signs: assume them where they hold)";
-  forward = positive;
+          " (the rules of roots and logarithms hold where their arguments are not negative and "
+          "positive; the facts do not give these signs: assume them where they hold)";
+  forward = read;
   opinion = numeric(before, step, forward, with, index, budget);
   return true;
 }
@@ -1190,9 +1227,10 @@ void Checker::condition(const Implication& forward, const Scalars& before, const
     product = sym::up_to_sign(product);  // its sign does not matter: one form in every run
     plain = plain_of(product) + " != 0";
   }
-  for (const ex& s : forward.positive) {
-    latex.push_back(relation_latex(latex_of(s), Sign::positive));
-    plain += (plain.empty() ? "" : ", ") + plain_of(s) + " > 0";
+  for (const auto& [symbol, sign] : forward.signs) {
+    latex.push_back(relation_latex(latex_of(symbol), sign));
+    plain += std::string(plain.empty() ? "" : ", ") + plain_of(symbol) +
+             (sign == Sign::positive ? " > 0" : " >= 0");
   }
   std::string joined;
   for (const std::string& l : latex) {

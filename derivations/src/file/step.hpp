@@ -70,9 +70,9 @@ class Checker {
                 const Budget& budget);
   Forward instance_failure(const Scalars& before, const Scalars& step, const Facts& facts,
                            const Budget& budget);
-  bool positive_reading(const Scalars& before, const Scalars& step, const Facts& facts,
-                        std::size_t index, const Budget& budget, Forward& forward,
-                        NumericOpinion& opinion);
+  bool domain_reading(const Scalars& before, const Scalars& step, const Facts& facts,
+                      std::size_t index, const Budget& budget, Forward& forward,
+                      NumericOpinion& opinion);
   NumericOpinion numeric(const Scalars& before, const Scalars& step, const Forward& forward,
                          const Facts& facts, std::size_t index, const Budget& budget);
   std::optional<Implication> converse(const Scalars& before, const Scalars& step,
