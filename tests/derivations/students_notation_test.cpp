@@ -1454,6 +1454,15 @@ TEST_CASE("Equations side by side, derivatives along a function, half angles at 
           .back() == "follows-if");
   CHECK(verdicts("$$\\cos\\theta = -1$$\n\n$$\\sin\\theta = 0$$").back() == "follows-one-way");
   CHECK(verdicts("$$(1 + \\cos\\theta) v = 0$$\n\n$$v = 0$$").back() == "follows-if");
+  // Where the step holds at θ = π under the conditions it has everywhere else, θ = π adds none:
+  // m a = m g sin θ - μ m g cos θ gives a = g (sin θ - μ cos θ) where m ≠ 0, θ = π included (a = μ
+  // g on both sides there); it was "m ≠ 0, 1 + cos θ ≠ 0". Where m = 0 the step does not follow.
+  const auto condition = [](const std::string& text) {
+    return d::check_derivation(text, "slope.md", pinned_options()).equations.back().condition_text;
+  };
+  CHECK(condition("$$m a = m g \\sin\\theta - \\mu m g \\cos\\theta$$\n\n$$a = g (\\sin\\theta - "
+                  "\\mu \\cos\\theta)$$") == "m != 0");
+  CHECK(condition("$$k y = k \\sin\\theta$$\n\n$$y = \\sin\\theta$$") == "k != 0");
   // where an equation before is undefined at π (sin 2θ / sin θ), nothing lies there
   CHECK(
       verdicts("$$v = \\frac{\\sin(2\\theta)}{\\sin\\theta}$$\n\n$$v = 2 \\cos\\theta$$").back() ==

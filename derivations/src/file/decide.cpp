@@ -2076,6 +2076,7 @@ void at_odd_pi(Found& found, const Problem& original, const TrigRewrite& rewrite
       }
     }
     Implied outcome = Implied::unknown;
+    std::vector<ex> conditions_there;
     if (defined) {
       Problem at = original;
       at.premise_denominators.clear();  // where they vanish, the divisor check speaks
@@ -2089,12 +2090,24 @@ void at_odd_pi(Found& found, const Problem& original, const TrigRewrite& rewrite
       }
       try {
         at.target = GiNaC::normal(at.target.subs(there));
-        outcome = search(at).outcome;
+        const Found at_pi = search(at);
+        outcome = at_pi.outcome;
+        conditions_there = at_pi.conditions;
       } catch (const std::exception&) {
         outcome = Implied::fails;  // the step divides by zero there
       }
     }
-    if (outcome == Implied::holds) {
+    // There, it may hold where conditions already found hold (k y = k sin θ then y = sin θ: at
+    // θ = π, k y = 0 gives y = 0 where k ≠ 0, the condition everywhere else too).
+    const auto already_found = [&](const ex& c) {
+      return std::any_of(found.conditions.begin(), found.conditions.end(), [&](const ex& d) {
+        const ex ratio = GiNaC::normal(c / d);
+        return is_a<numeric>(ratio) && !ratio.is_zero();
+      });
+    };
+    if (outcome == Implied::holds ||
+        (outcome == Implied::holds_if && found.outcome == Implied::holds_if &&
+         std::all_of(conditions_there.begin(), conditions_there.end(), already_found))) {
       continue;
     }
     const ex condition = 1 + GiNaC::cos(angle);
