@@ -1275,6 +1275,15 @@ TEST_CASE("Labels, mixed numbers, units and notations that could mean two things
   refused("$$a = b \\quad (2)$$", 1, 15, "\\tag");  // after a letter: it was a call b(2)
   refused("$$a = b \\quad \\{2\\}$$", 1, 15, "\\tag");
   refused("$$a = b \\quad \\left[3\\right]$$", 1, 15, "\\tag");
+  // but after a function's name the brackets are its argument, as part two reads them (they
+  // were refused as a label): sin 2x = 2 sin x cos x, log_2 8 = 3, ln 2x = ln 2 + ln x for x > 0.
+  CHECK(verdicts("$$y = \\sin (2x)$$\n\n$$y = 2 \\sin x \\cos x$$").back() == "follows");
+  CHECK(verdicts("$$y = \\log_2 (8)$$\n\n$$y = 3$$").back() == "follows");
+  CHECK(verdicts("$$y = \\log_{2} (8)$$\n\n$$y = 3$$").back() == "follows");
+  CHECK(verdicts("assume: x > 0\n\n$$y = \\ln (2x)$$\n\n$$y = \\ln 2 + \\ln x$$").back() ==
+        "follows");
+  CHECK(verdicts("$$y = \\sin^2 (x)$$\n\n$$y = 1 - \\cos^2 x$$").back() == "follows");
+  refused("$$y = \\sin x (2)$$", 1, 14, "\\tag");  // after the argument: a label again
   // - 2\frac{1}{2}: 2 times a half (a = 1 followed) where 2½ is meant;
   refused("$$a = 2\\frac{1}{2}$$\n\n$$a = 1$$", 1, 8, "mixed number");
   refused("$$a = 3\\tfrac14$$", 1, 8, "mixed number");

@@ -310,6 +310,36 @@ void refuse_annotation(const Source& source, const Token& t, const std::vector<T
   }
 }
 
+// Whether the tokens before @p end close a function's name: \sin, \ln, with a sub- or
+// superscript (\log_2, \log_{10}, \sin^2, \cos^{2}): what follows is its argument.
+bool argument_of_function(const std::vector<Token>& tokens, std::size_t end) {
+  std::size_t k = end;
+  while (k > 0 && tokens[k - 1].kind == Tok::spacing) {
+    --k;
+  }
+  // One sub- or superscript at most: a number or letter, or a group in braces.
+  if (k >= 2 && (tokens[k - 1].kind == Tok::number || tokens[k - 1].kind == Tok::letter) &&
+      (is_char(tokens[k - 2], '_') || is_char(tokens[k - 2], '^'))) {
+    k -= 2;
+  } else if (k > 0 && is_char(tokens[k - 1], '}')) {
+    std::size_t open = k - 1;
+    int depth = 0;
+    while (true) {
+      depth += is_char(tokens[open], '}') ? 1 : is_char(tokens[open], '{') ? -1 : 0;
+      if (depth == 0 || open == 0) {
+        break;
+      }
+      --open;
+    }
+    if (depth != 0 || open == 0 ||
+        !(is_char(tokens[open - 1], '_') || is_char(tokens[open - 1], '^'))) {
+      return false;
+    }
+    k = open - 1;
+  }
+  return k > 0 && in(tokens[k - 1], commands::functions);
+}
+
 // An equation's label in brackets, read as a factor, let a slip by that factor pass (J = m (w -
 // v) \; (2) gave J = 2 m (w - v)). Refused, as \tag{…} numbers an equation:
 // - at the start of a row: (3.4) E_k + E_o = …, as the paper prints its equations; (2)\quad & V;
@@ -401,6 +431,9 @@ void refuse_written_number(const Source& source, const std::vector<Token>& token
     const bool spaced = before < open || tokens[open].space_before;
     if (!spaced || label_at(open, wide) != last) {
       continue;
+    }
+    if (!wide && argument_of_function(tokens, before)) {
+      return;  // \sin (2x), \log_2 (8x): the function's argument, as part two reads it
     }
     if (before > 0 && !operator_like(tokens[before - 1])) {
       throw source.error(tokens[open].offset, message);
