@@ -625,6 +625,11 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
         std::vector<std::string>{"premise", "premise", "follows-one-way"});
   CHECK(verdicts(given + "w = r s$$\n\n$$u = \\frac{p w}{q r s}$$") ==
         std::vector<std::string>{"premise", "premise", "follows-if"});
+  // y = |a/b| is y = |a|/|b| wherever b ≠ 0, which the equation before needs: no condition (it
+  // was follows-if |b| ≠ 0: where |b| = 0 the equations before have no solution, which was not
+  // seen of |b| = 0, only of b = 0).
+  CHECK(verdicts("$$y = \\left| \\frac{a}{b} \\right|$$\n\n$$y = \\frac{|a|}{|b|}$$").back() ==
+        "follows");
   // √(k/m) = k^{1/2} m^{-1/2} for k, m > 0 (undecided before: the root of a quotient was not
   // split); with the power of m's root slipped it must not follow (at k = m = 4, x = 1 the step
   // gives v = 4 where √(k/m) x = 1).

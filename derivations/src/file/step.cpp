@@ -919,7 +919,10 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
       continue;
     }
     std::vector<ex> premises = before.differences;
-    premises.push_back(c);
+    // |X| = 0 where X = 0: the exact method reads the latter.
+    const bool absolute =
+        GiNaC::is_a<GiNaC::function>(c) && GiNaC::ex_to<GiNaC::function>(c).get_name() == "abs";
+    premises.push_back(absolute ? c.op(0) : c);
     premises.insert(premises.end(), facts.equalities().begin(), facts.equalities().end());
     const Implication there = implies({premises, before.denominators, 1, {}}, facts, quick);
     if (there.outcome == Implication::Outcome::holds) {
