@@ -1428,6 +1428,10 @@ TEST_CASE("Units, one-digit arguments and a function's reach, as a fourth probe 
   refused("$$F = k \\cos\\theta \\sqrt{m}$$\n\n$$F = k \\cos\\left(\\theta \\sqrt{m}\\right)$$", 1,
           20, "\\sqrt");
   refused("$$a = \\sin\\theta |v|$$", 1, 18, "'|'");
+  //   but inside |…| the bar closes it, and the argument ends there (it was refused as above):
+  same("|\\sin x|", "\\left|\\sin(x)\\right|");
+  same("2 |\\cos\\theta| + 1", "2 \\left|\\cos(\\theta)\\right| + 1");
+  different("|\\sin x|", "\\sin x");  // at x = -1
   refused("$$a = \\sin x 2$$", 1, 14, "run on");
   same("\\sin 2\\theta", "\\sin(2\\theta)");
   same("\\sin \\omega t", "\\sin(\\omega t)");

@@ -669,7 +669,8 @@ void Grammar::refuse_digits_left(const Token& command) const {
 // another kind of term: a root, bars, a fraction, braces, a number, an upright name. \cos\theta
 // \sqrt{m} was cos(θ √m) where k \cos\theta \sqrt{m} means cos θ times √m.
 bool Grammar::runs_into_factor(const Token& next) const {
-  return next.kind == Tok::number || is_char(next, '|') ||
+  // Inside |…| a '|' closes it (|\sin x|): no factor starts there.
+  return next.kind == Tok::number || (is_char(next, '|') && abs_depth_ == 0) ||
          (next.kind == Tok::command &&
           (next.text == "\\sqrt" || next.text == "\\lvert" || next.text == "\\vert" ||
            next.text == "\\|" || next.text == "\\lVert" || next.text == "\\Vert" ||
