@@ -164,6 +164,13 @@ TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students
   refused("$$a = v_{\\sup}$$", 1, 10, "letters and digits in the subscript");
   same("v^2_1", "v_1^2");
   same("{v_1}'", "v_1'");
+  // A prime in braces as TeX allows it, ^{'} and ^{''} as ^{\prime} (they were refused: "expected
+  // a symbol before the prime"); a prime and a power in one superscript, refused with the writing
+  // that says it (it was "unknown command \prime").
+  same("v_1^{'}", "v_1'");
+  same("v^{''}", "v^{\\prime\\prime}");
+  different("v^{'}", "v");  // v' is a symbol of its own
+  refused("$$K = m v^{\\prime 2}$$", 1, 12, "{v'}^{2}");
   same("\\Delta{p}", "\\Delta p");
   // The change of a declared vector is a vector (\vec F \Delta t = \Delta \vec p was refused as a
   // vector equal to a scalar): its x-component follows, and the y-component for it does not (F =

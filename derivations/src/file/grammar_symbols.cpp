@@ -162,7 +162,8 @@ std::string Grammar::name_group(const Token& command_token) {
   return text;
 }
 
-// decorations := {'_' subscript | ["\,"] "'" | '^' ('\prime' | '{' '\prime' {'\prime'} '}')}
+// decorations := {'_' subscript | ["\,"] "'" | '^' ('\prime' | '{' prime {prime} '}')}
+// prime := '\prime' | "'"   (v^{'} as v^{\prime})
 // ("\," before a prime of an accented symbol only: \vec p\,')
 // (subscript and primes in either order: p_1', p'_1, p_{1}')
 Node Grammar::decorate(std::size_t depth, Node n) {
@@ -183,6 +184,12 @@ Node Grammar::decorate(std::size_t depth, Node n) {
     } else if (is_char(t, '^') && primes_follow()) {
       take();
       n.symbol.primes += read_prime_script();
+    } else if (is_char(t, '^') && is_char(token(position_ + 1), '{') &&
+               (is_command(token(position_ + 2), "\\prime") ||
+                is_char(token(position_ + 2), '\''))) {
+      throw error(token(position_ + 2),
+                  "expected only primes in ^{…} after a symbol: a prime and a power in one "
+                  "superscript (v^{\\prime 2}); write {v'}^{2} for the square of v'");
     } else {
       break;
     }
@@ -199,8 +206,9 @@ bool Grammar::primes_follow() const {
   if (is_char(next, '{')) {
     std::size_t k = position_ + 2;
     bool any = false;
-    while (is_command(token(k), "\\prime") || token(k).kind == Tok::spacing) {
-      any = any || is_command(token(k), "\\prime");
+    while (is_command(token(k), "\\prime") || is_char(token(k), '\'') ||
+           token(k).kind == Tok::spacing) {
+      any = any || token(k).kind != Tok::spacing;
       ++k;
     }
     return any && is_char(token(k), '}');
@@ -215,7 +223,7 @@ int Grammar::read_prime_script() {
   }
   take();  // {
   int count = 0;
-  while (is_command(peek(), "\\prime")) {
+  while (is_command(peek(), "\\prime") || is_char(peek(), '\'')) {
     take();
     ++count;
   }
