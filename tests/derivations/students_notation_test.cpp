@@ -1488,6 +1488,12 @@ TEST_CASE("Equations side by side, derivatives along a function, half angles at 
   CHECK(condition("$$m a = m g \\sin\\theta - \\mu m g \\cos\\theta$$\n\n$$a = g (\\sin\\theta - "
                   "\\mu \\cos\\theta)$$") == "m != 0");
   CHECK(condition("$$k y = k \\sin\\theta$$\n\n$$y = \\sin\\theta$$") == "k != 0");
+  // Dividing by sin 2θ: sin θ ≠ 0 and cos θ ≠ 0, in the angle (they were tan(θ/2) ≠ 0, 1 + tan(θ/2)
+  // ≠ 0, 1 - tan(θ/2) ≠ 0), and no 1 + cos θ ≠ 0 besides: sin θ ≠ 0 leaves θ = π out already.
+  CHECK(condition("$$y \\sin 2\\theta = x \\sin 2\\theta$$\n\n$$y = x$$") ==
+        "cos(theta)*sin(theta) != 0");
+  CHECK(condition("$$y \\sin\\theta \\cos\\theta = x \\sin\\theta \\cos\\theta$$\n\n$$y = x$$") ==
+        "cos(theta)*sin(theta) != 0");
   // where an equation before is undefined at π (sin 2θ / sin θ), nothing lies there
   CHECK(
       verdicts("$$v = \\frac{\\sin(2\\theta)}{\\sin\\theta}$$\n\n$$v = 2 \\cos\\theta$$").back() ==

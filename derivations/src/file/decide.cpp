@@ -1800,8 +1800,9 @@ class Trig {
 
 namespace {
 
-// The conditions in τ alone (τ = tan(angle/2)) whose product is a number times 1 - τ² or τ,
-// replaced by cos(angle) or sin(angle): 1 - τ² = cos(angle) (1 + τ²) and 2τ = sin(angle) (1 + τ²).
+// The conditions in τ alone (τ = tan(angle/2)) whose product is a number times 1 - τ², τ or both,
+// replaced by cos(angle), sin(angle) or both: 1 - τ² = cos(angle) (1 + τ²) and 2τ = sin(angle)
+// (1 + τ²).
 // A product 1 - τ (or 1 + τ) whose other factor the facts on τ keep from 0 is cos(angle) too:
 // 0 ≤ θ ≤ π/2 gives 1 + τ > 0, and dividing by cos θ needs only 1 - τ ≠ 0, that is cos θ ≠ 0.
 std::vector<ex> in_the_angle(const std::vector<ex>& conditions, const ex& tau, const ex& angle,
@@ -1831,6 +1832,12 @@ std::vector<ex> in_the_angle(const std::vector<ex>& conditions, const ex& tau, c
     }
     if (is_a<numeric>(GiNaC::normal(product / tau))) {
       kept.push_back(GiNaC::sin(angle));
+      return kept;
+    }
+    // τ (1 - τ²), of sin 2θ = 2 sin θ cos θ: sin(angle) ≠ 0 and cos(angle) ≠ 0.
+    if (is_a<numeric>(GiNaC::normal(product / (tau * (1 - tau * tau))))) {
+      kept.push_back(GiNaC::sin(angle));
+      kept.push_back(GiNaC::cos(angle));
       return kept;
     }
   } catch (const std::exception&) {
@@ -2074,6 +2081,20 @@ void at_odd_pi(Found& found, const Problem& original, const TrigRewrite& rewrite
       } else {
         defined = false;  // tan(θ/2) itself: undefined at θ = π
       }
+    }
+    // A condition found already vanishes there (sin θ ≠ 0 leaves θ = π out): nothing to add.
+    const bool left_out =
+        defined && std::any_of(found.conditions.begin(), found.conditions.end(), [&](const ex& c) {
+          try {
+            return GiNaC::normal(c.subs(there)).is_zero() ||
+                   (is_a<GiNaC::symbol>(angle) &&
+                    GiNaC::normal(c.subs(angle == GiNaC::Pi)).is_zero());
+          } catch (const std::exception&) {
+            return false;
+          }
+        });
+    if (left_out) {
+      continue;
     }
     Implied outcome = Implied::unknown;
     std::vector<ex> conditions_there;
