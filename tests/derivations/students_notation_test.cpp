@@ -546,6 +546,17 @@ TEST_CASE("Students' facts: ranges and relations keep divisions from conditions"
   CHECK(verdicts(
             "assume: m > 0, 0 \\le e \\le 1\n\n$$J = -m (1 + e) v$$\n\n$$|J| = m (1 + e) |v|$$") ==
         std::vector<std::string>{"premise", "follows-one-way"});
+  // An equation with an absolute value squared: |a - c| = e |b - d| gives (a - c)² = e² (b - d)²
+  // everywhere (it was follows-if |b - d| ≠ 0, though at b = d both sides are 0), but not back
+  // without e ≥ 0 (e = -1, a - c = b - d = 1); |u| = |w| and u² = w² are the same. |x| = 2 gives
+  // x = 2 where x + 2 ≠ 0 (undecided before: |x| = 2 was not seen to be x² = 4).
+  CHECK(verdicts("$$|a - c| = e |b - d|$$\n\n$$(a - c)^2 = e^2 (b - d)^2$$").back() ==
+        "follows-one-way");
+  CHECK(verdicts("assume: e \\ge 0\n\n$$|a - c| = e |b - d|$$\n\n$$(a - c)^2 = e^2 (b - d)^2$$")
+            .back() == "follows");
+  CHECK(verdicts("$$|u - v| = |w - z|$$\n\n$$(u - v)^2 = (w - z)^2$$").back() == "follows");
+  CHECK(verdicts("$$|x| = 2$$\n\n$$x = 2$$").back() == "follows-if");
+  CHECK(verdicts("$$|x| = 2$$\n\n$$x = 3$$").back() == "does-not-follow");
   // m_0 > m_f and m_f > 0 give m_0 > 0 (m_0 = (m_0 - m_f) + m_f), so the rocket's logarithm
   // splits: undecided before, for want of m_0's sign. Without m_f > 0 it cannot split.
   const std::string rocket =

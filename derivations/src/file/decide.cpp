@@ -2144,6 +2144,24 @@ void at_odd_pi(Found& found, const Problem& original, const TrigRewrite& rewrite
   }
 }
 
+// k² S - R² for a premise k P + R, linear in the part P (with S = P², written without P), whose
+// other terms R do not hold P (and nothing large); else nothing.
+std::optional<ex> squared_without(const ex& premise, const ex& part, const ex& square) {
+  if (expanded_terms(premise) > 20) {
+    return std::nullopt;
+  }
+  const ex p = GiNaC::expand(premise);
+  if (!p.is_polynomial(part) || p.degree(part) != 1) {
+    return std::nullopt;
+  }
+  const ex k = p.coeff(part, 1);
+  const ex rest = GiNaC::expand(p - k * part);
+  if (k.has(part) || rest.has(part)) {
+    return std::nullopt;
+  }
+  return GiNaC::expand(k * k * square - rest * rest);
+}
+
 // k² A - R² for a premise k √A + R whose one square root √A of a symbol's expression is in no
 // other term (and nothing large): the premise squared, without its root; else nothing.
 std::optional<ex> root_squared(const ex& premise) {
@@ -2158,19 +2176,20 @@ std::optional<ex> root_squared(const ex& premise) {
       root = *it;
     }
   }
-  if (!root || expanded_terms(premise) > 20) {
-    return std::nullopt;
+  return root ? squared_without(premise, *root, root->op(0)) : std::nullopt;
+}
+
+// k² A² - R² for a premise k |A| + R, the absolute value of a symbol's expression in no other
+// term (the first, where there are several: R² squares the others, |B|² = B²); else nothing.
+std::optional<ex> absolute_squared(const ex& premise) {
+  for (GiNaC::const_preorder_iterator it = premise.preorder_begin(); it != premise.preorder_end();
+       ++it) {
+    if (is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == "abs" &&
+        !symbols_of(it->op(0)).empty()) {
+      return squared_without(premise, *it, GiNaC::pow(it->op(0), 2));
+    }
   }
-  const ex p = GiNaC::expand(premise);
-  if (!p.is_polynomial(*root) || p.degree(*root) != 1) {
-    return std::nullopt;
-  }
-  const ex k = p.coeff(*root, 1);
-  const ex rest = GiNaC::expand(p - k * *root);
-  if (k.has(*root) || rest.has(*root)) {
-    return std::nullopt;
-  }
-  return GiNaC::expand(k * k * root->op(0) - rest * rest);
+  return std::nullopt;
 }
 
 // The facts with those that keep @p premises real: x > 0 for each symbol x of a logarithm ln x
@@ -2240,16 +2259,25 @@ std::string inverted_on_range(Problem& problem, const Facts& facts) {
 }
 
 // Each premise k √A + R = 0, with the root in no other term, gives k² A = R², added beside it:
-// √x = 3 is x = 9 (and √x = -3 holds nowhere, which the premise kept says). What was added, as
-// text ("" for nothing).
+// √x = 3 is x = 9 (and √x = -3 holds nowhere, which the premise kept says). Likewise k |A| + R = 0
+// gives k² A² = R²: |a - c| = e |b - d| is (a - c)² = e² (b - d)² wherever it holds. What was
+// added, as text for the report ("" for nothing).
 std::string add_squared_roots(Problem& problem) {
   const std::size_t written = problem.premises.size();
-  std::string added;
+  std::string roots;
+  std::string absolutes;
   for (std::size_t i = 0; i < written; ++i) {
     if (const auto squared = root_squared(problem.premises[i])) {
       problem.premises.push_back(*squared);
-      added += (added.empty() ? "" : ", ") + text(*squared) + " = 0";
+      roots += (roots.empty() ? "" : ", ") + text(*squared) + " = 0";
+    } else if (const auto squared_absolute = absolute_squared(problem.premises[i])) {
+      problem.premises.push_back(*squared_absolute);
+      absolutes += (absolutes.empty() ? "" : ", ") + text(*squared_absolute) + " = 0";
     }
+  }
+  std::string added = roots.empty() ? "" : "a root squared: " + roots;
+  if (!absolutes.empty()) {
+    added += (added.empty() ? "" : "; ") + std::string("an absolute value squared: ") + absolutes;
   }
   return added;
 }
@@ -2382,7 +2410,7 @@ Implication implies(const Problem& given, const Facts& written_facts, const Budg
   result.residual = found.residual;
   result.point = found.point;
   if (!squared_text.empty()) {
-    found.how.insert(found.how.begin(), "a root squared: " + squared_text);
+    found.how.insert(found.how.begin(), squared_text);
   }
   if (!inverted_text.empty()) {
     found.how.insert(found.how.begin(),
