@@ -371,6 +371,20 @@ TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
   const std::string rate = "function: p\n\n$$\\frac{\\mathrm{d}p}{\\mathrm{d}t} = F_0$$\n\n";
   CHECK(verdicts(rate + "$$p(T) - p(0) = F_0 T$$").back() == "undecided");
   CHECK(verdicts(rate + "$$p(T) - p(0) = 2 F_0 T$$").back() == "does-not-follow");
+  // A slip in a differential equation of decay: from x' = -k x, x' = k x fails with x(u) = e^u
+  // (then k = -1, and at t = 1 the step reads e = -e); no polynomial but 0 solves x' = -k x, so
+  // it was undecided. Under e^u, dp/dt = F_0 holds at no F_0 for every t (e^t = F_0 at one t
+  // only): no counterexample is made of it, and p(T) - p(0) = F_0 T stays undecided above.
+  const std::string decay = "function: x\n\n$$\\dot x = -k x$$\n\n";
+  CHECK(verdicts(decay + "$$\\dot x = k x$$").back() == "does-not-follow");
+  CHECK(verdicts(decay + "$$\\dot x + k x = 0$$").back() == "follows");
+  // x(t) = A cos ωt written out, the slip x'' = ω² x fails at the numeric method's points (x'' =
+  // -A ω² cos ωt, so the step is 2 A ω² cos ωt = 0); it was undecided, the equation before,
+  // 0 = 0 once x is put in, having nothing to be solved for.
+  CHECK(verdicts("function: x\n\n$$x(t) = A \\cos(\\omega t)$$\n\n$$\\ddot x = \\omega^2 x$$")
+            .back() == "does-not-follow");
+  CHECK(verdicts("function: x\n\n$$x(t) = A \\cos(\\omega t)$$\n\n$$\\ddot x = -\\omega^2 x$$")
+            .back() == "follows-one-way");
   // F(t) declared a function is F of t; J = ∫ F dt does not give F T^2 / 2.
   CHECK(verdicts("function: F\n\n$$J = \\int_0^T F(t)\\,dt$$\n\n$$J = \\frac{F T^2}{2}$$") ==
         std::vector<std::string>{"premise", "does-not-follow"});

@@ -550,7 +550,10 @@ std::vector<Instance> instances(const std::vector<ex>& expressions, std::size_t 
   std::sort(limits_by_name.begin(), limits_by_name.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
   const ex u = instance_variable();
-  const std::vector<ex> formulas{1, u, u * u, 1 + u, 2 - u, u * u * u - u, 1 + 2 * u + u * u};
+  // Polynomials first; then an exponential, which a differential equation of decay or growth
+  // asks for (x' = -k x holds for no polynomial but 0).
+  const std::vector<ex> formulas{
+      1, u, u * u, 1 + u, 2 - u, u * u * u - u, 1 + 2 * u + u * u, GiNaC::exp(u)};
   const std::vector<long> counts{2, 3, 1};
   std::vector<Instance> list;
   for (std::size_t k = 0; k < most; ++k) {

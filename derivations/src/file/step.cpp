@@ -781,11 +781,26 @@ bool Checker::domain_reading(const Scalars& before, const Scalars& step, const F
 namespace {
 
 // An equation that names a function at its variable (F(t) = …) holds for every value of that
-// variable: its numerator split into the coefficients of each power of each variable. A part that
-// would expand into too many terms, or is no polynomial in the variable, stays whole.
-std::vector<ex> by_powers(const ex& written, const std::vector<ex>& variables) {
+// variable: its numerator split into the coefficients of each power of each variable, and of each
+// power of its exponential (e^t, of a formula exp(u): e^t = F_0 for every t holds for no F_0). A
+// part that would expand into too many terms, or is no polynomial in the variable, stays whole;
+// nothing, where an exponential of the variable stays in such a part (at one t, e^t = F_0 holds
+// with F_0 = e^t, and that would pass for a counterexample).
+std::optional<std::vector<ex>> by_powers(const ex& written, const std::vector<ex>& variables) {
   std::vector<ex> parts{written};
+  std::vector<std::pair<ex, ex>> exponentials;  // e^v and the symbol standing for it
   for (const ex& v : variables) {
+    const GiNaC::symbol e_v("exp_" + plain_of(v));
+    exponentials.emplace_back(GiNaC::exp(v), e_v);
+    for (ex& part : parts) {
+      part = part.subs(GiNaC::exp(v) == e_v);
+    }
+  }
+  std::vector<ex> all = variables;
+  for (const auto& [exponential, symbol] : exponentials) {
+    all.push_back(symbol);
+  }
+  for (const ex& v : all) {
     std::vector<ex> split;
     for (const ex& part : parts) {
       if (expanded_terms(part) > most_expanded_terms) {
@@ -803,6 +818,13 @@ std::vector<ex> by_powers(const ex& written, const std::vector<ex>& variables) {
     }
     parts = split;
   }
+  for (ex& part : parts) {
+    for (const auto& [exponential, symbol] : exponentials) {
+      if (part.has(symbol)) {
+        return std::nullopt;
+      }
+    }
+  }
   return parts;
 }
 
@@ -817,7 +839,7 @@ Checker::Forward Checker::instance_failure(const Scalars& given_before, const Sc
   const Scalars step = by_rules(given_step, rules);
   std::vector<ex> all = before.differences;
   all.insert(all.end(), step.differences.begin(), step.differences.end());
-  for (const Instance& instance : instances(all, 6)) {
+  for (const Instance& instance : instances(all, 8)) {
     if (past(budget.deadline)) {
       break;
     }
@@ -834,16 +856,26 @@ Checker::Forward Checker::instance_failure(const Scalars& given_before, const Sc
     // with their rules put in: a rule dp/dt = F_0 put in leaves 0 = 0, and p(u) = 1 (where
     // dp/dt = 0) then showed p(T) - p(0) = F_0 T failing at F_0 = 1, where the equation before
     // does not hold. (A rule F(t) = m dv/dt that defines F stays put in: F is any function.)
+    // (An instance under which an equation before cannot be held to every value of the variable
+    // is passed over: by_powers.)
     std::vector<ex> premises;
+    bool usable = true;
     for (const Scalars* s : {&given_before, &before}) {
       for (const ex& p : s->differences) {
         const ex written = instantiated(p, instance, renamed);
         if (s == &given_before && has_atoms(written)) {
           continue;
         }
-        const std::vector<ex> parts = by_powers(written, function_variables(p, is_variable()));
-        premises.insert(premises.end(), parts.begin(), parts.end());
+        const std::optional<std::vector<ex>> parts =
+            by_powers(written, function_variables(p, is_variable()));
+        usable = usable && parts.has_value();
+        if (parts) {
+          premises.insert(premises.end(), parts->begin(), parts->end());
+        }
       }
+    }
+    if (!usable) {
+      continue;
     }
     const std::vector<ex> premise_denominators = apply(before.denominators);
     const std::vector<ex> targets = apply(step.differences);
@@ -981,6 +1013,12 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
   Facts f = facts;
   std::vector<ex> all = before.differences;
   all.insert(all.end(), step.differences.begin(), step.differences.end());
+  // Whether functions stay unknown once the rules are put in (p of dp/dt = F_0 does; x of
+  // x(t) = A cos ωt does not): then the points are taken under a formula for them.
+  std::vector<ex> ruled = b.differences;
+  ruled.insert(ruled.end(), s.differences.begin(), s.differences.end());
+  const bool formulas =
+      std::any_of(ruled.begin(), ruled.end(), [](const ex& x) { return has_atoms(x); });
   if (std::any_of(all.begin(), all.end(), [](const ex& x) { return has_atoms(x); })) {
     const std::vector<Instance> list = instances(all, 1);
     std::vector<std::pair<ex, ex>> renamed;
@@ -991,7 +1029,10 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
       // Under the formula, each power of a function's variable on its own (by_powers).
       const ex written =
           list.empty() ? b.differences[k] : instantiated(b.differences[k], list[0], renamed);
-      for (const ex& p : by_powers(written, function_variables(b.differences[k], is_variable()))) {
+      const std::vector<ex> parts =
+          by_powers(written, function_variables(b.differences[k], is_variable()))
+              .value_or(std::vector<ex>{written});
+      for (const ex& p : parts) {
         premises.push_back(p);
         scales.push_back(term_scale(p));
       }
@@ -1013,8 +1054,18 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
     f = facts.carried(renamed);
   }
   NumericOpinion numeric;
-  std::vector<ex> premises = b.differences;
-  std::vector<ex> scales = b.scales;
+  // An equation before that its own rule makes 0 = 0 (x(t) = A cos ωt, once x is put in) holds
+  // everywhere: there is nothing to solve it for, and the points need not satisfy it. Not where a
+  // formula stands for a function: under p(u) = 1, dp/dt = F_0 (0 = 0 once put in) says F_0 = 0,
+  // which points drawn without it would not keep.
+  std::vector<ex> premises;
+  std::vector<ex> scales;
+  for (std::size_t k = 0; k < b.differences.size(); ++k) {
+    if (formulas || !b.differences[k].is_zero()) {
+      premises.push_back(b.differences[k]);
+      scales.push_back(b.scales[k]);
+    }
+  }
   for (const ex& q : f.equalities()) {
     premises.push_back(q);
     scales.push_back(term_scale(q));
