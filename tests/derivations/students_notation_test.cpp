@@ -316,6 +316,13 @@ TEST_CASE("Students' e and i: Euler's number upright, e to a power and a lone i 
   CHECK(verdicts(decay + "$$\\ln x = \\ln A + \\frac{t}{\\tau}$$") ==
         std::vector<std::string>{"premise", "does-not-follow"});
   same("\\mathrm{e}^{x}", "\\exp(x)");
+  // A half-life: 1/2 = e^{-T/τ} is T = τ ln 2 (-T/τ = ln(1/2), e^f being one-to-one); it was
+  // undecided, T being inside the exponential alone. Twice that does not follow (at τ = 1).
+  const std::string half = "assume: \\tau > 0\n\n$$\\frac12 = \\mathrm{e}^{-T/\\tau}$$\n\n";
+  CHECK(verdicts(half + "$$T = \\tau \\ln 2$$").back() == "follows");
+  CHECK(verdicts(half + "$$T = 2 \\tau \\ln 2$$").back() == "does-not-follow");
+  // e^{-T} = -1 holds for no real T: nothing is added, the premise is refused as before.
+  refused("$$\\mathrm{e}^{-T} = -1$$\n\n$$T = 0$$", 1, 3, "no values satisfy");
   same("\\mathrm{e}", "\\exp(1)");
   // e to a power that is no number: Euler's number, or a restitution coefficient's power (v_n =
   // e^n v_0 after n bounces)? Read as the letter, x_0 e^{-t/τ} gave ln(e) in its derivative and

@@ -2258,26 +2258,73 @@ std::string inverted_on_range(Problem& problem, const Facts& facts) {
   return rewritten;
 }
 
+// f - ln(-R/k) for a premise k e^f + R, its one exponential in no other term, where -R/k is a
+// positive number or the facts keep it positive (1/2 = e^{-T/τ} gives -T/τ = ln(1/2), in which T
+// can be solved for); else nothing.
+std::optional<ex> exponential_logarithm(const ex& premise, const Facts& facts) {
+  std::optional<ex> exponential;
+  for (GiNaC::const_preorder_iterator it = premise.preorder_begin(); it != premise.preorder_end();
+       ++it) {
+    if (is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == "exp" &&
+        !symbols_of(it->op(0)).empty()) {
+      if (exponential && !exponential->is_equal(*it)) {
+        return std::nullopt;  // two exponentials
+      }
+      exponential = *it;
+    }
+  }
+  if (!exponential || expanded_terms(premise) > 20) {
+    return std::nullopt;
+  }
+  const ex p = GiNaC::expand(premise);
+  if (!p.is_polynomial(*exponential) || p.degree(*exponential) != 1) {
+    return std::nullopt;
+  }
+  const ex k = p.coeff(*exponential, 1);
+  const ex rest = GiNaC::expand(p - k * *exponential);
+  if (k.has(*exponential) || rest.has(*exponential)) {
+    return std::nullopt;
+  }
+  const ex value = GiNaC::normal(-rest / k);
+  const bool positive = (is_a<numeric>(value) && GiNaC::ex_to<numeric>(value).is_positive()) ||
+                        facts.sign(value) == Sign::positive;
+  if (!positive) {
+    return std::nullopt;
+  }
+  return exponential->op(0) - GiNaC::log(value);
+}
+
 // Each premise k √A + R = 0, with the root in no other term, gives k² A = R², added beside it:
 // √x = 3 is x = 9 (and √x = -3 holds nowhere, which the premise kept says). Likewise k |A| + R = 0
-// gives k² A² = R²: |a - c| = e |b - d| is (a - c)² = e² (b - d)² wherever it holds. What was
+// gives k² A² = R²: |a - c| = e |b - d| is (a - c)² = e² (b - d)² wherever it holds; and
+// k e^f + R = 0 gives f = ln(-R/k) where that is positive (exponential_logarithm). What was
 // added, as text for the report ("" for nothing).
-std::string add_squared_roots(Problem& problem) {
+std::string add_squared_roots(Problem& problem, const Facts& facts) {
   const std::size_t written = problem.premises.size();
   std::string roots;
   std::string absolutes;
+  std::string logarithms;
+  const auto add = [&](const ex& e, std::string& list) {
+    problem.premises.push_back(e);
+    list += (list.empty() ? "" : ", ") + text(e) + " = 0";
+  };
   for (std::size_t i = 0; i < written; ++i) {
     if (const auto squared = root_squared(problem.premises[i])) {
-      problem.premises.push_back(*squared);
-      roots += (roots.empty() ? "" : ", ") + text(*squared) + " = 0";
+      add(*squared, roots);
     } else if (const auto squared_absolute = absolute_squared(problem.premises[i])) {
-      problem.premises.push_back(*squared_absolute);
-      absolutes += (absolutes.empty() ? "" : ", ") + text(*squared_absolute) + " = 0";
+      add(*squared_absolute, absolutes);
+    } else if (const auto logarithm = exponential_logarithm(problem.premises[i], facts)) {
+      add(*logarithm, logarithms);
     }
   }
-  std::string added = roots.empty() ? "" : "a root squared: " + roots;
-  if (!absolutes.empty()) {
-    added += (added.empty() ? "" : "; ") + std::string("an absolute value squared: ") + absolutes;
+  std::string added;
+  for (const auto& [what, list] :
+       {std::pair<std::string, const std::string&>{"a root squared: ", roots},
+        {"an absolute value squared: ", absolutes},
+        {"the logarithm of an exponential: ", logarithms}}) {
+    if (!list.empty()) {
+      added += (added.empty() ? "" : "; ") + what + list;
+    }
   }
   return added;
 }
@@ -2345,7 +2392,7 @@ Implication implies(const Problem& given, const Facts& written_facts, const Budg
   }
   original.target = by_facts(original.target, facts);
   const std::string inverted_text = inverted_on_range(original, facts);
-  const std::string squared_text = add_squared_roots(original);
+  const std::string squared_text = add_squared_roots(original, facts);
   // Sines and cosines become rational functions of tangents of half angles.
   std::vector<ex> all{original.target};
   all.insert(all.end(), original.premises.begin(), original.premises.end());
