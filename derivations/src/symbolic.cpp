@@ -484,4 +484,14 @@ Compiled compile(const ex& e, const std::vector<ex>& symbols) {
   return compiled;
 }
 
+ex map_parts(const ex& e, const std::function<ex(const ex&)>& f) {
+  struct Mapper : GiNaC::map_function {
+    const std::function<ex(const ex&)>& f;
+    explicit Mapper(const std::function<ex(const ex&)>& g) : f(g) {}
+    ex operator()(const ex& x) override { return f(x); }
+  };
+  Mapper m(f);
+  return e.map(m);
+}
+
 }  // namespace impulse::derivations::sym

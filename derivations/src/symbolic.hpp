@@ -7,6 +7,7 @@
 #include <ginac/ginac.h>
 
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <span>
 #include <string>
@@ -64,6 +65,9 @@ using CanonicalForms = std::map<ex, std::string, GiNaC::ex_is_less>;
 
 /// canonical(), its parts' forms taken from @p made and the new ones kept there.
 [[nodiscard]] std::string canonical(const ex& e, CanonicalForms& made);
+
+/// GiNaC's map with a function: @p e with each of its operands replaced by @p f of it.
+[[nodiscard]] ex map_parts(const ex& e, const std::function<ex(const ex&)>& f);
 
 /// Calls @p each with every factor of @p e when it is a product, else with @p e itself.
 /// @param e an expression

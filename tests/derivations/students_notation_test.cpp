@@ -316,6 +316,14 @@ TEST_CASE("Students' e and i: Euler's number upright, e to a power and a lone i 
   CHECK(verdicts(decay + "$$\\ln x = \\ln A + \\frac{t}{\\tau}$$") ==
         std::vector<std::string>{"premise", "does-not-follow"});
   same("\\mathrm{e}^{x}", "\\exp(x)");
+  // Energy of a spring: ½ m v² = ½ k A² - ½ k x² gives |v| = √(k/m) √(A² - x²); it was
+  // undecided, the root of (A - x)(A + x) and that of A² - x² not seen to be one. With + x² in
+  // the root it fails (at x = A the step gives |v| = √(2k/m) A where v = 0).
+  const std::string spring =
+      "assume: m > 0, k > 0\n\n$$\\frac12 m v^2 = \\frac12 k A^2 - \\frac12 k x^2$$\n\n";
+  CHECK(verdicts(spring + "$$|v| = \\sqrt{\\frac{k}{m}} \\sqrt{A^2 - x^2}$$").back() == "follows");
+  CHECK(verdicts(spring + "$$|v| = \\sqrt{\\frac{k}{m}} \\sqrt{A^2 + x^2}$$").back() ==
+        "does-not-follow");
   // A half-life: 1/2 = e^{-T/τ} is T = τ ln 2 (-T/τ = ln(1/2), e^f being one-to-one); it was
   // undecided, T being inside the exponential alone. Twice that does not follow (at τ = 1).
   const std::string half = "assume: \\tau > 0\n\n$$\\frac12 = \\mathrm{e}^{-T/\\tau}$$\n\n";

@@ -49,18 +49,6 @@ Registry& registry() {
   return r;
 }
 
-// GiNaC's map with a function.
-struct Mapper : GiNaC::map_function {
-  std::function<ex(const ex&)> f;
-  explicit Mapper(std::function<ex(const ex&)> g) : f(std::move(g)) {}
-  ex operator()(const ex& e) override { return f(e); }
-};
-
-ex map_parts(const ex& e, std::function<ex(const ex&)> f) {
-  Mapper m(std::move(f));
-  return e.map(m);
-}
-
 bool registered_abstract(unsigned serial) {
   Registry& r = registry();
   const std::lock_guard<std::mutex> hold(r.lock);
@@ -446,7 +434,7 @@ ex one_form(const ex& e, std::size_t depth) {
   if (e.nops() == 0) {
     return e;
   }
-  return map_parts(e, [depth](const ex& part) { return one_form(part, depth); });
+  return sym::map_parts(e, [depth](const ex& part) { return one_form(part, depth); });
 }
 
 }  // namespace
@@ -469,7 +457,7 @@ ex Atoms::hide(const ex& e) {
   if (e.nops() == 0) {
     return e;
   }
-  return map_parts(e, [this](const ex& part) { return hide(part); });
+  return sym::map_parts(e, [this](const ex& part) { return hide(part); });
 }
 
 ex Atoms::hide_as(const ex& key, const ex& e) {
@@ -628,7 +616,7 @@ ex instantiate(const ex& e, const Instance& instance, const AtIndex& at_index) {
     if (x.nops() == 0) {
       return x.subs(instance.limits);
     }
-    return map_parts(x, walk);
+    return sym::map_parts(x, walk);
   };
   return walk(e);
 }
@@ -749,7 +737,7 @@ ex rewritten(const ex& e, const std::vector<Rule>& rules) {
     if (x.nops() == 0) {
       return x;
     }
-    return map_parts(x, walk);
+    return sym::map_parts(x, walk);
   };
   return walk(e);
 }

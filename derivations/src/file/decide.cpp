@@ -742,6 +742,16 @@ ex put_in_below_zero(const ex& e, const ex& symbol, const ex& value, const ex& u
   return each(e);
 }
 
+// @p e with the base of every root (a power to a fraction) expanded, inside and out.
+ex bases_expanded(const ex& e) {
+  const ex inside = sym::map_parts(e, bases_expanded);
+  if (is_a<GiNaC::power>(inside) && is_a<numeric>(inside.op(1)) &&
+      !inside.op(1).info(GiNaC::info_flags::integer)) {
+    return GiNaC::pow(GiNaC::expand(inside.op(0)), inside.op(1));
+  }
+  return inside;
+}
+
 struct Solved {
   ex symbol;
   ex value;
@@ -1359,9 +1369,17 @@ class Decider {
     return found;
   }
 
-  // No premise left and the target does not vanish: look for a point that shows it.
+  // No premise left and the target does not vanish: look for a point that shows it. (First, with
+  // every root's base expanded: √((A - x)(A + x)) and √(A² - x²) are one root, which GiNaC does
+  // not see.)
   Found leaf(const Frame& frame, const ex& target, bool exact_only = true) {
     Found found;
+    if (expanded_terms(target) <= budget_.terms &&
+        GiNaC::normal(bases_expanded(target)).is_zero()) {
+      found.outcome = Implied::holds;
+      found.how.push_back("it holds once the bases of its roots are expanded");
+      return found;
+    }
     found.residual = frame.target;
     found.point = counterexample(frame, exact_only);
     if (found.point) {
