@@ -2101,12 +2101,13 @@ void at_odd_pi(Found& found, const Problem& original, const TrigRewrite& rewrite
       }
     }
     // A condition found already vanishes there (sin θ ≠ 0 leaves θ = π out): nothing to add.
+    const ex the_angle = angle;  // a structured binding, which clang 14 lets no lambda name
     const bool left_out =
         defined && std::any_of(found.conditions.begin(), found.conditions.end(), [&](const ex& c) {
           try {
             return GiNaC::normal(c.subs(there)).is_zero() ||
-                   (is_a<GiNaC::symbol>(angle) &&
-                    GiNaC::normal(c.subs(angle == GiNaC::Pi)).is_zero());
+                   (is_a<GiNaC::symbol>(the_angle) &&
+                    GiNaC::normal(c.subs(the_angle == GiNaC::Pi)).is_zero());
           } catch (const std::exception&) {
             return false;
           }
