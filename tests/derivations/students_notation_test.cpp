@@ -329,6 +329,12 @@ TEST_CASE("Students' e and i: Euler's number upright, e to a power and a lone i 
   const std::string half = "assume: \\tau > 0\n\n$$\\frac12 = \\mathrm{e}^{-T/\\tau}$$\n\n";
   CHECK(verdicts(half + "$$T = \\tau \\ln 2$$").back() == "follows");
   CHECK(verdicts(half + "$$T = 2 \\tau \\ln 2$$").back() == "does-not-follow");
+  // Only where the exponential's factor cannot be 0: y (e^x - 1) = z (e^x - 1) holds at y = z for
+  // every x, so y = z follows where e^x ≠ 1 (it was read as x = 0 besides, which made x = 0, y = 1,
+  // z = -1 a counterexample, and the step red).
+  CHECK(
+      verdicts("assume: x \\ge 0\n\n$$y (\\exp(x) - 1) = z (\\exp(x) - 1)$$\n\n$$y = z$$").back() ==
+      "follows-if");
   // e^{-T} = -1 holds for no real T: nothing is added, the premise is refused as before.
   refused("$$\\mathrm{e}^{-T} = -1$$\n\n$$T = 0$$", 1, 3, "no values satisfy");
   same("\\mathrm{e}", "\\exp(1)");

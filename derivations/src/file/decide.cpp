@@ -2277,9 +2277,9 @@ std::string inverted_on_range(Problem& problem, const Facts& facts) {
   return rewritten;
 }
 
-// f - ln(-R/k) for a premise k e^f + R, its one exponential in no other term, where -R/k is a
-// positive number or the facts keep it positive (1/2 = e^{-T/τ} gives -T/τ = ln(1/2), in which T
-// can be solved for); else nothing.
+// f - ln(-R/k) for a premise k e^f + R, its one exponential in no other term, where the facts
+// keep k from 0 and -R/k is a positive number or the facts keep it positive (1/2 = e^{-T/τ} gives
+// -T/τ = ln(1/2), in which T can be solved for); else nothing.
 std::optional<ex> exponential_logarithm(const ex& premise, const Facts& facts) {
   std::optional<ex> exponential;
   for (GiNaC::const_preorder_iterator it = premise.preorder_begin(); it != premise.preorder_end();
@@ -2302,6 +2302,11 @@ std::optional<ex> exponential_logarithm(const ex& premise, const Facts& facts) {
   const ex k = p.coeff(*exponential, 1);
   const ex rest = GiNaC::expand(p - k * *exponential);
   if (k.has(*exponential) || rest.has(*exponential)) {
+    return std::nullopt;
+  }
+  // Only where k cannot be 0: y (e^x - 1) = z (e^x - 1) holds at y = z whatever x is, and
+  // does not give x = 0.
+  if (!(is_a<numeric>(k) && !k.is_zero()) && !facts.nonzero(k)) {
     return std::nullopt;
   }
   const ex value = GiNaC::normal(-rest / k);
