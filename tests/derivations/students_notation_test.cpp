@@ -399,13 +399,6 @@ TEST_CASE("Students' calculus: functions of t, derivatives, integrals, sums",
   const std::string decay = "function: x\n\n$$\\dot x = -k x$$\n\n";
   CHECK(verdicts(decay + "$$\\dot x = k x$$").back() == "does-not-follow");
   CHECK(verdicts(decay + "$$\\dot x + k x = 0$$").back() == "follows");
-  // x(t) = A cos ωt written out, the slip x'' = ω² x fails at the numeric method's points (x'' =
-  // -A ω² cos ωt, so the step is 2 A ω² cos ωt = 0); it was undecided, the equation before,
-  // 0 = 0 once x is put in, having nothing to be solved for.
-  CHECK(verdicts("function: x\n\n$$x(t) = A \\cos(\\omega t)$$\n\n$$\\ddot x = \\omega^2 x$$")
-            .back() == "does-not-follow");
-  CHECK(verdicts("function: x\n\n$$x(t) = A \\cos(\\omega t)$$\n\n$$\\ddot x = -\\omega^2 x$$")
-            .back() == "follows-one-way");
   // F(t) declared a function is F of t; J = ∫ F dt does not give F T^2 / 2.
   CHECK(verdicts("function: F\n\n$$J = \\int_0^T F(t)\\,dt$$\n\n$$J = \\frac{F T^2}{2}$$") ==
         std::vector<std::string>{"premise", "does-not-follow"});

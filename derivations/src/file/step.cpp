@@ -1013,12 +1013,6 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
   Facts f = facts;
   std::vector<ex> all = before.differences;
   all.insert(all.end(), step.differences.begin(), step.differences.end());
-  // Whether functions stay unknown once the rules are put in (p of dp/dt = F_0 does; x of
-  // x(t) = A cos ωt does not): then the points are taken under a formula for them.
-  std::vector<ex> ruled = b.differences;
-  ruled.insert(ruled.end(), s.differences.begin(), s.differences.end());
-  const bool formulas =
-      std::any_of(ruled.begin(), ruled.end(), [](const ex& x) { return has_atoms(x); });
   if (std::any_of(all.begin(), all.end(), [](const ex& x) { return has_atoms(x); })) {
     const std::vector<Instance> list = instances(all, 1);
     std::vector<std::pair<ex, ex>> renamed;
@@ -1054,18 +1048,8 @@ NumericOpinion Checker::numeric(const Scalars& before, const Scalars& step, cons
     f = facts.carried(renamed);
   }
   NumericOpinion numeric;
-  // An equation before that its own rule makes 0 = 0 (x(t) = A cos ωt, once x is put in) holds
-  // everywhere: there is nothing to solve it for, and the points need not satisfy it. Not where a
-  // formula stands for a function: under p(u) = 1, dp/dt = F_0 (0 = 0 once put in) says F_0 = 0,
-  // which points drawn without it would not keep.
-  std::vector<ex> premises;
-  std::vector<ex> scales;
-  for (std::size_t k = 0; k < b.differences.size(); ++k) {
-    if (formulas || !b.differences[k].is_zero()) {
-      premises.push_back(b.differences[k]);
-      scales.push_back(b.scales[k]);
-    }
-  }
+  std::vector<ex> premises = b.differences;
+  std::vector<ex> scales = b.scales;
   for (const ex& q : f.equalities()) {
     premises.push_back(q);
     scales.push_back(term_scale(q));
