@@ -484,6 +484,29 @@ Compiled compile(const ex& e, const std::vector<ex>& symbols) {
   return compiled;
 }
 
+bool is_function(const ex& e, const char* name) {
+  return GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == name;
+}
+
+bool is_even_root(const ex& e) {
+  return GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+         !e.op(1).info(GiNaC::info_flags::integer) &&
+         GiNaC::ex_to<GiNaC::numeric>(e.op(1)).denom().is_even();
+}
+
+std::optional<std::pair<ex, ex>> linear_in(const ex& e, const ex& p) {
+  const ex expanded = GiNaC::expand(e);
+  if (!expanded.is_polynomial(p) || expanded.degree(p) != 1) {
+    return std::nullopt;
+  }
+  const ex k = expanded.coeff(p, 1);
+  const ex m = GiNaC::expand(expanded - k * p);
+  if (k.has(p) || m.has(p)) {
+    return std::nullopt;
+  }
+  return std::pair{k, m};
+}
+
 ex map_parts(const ex& e, const std::function<ex(const ex&)>& f) {
   struct Mapper : GiNaC::map_function {
     const std::function<ex(const ex&)>& f;

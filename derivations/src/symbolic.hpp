@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -68,6 +69,17 @@ using CanonicalForms = std::map<ex, std::string, GiNaC::ex_is_less>;
 
 /// GiNaC's map with a function: @p e with each of its operands replaced by @p f of it.
 [[nodiscard]] ex map_parts(const ex& e, const std::function<ex(const ex&)>& f);
+
+/// Whether @p e is a call of the GiNaC function named @p name ("log", "exp", "abs", "sin", ...).
+[[nodiscard]] bool is_function(const ex& e, const char* name);
+
+/// Whether @p e is an even root, x^(p/q) with q even (√x, x^(3/2), x^(1/4)): real only where x is
+/// not negative.
+[[nodiscard]] bool is_even_root(const ex& e);
+
+/// k and m where @p e = k p + m, linear in the part p (a symbol, or any expression taken as one:
+/// e^x, √x, |x|) and neither k nor m holding p; else nothing. k is not 0.
+[[nodiscard]] std::optional<std::pair<ex, ex>> linear_in(const ex& e, const ex& p);
 
 /// Calls @p each with every factor of @p e when it is a product, else with @p e itself.
 /// @param e an expression

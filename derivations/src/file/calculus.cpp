@@ -170,19 +170,6 @@ ex product_over(const ex& body, const ex& index, const ex& lower, const ex& uppe
 
 namespace {
 
-// k and m when e = k x + m with k ≠ 0 and neither depending on x.
-std::optional<std::pair<ex, ex>> linear_in(const ex& e, const ex& x) {
-  const ex expanded = GiNaC::expand(e);
-  if (!expanded.is_polynomial(x) || expanded.degree(x) != 1) {
-    return std::nullopt;
-  }
-  return std::pair{expanded.coeff(x, 1), expanded.coeff(x, 0)};
-}
-
-bool named(const ex& e, const char* name) {
-  return is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == name;
-}
-
 // An antiderivative of g in x (g depends on x), where a formula is known.
 std::optional<ex> antiderivative(const ex& g, const ex& x, int depth = 0) {
   if (depth > 8) {
@@ -235,8 +222,9 @@ std::optional<ex> antiderivative(const ex& g, const ex& x, int depth = 0) {
     }
     if (rest.size() == 1 && !polynomial.is_equal(1)) {
       const ex f = rest[0];
-      const bool trig = named(f, "sin") || named(f, "cos") || named(f, "exp");
-      const auto km = trig ? linear_in(f.op(0), x) : std::nullopt;
+      const bool trig =
+          sym::is_function(f, "sin") || sym::is_function(f, "cos") || sym::is_function(f, "exp");
+      const auto km = trig ? sym::linear_in(f.op(0), x) : std::nullopt;
       if (km && GiNaC::expand(polynomial).degree(x) <= 6) {
         // ∫ P f = P F − ∫ P' F, with F an antiderivative of f.
         const auto outer = antiderivative(f, x, depth + 1);
@@ -255,7 +243,7 @@ std::optional<ex> antiderivative(const ex& g, const ex& x, int depth = 0) {
   if (is_a<GiNaC::power>(g)) {
     const ex base = g.op(0);
     const ex exponent = g.op(1);
-    const auto km = linear_in(base, x);
+    const auto km = sym::linear_in(base, x);
     if (km && !exponent.has(x)) {
       if (exponent.is_equal(-1)) {
         return GiNaC::log(base) / km->first;
@@ -265,14 +253,14 @@ std::optional<ex> antiderivative(const ex& g, const ex& x, int depth = 0) {
     return std::nullopt;
   }
   if (is_a<GiNaC::function>(g) && g.nops() == 1) {
-    const auto km = linear_in(g.op(0), x);
-    if (named(g, "sin") && km) {
+    const auto km = sym::linear_in(g.op(0), x);
+    if (sym::is_function(g, "sin") && km) {
       return -GiNaC::cos(g.op(0)) / km->first;
     }
-    if (named(g, "cos") && km) {
+    if (sym::is_function(g, "cos") && km) {
       return GiNaC::sin(g.op(0)) / km->first;
     }
-    if (named(g, "exp") && km) {
+    if (sym::is_function(g, "exp") && km) {
       return GiNaC::exp(g.op(0)) / km->first;
     }
   }
@@ -312,7 +300,7 @@ bool formulas_hold(const ex& g, const ex& x, const ex& a, const ex& b, const Sig
       continue;
     }
     const ex base = i->op(0);
-    if (!linear_in(base, x)) {
+    if (!sym::linear_in(base, x)) {
       return false;
     }
     // The base's value at a limit, or where only its sign is known, ±1 for that sign.

@@ -358,7 +358,7 @@ ex logarithm(const ex& a, const Facts& facts) {
   if (is_a<GiNaC::power>(a) && a.op(1).info(GiNaC::info_flags::even)) {
     return a.op(1) * logarithm(GiNaC::abs(a.op(0)), facts);
   }
-  if (is_a<GiNaC::function>(a) && GiNaC::ex_to<GiNaC::function>(a).get_name() == "exp") {
+  if (sym::is_function(a, "exp")) {
     return a.op(0);
   }
   return GiNaC::log(a);
@@ -407,8 +407,7 @@ ex exponential(const ex& y, const Facts& facts) {
     ex k = 1;
     std::optional<ex> argument;
     const auto factor = [&](const ex& f) {
-      if (is_a<GiNaC::function>(f) && GiNaC::ex_to<GiNaC::function>(f).get_name() == "log" &&
-          !argument && positive(f.op(0), facts)) {
+      if (sym::is_function(f, "log") && !argument && positive(f.op(0), facts)) {
         argument = f.op(0);
       } else {
         k *= f;
@@ -608,13 +607,13 @@ ex by_facts(const ex& e, const Facts& facts) {
     }
     return x;
   }
-  if (is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "log") {
+  if (sym::is_function(x, "log")) {
     return logarithm(x.op(0), facts);
   }
-  if (is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "exp") {
+  if (sym::is_function(x, "exp")) {
     return exponential(x.op(0), facts);
   }
-  if (is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "abs") {
+  if (sym::is_function(x, "abs")) {
     return magnitude(x.op(0), facts);
   }
   if (const auto inverse = inverse_of_own(x, facts)) {
@@ -1613,11 +1612,8 @@ class Decider {
   // is real: by_facts writes it as the real root.)
   static bool real_at(const ex& e, const GiNaC::exmap& point) {
     for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-      const bool even_root = is_a<GiNaC::power>(*it) && is_a<numeric>(it->op(1)) &&
-                             !it->op(1).info(GiNaC::info_flags::integer) &&
-                             GiNaC::ex_to<numeric>(it->op(1)).denom().is_even();
-      const bool logarithm =
-          is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == "log";
+      const bool even_root = sym::is_even_root(*it);
+      const bool logarithm = sym::is_function(*it, "log");
       if (!even_root && !logarithm) {
         continue;
       }
@@ -1911,8 +1907,7 @@ ex through_magnitude(const ex& e, const ex& x, const ex& magnitude) {
     const ex& magnitude;
     Each(const ex& a, const ex& b) : x(a), magnitude(b) {}
     ex operator()(const ex& part) override {
-      if (is_a<GiNaC::function>(part) && GiNaC::ex_to<GiNaC::function>(part).get_name() == "abs" &&
-          part.op(0).is_equal(x)) {
+      if (sym::is_function(part, "abs") && part.op(0).is_equal(x)) {
         return magnitude;
       }
       if (is_a<GiNaC::power>(part) && part.op(0).is_equal(x) &&
@@ -1936,8 +1931,7 @@ MagnitudeRewrite magnitudes(Problem& problem, Facts& facts) {
   std::vector<ex> inside;  // the symbols written as |x|
   for (const ex* e : all) {
     for (auto i = e->preorder_begin(); i != e->preorder_end(); ++i) {
-      if (is_a<GiNaC::function>(*i) && GiNaC::ex_to<GiNaC::function>(*i).get_name() == "abs" &&
-          is_a<GiNaC::symbol>(i->op(0)) &&
+      if (sym::is_function(*i, "abs") && is_a<GiNaC::symbol>(i->op(0)) &&
           std::none_of(inside.begin(), inside.end(),
                        [&](const ex& x) { return x.is_equal(i->op(0)); })) {
         inside.push_back(i->op(0));
@@ -2171,35 +2165,38 @@ void at_odd_pi(Found& found, const Problem& original, const TrigRewrite& rewrite
 // k² S - R² for a premise k P + R, linear in the part P (with S = P², written without P), whose
 // other terms R do not hold P (and nothing large); else nothing.
 std::optional<ex> squared_without(const ex& premise, const ex& part, const ex& square) {
-  if (expanded_terms(premise) > 20) {
+  const auto kr = expanded_terms(premise) > 20 ? std::nullopt : sym::linear_in(premise, part);
+  if (!kr) {
     return std::nullopt;
   }
-  const ex p = GiNaC::expand(premise);
-  if (!p.is_polynomial(part) || p.degree(part) != 1) {
-    return std::nullopt;
-  }
-  const ex k = p.coeff(part, 1);
-  const ex rest = GiNaC::expand(p - k * part);
-  if (k.has(part) || rest.has(part)) {
-    return std::nullopt;
-  }
+  const auto& [k, rest] = *kr;
   return GiNaC::expand(k * k * square - rest * rest);
+}
+
+// The part of @p premise that @p is says yes to, where every such part is the same one (√x twice
+// is one root); nothing where there is none or two differ.
+template <typename Is>
+std::optional<ex> only_part(const ex& premise, Is&& is) {
+  std::optional<ex> found;
+  for (GiNaC::const_preorder_iterator it = premise.preorder_begin(); it != premise.preorder_end();
+       ++it) {
+    if (is(*it)) {
+      if (found && !found->is_equal(*it)) {
+        return std::nullopt;
+      }
+      found = *it;
+    }
+  }
+  return found;
 }
 
 // k² A - R² for a premise k √A + R whose one square root √A of a symbol's expression is in no
 // other term (and nothing large): the premise squared, without its root; else nothing.
 std::optional<ex> root_squared(const ex& premise) {
-  std::optional<ex> root;
-  for (GiNaC::const_preorder_iterator it = premise.preorder_begin(); it != premise.preorder_end();
-       ++it) {
-    if (is_a<GiNaC::power>(*it) && it->op(1).is_equal(GiNaC::numeric(1, 2)) &&
-        !symbols_of(it->op(0)).empty()) {
-      if (root && !root->is_equal(*it)) {
-        return std::nullopt;  // two roots
-      }
-      root = *it;
-    }
-  }
+  const auto root = only_part(premise, [](const ex& e) {
+    return is_a<GiNaC::power>(e) && e.op(1).is_equal(GiNaC::numeric(1, 2)) &&
+           !symbols_of(e.op(0)).empty();
+  });
   return root ? squared_without(premise, *root, root->op(0)) : std::nullopt;
 }
 
@@ -2208,8 +2205,7 @@ std::optional<ex> root_squared(const ex& premise) {
 std::optional<ex> absolute_squared(const ex& premise) {
   for (GiNaC::const_preorder_iterator it = premise.preorder_begin(); it != premise.preorder_end();
        ++it) {
-    if (is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == "abs" &&
-        !symbols_of(it->op(0)).empty()) {
+    if (sym::is_function(*it, "abs") && !symbols_of(it->op(0)).empty()) {
       return squared_without(premise, *it, GiNaC::pow(it->op(0), 2));
     }
   }
@@ -2224,12 +2220,9 @@ Facts with_domain(const Facts& facts, const std::vector<ex>& premises) {
   Facts result = facts;
   for (const ex& p : premises) {
     for (GiNaC::const_preorder_iterator it = p.preorder_begin(); it != p.preorder_end(); ++it) {
-      if (is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == "log" &&
-          is_a<GiNaC::symbol>(it->op(0))) {
+      if (sym::is_function(*it, "log") && is_a<GiNaC::symbol>(it->op(0))) {
         (void)result.add(it->op(0), Sign::positive);
-      } else if (is_a<GiNaC::power>(*it) && is_a<GiNaC::symbol>(it->op(0)) &&
-                 is_a<numeric>(it->op(1)) && !it->op(1).info(GiNaC::info_flags::integer) &&
-                 GiNaC::ex_to<numeric>(it->op(1)).denom().is_even()) {
+      } else if (sym::is_even_root(*it) && is_a<GiNaC::symbol>(it->op(0))) {
         (void)result.add(it->op(0), Sign::nonnegative);
       }
     }
@@ -2286,29 +2279,16 @@ std::string inverted_on_range(Problem& problem, const Facts& facts) {
 // keep k from 0 and -R/k is a positive number or the facts keep it positive (1/2 = e^{-T/τ} gives
 // -T/τ = ln(1/2), in which T can be solved for); else nothing.
 std::optional<ex> exponential_logarithm(const ex& premise, const Facts& facts) {
-  std::optional<ex> exponential;
-  for (GiNaC::const_preorder_iterator it = premise.preorder_begin(); it != premise.preorder_end();
-       ++it) {
-    if (is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == "exp" &&
-        !symbols_of(it->op(0)).empty()) {
-      if (exponential && !exponential->is_equal(*it)) {
-        return std::nullopt;  // two exponentials
-      }
-      exponential = *it;
-    }
-  }
-  if (!exponential || expanded_terms(premise) > 20) {
+  const auto exponential = only_part(premise, [](const ex& e) {
+    return sym::is_function(e, "exp") && !symbols_of(e.op(0)).empty();
+  });
+  const auto kr = !exponential || expanded_terms(premise) > 20
+                      ? std::nullopt
+                      : sym::linear_in(premise, *exponential);
+  if (!kr) {
     return std::nullopt;
   }
-  const ex p = GiNaC::expand(premise);
-  if (!p.is_polynomial(*exponential) || p.degree(*exponential) != 1) {
-    return std::nullopt;
-  }
-  const ex k = p.coeff(*exponential, 1);
-  const ex rest = GiNaC::expand(p - k * *exponential);
-  if (k.has(*exponential) || rest.has(*exponential)) {
-    return std::nullopt;
-  }
+  const auto& [k, rest] = *kr;
   // Only where k cannot be 0: y (e^x - 1) = z (e^x - 1) holds at y = z whatever x is, and
   // does not give x = 0.
   if (!(is_a<numeric>(k) && !k.is_zero()) && !facts.nonzero(k)) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <utility>
 
 #include "symbolic.hpp"
 
@@ -13,24 +14,37 @@ namespace impulse::derivations::file {
 using GiNaC::ex;
 using GiNaC::is_a;
 
-std::string relation_latex(const std::string& what, Sign sign) {
+namespace {
+
+// A sign's relation in LaTeX and in plain text; nothing for unknown.
+std::pair<const char*, const char*> relation_of(Sign sign) {
   switch (sign) {
     case Sign::positive:
-      return what + " > 0";
+      return {" > 0", " > 0"};
     case Sign::negative:
-      return what + " < 0";
+      return {" < 0", " < 0"};
     case Sign::nonnegative:
-      return what + " \\geq 0";
+      return {" \\geq 0", " >= 0"};
     case Sign::nonpositive:
-      return what + " \\leq 0";
+      return {" \\leq 0", " <= 0"};
     case Sign::nonzero:
-      return what + " \\neq 0";
+      return {" \\neq 0", " != 0"};
     case Sign::zero:
-      return what + " = 0";
+      return {" = 0", " = 0"};
     case Sign::unknown:
       break;
   }
-  return what;
+  return {"", ""};
+}
+
+}  // namespace
+
+std::string relation_latex(const std::string& what, Sign sign) {
+  return what + relation_of(sign).first;
+}
+
+std::string relation_text(const std::string& what, Sign sign) {
+  return what + relation_of(sign).second;
 }
 
 bool gives(Sign known, Sign needed) {
@@ -326,10 +340,6 @@ Range exponential_range(const Range& a) {
     return low ? std::max(0.0, down(std::exp(v))) : up(std::exp(v));
   };
   return {at(a.low, true), at(a.high, false), a.low_open, a.high_open};
-}
-
-bool function_named(const ex& e, const char* name) {
-  return is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == name;
 }
 
 // sin or cos over a range of their argument no wider than a turn: the values at its ends, and ±1
@@ -667,17 +677,17 @@ Sign Facts::structural(const ex& e) const {
     }
     return base == Sign::positive ? Sign::positive : Sign::unknown;
   }
-  if (function_named(e, "exp")) {
+  if (sym::is_function(e, "exp")) {
     return Sign::positive;
   }
-  if (function_named(e, "abs")) {
+  if (sym::is_function(e, "abs")) {
     const Sign inner = sign(e.op(0));
     return inner == Sign::unknown                      ? Sign::nonnegative
            : inner == Sign::zero                       ? Sign::zero
            : (strict(inner) || inner == Sign::nonzero) ? Sign::positive
                                                        : Sign::nonnegative;
   }
-  if (function_named(e, "indexed_sum")) {
+  if (sym::is_function(e, "indexed_sum")) {
     // A sum of at least one term (its upper limit is at least its lower): as its terms.
     const Sign body = sign(e.op(0));
     return body == Sign::positive || body == Sign::negative || at_least_zero(body) ||
@@ -685,7 +695,7 @@ Sign Facts::structural(const ex& e) const {
                ? body
                : Sign::unknown;
   }
-  if (function_named(e, "indexed_product")) {
+  if (sym::is_function(e, "indexed_product")) {
     const Sign body = sign(e.op(0));
     return body == Sign::positive ? Sign::positive : Sign::unknown;
   }
@@ -759,7 +769,7 @@ std::optional<std::pair<GiNaC::numeric, ex>> scaled_function(
   std::optional<ex> f;
   const auto factor = [&](const ex& x) {
     const bool named = std::any_of(names.begin(), names.end(),
-                                   [&](const char* name) { return function_named(x, name); });
+                                   [&](const char* name) { return sym::is_function(x, name); });
     if (is_a<GiNaC::numeric>(x)) {
       k *= GiNaC::ex_to<GiNaC::numeric>(x);
     } else if (!f && named) {
@@ -809,8 +819,8 @@ namespace {
 // told, or when the range spans more than eight turns.
 std::optional<bool> reaches(const ex& f, const ex& v, const Facts::End& from, const Facts::End& to,
                             const GiNaC::numeric& from_value, const GiNaC::numeric& to_value) {
-  const bool tangent = function_named(f, "tan");
-  const bool sine = function_named(f, "sin");
+  const bool tangent = sym::is_function(f, "tan");
+  const bool sine = sym::is_function(f, "sin");
   const double step = tangent ? 3.141592653589793 : 6.283185307179586;
   if (!((to_value - from_value).to_double() / step < 8)) {
     return std::nullopt;
@@ -1207,8 +1217,10 @@ Sign Facts::of_range(const ex& e) const {
       const Range base = range(x.op(0));
       return k >= 0 ? integer_power(base, k) : inverse(integer_power(base, -k));
     }
-    if (function_named(x, "sin") || function_named(x, "cos") || function_named(x, "tan")) {
-      const char function = function_named(x, "sin") ? 's' : function_named(x, "cos") ? 'c' : 't';
+    if (sym::is_function(x, "sin") || sym::is_function(x, "cos") || sym::is_function(x, "tan")) {
+      const char function = sym::is_function(x, "sin")   ? 's'
+                            : sym::is_function(x, "cos") ? 'c'
+                                                         : 't';
       Range a = range(x.op(0));
       const auto [exact_low, exact_high] = exact_wave_ends(x.op(0), function, a.low, a.high);
       if (exact_low || exact_high) {
@@ -1223,7 +1235,7 @@ Sign Facts::of_range(const ex& e) const {
       return function == 't' ? tangent(a, exact_low, exact_high)
                              : wave(a, function == 'c', exact_low, exact_high);
     }
-    if (function_named(x, "log")) {
+    if (sym::is_function(x, "log")) {
       const Range a = range(x.op(0));
       if (a.low < 0 || (a.low == 0 && !a.low_open)) {
         return {};
@@ -1233,10 +1245,10 @@ Sign Facts::of_range(const ex& e) const {
       return {a.low == 0 ? -infinity : log_down(a.low),
               a.high == infinity ? infinity : log_up(a.high), a.low_open, a.high_open};
     }
-    if (function_named(x, "abs")) {
+    if (sym::is_function(x, "abs")) {
       return magnitude_range(range(x.op(0)));
     }
-    if (function_named(x, "exp")) {
+    if (sym::is_function(x, "exp")) {
       return exponential_range(range(x.op(0)));
     }
     return {};

@@ -33,6 +33,9 @@ enum class Sign {
 /// The LaTeX relation of a sign fact about @p what ("m_1 > 0").
 [[nodiscard]] std::string relation_latex(const std::string& what, Sign sign);
 
+/// The same in plain text ("m_1 >= 0").
+[[nodiscard]] std::string relation_text(const std::string& what, Sign sign);
+
 /// Whether a quantity of sign @p known has sign @p needed too (> 0 gives ≥ 0 and ≠ 0).
 [[nodiscard]] bool gives(Sign known, Sign needed);
 

@@ -172,7 +172,7 @@ ex in_sines(const ex& e) {
   }
   struct Sines : GiNaC::map_function {
     ex operator()(const ex& x) override {
-      if (GiNaC::is_a<GiNaC::function>(x) && GiNaC::ex_to<GiNaC::function>(x).get_name() == "tan") {
+      if (sym::is_function(x, "tan")) {
         return GiNaC::sin(x.op(0)) / GiNaC::cos(x.op(0));
       }
       return x.map(*this);
@@ -488,8 +488,7 @@ void Checker::sums_in_one_form(Scalars& before, Scalars& step, Facts& facts) {
   for (const std::vector<ex>* list : lists) {
     for (const ex& e : *list) {
       for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
-        if (GiNaC::is_a<GiNaC::function>(*i) &&
-            GiNaC::ex_to<GiNaC::function>(*i).get_name() == "indexed_sum") {
+        if (sym::is_function(*i, "indexed_sum")) {
           std::ostringstream text;
           text << *i;
           sums.emplace_back(text.str(), *i);
@@ -694,11 +693,8 @@ bool signed_by_symbols(const ex& e) {
 // of its even roots (not negative), each once, in the order found; only of arguments that are
 // products of symbols (signed_by_symbols).
 void domain_signs(const ex& e, std::vector<std::pair<ex, Sign>>& out) {
-  const bool logarithm =
-      GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "log";
-  const bool even_root = GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
-                         !e.op(1).info(GiNaC::info_flags::integer) &&
-                         GiNaC::ex_to<GiNaC::numeric>(e.op(1)).denom().is_even();
+  const bool logarithm = sym::is_function(e, "log");
+  const bool even_root = sym::is_even_root(e);
   if ((logarithm || even_root) && signed_by_symbols(e.op(0))) {
     const Sign sign = logarithm ? Sign::positive : Sign::nonnegative;
     for (const ex& s : symbols_of(e.op(0))) {
@@ -790,6 +786,9 @@ std::optional<std::vector<ex>> by_powers(const ex& written, const std::vector<ex
   std::vector<ex> parts{written};
   std::vector<std::pair<ex, ex>> exponentials;  // e^v and the symbol standing for it
   for (const ex& v : variables) {
+    if (!written.has(GiNaC::exp(v))) {
+      continue;
+    }
     const GiNaC::symbol e_v("exp_" + plain_of(v));
     exponentials.emplace_back(GiNaC::exp(v), e_v);
     for (ex& part : parts) {
@@ -952,8 +951,7 @@ void Checker::drop_given_conditions(Implication& forward, const Scalars& before,
     }
     std::vector<ex> premises = before.differences;
     // |X| = 0 where X = 0: the exact method reads the latter.
-    const bool absolute =
-        GiNaC::is_a<GiNaC::function>(c) && GiNaC::ex_to<GiNaC::function>(c).get_name() == "abs";
+    const bool absolute = sym::is_function(c, "abs");
     premises.push_back(absolute ? c.op(0) : c);
     premises.insert(premises.end(), facts.equalities().begin(), facts.equalities().end());
     const Implication there = implies({premises, before.denominators, 1, {}}, facts, quick);
@@ -1267,8 +1265,7 @@ void Checker::condition(const Implication& forward, const Scalars& before, const
   }
   for (const auto& [symbol, sign] : forward.signs) {
     latex.push_back(relation_latex(latex_of(symbol), sign));
-    plain += std::string(plain.empty() ? "" : ", ") + plain_of(symbol) +
-             (sign == Sign::positive ? " > 0" : " >= 0");
+    plain += std::string(plain.empty() ? "" : ", ") + relation_text(plain_of(symbol), sign);
   }
   std::string joined;
   for (const std::string& l : latex) {
