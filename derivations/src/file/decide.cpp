@@ -1298,9 +1298,11 @@ class Decider {
       if (const auto quotient = divides(p, target)) {
         Found found;
         found.outcome = Implied::holds;
-        found.how.push_back(is_a<numeric>(*quotient)
-                                ? "the step is the equation before, rewritten"
-                                : "the step is the equation before times " + text(*quotient));
+        found.how.push_back(
+            is_a<numeric>(*quotient)
+                ? "the step is the equation before, rewritten"
+                : "the step is the equation before times " +
+                      text(factorable(*quotient) ? factored(*quotient) : *quotient));
         return found;
       }
       if (!divided) {

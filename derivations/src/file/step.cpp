@@ -736,6 +736,9 @@ bool Checker::domain_reading(const Scalars& before, const Scalars& step, const F
       }
     }
   }
+  // By name: GiNaC's order of a sum's terms, and so the order found, may differ between builds.
+  std::sort(found.begin(), found.end(),
+            [](const auto& a, const auto& b) { return plain_of(a.first) < plain_of(b.first); });
   Facts with = facts;
   std::vector<std::pair<ex, Sign>> assumed;
   for (const auto& [symbol, sign] : found) {
@@ -767,8 +770,9 @@ bool Checker::domain_reading(const Scalars& before, const Scalars& step, const F
   }
   i.how = (i.how.empty() ? std::string("it holds once the equations before are used") : i.how) +
           " where " + signs +
-          " (the rules of roots and logarithms hold where their arguments are not negative and "
-          "positive; the facts do not give these signs: assume them where they hold)";
+          " (the rules of roots and logarithms hold where a root's argument is not negative and a "
+          "logarithm's is positive; the facts do not give these signs: assume them where they "
+          "hold)";
   forward = read;
   opinion = numeric(before, step, forward, with, index, budget);
   return true;
