@@ -517,4 +517,11 @@ ex map_parts(const ex& e, const std::function<ex(const ex&)>& f) {
   return e.map(m);
 }
 
+ex rewritten(const ex& e, const std::function<std::optional<ex>(const ex&)>& f) {
+  if (const auto replaced = f(e)) {
+    return *replaced;
+  }
+  return map_parts(e, [&f](const ex& part) { return rewritten(part, f); });
+}
+
 }  // namespace impulse::derivations::sym

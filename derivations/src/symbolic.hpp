@@ -70,6 +70,10 @@ using CanonicalForms = std::map<ex, std::string, GiNaC::ex_is_less>;
 /// GiNaC's map with a function: @p e with each of its operands replaced by @p f of it.
 [[nodiscard]] ex map_parts(const ex& e, const std::function<ex(const ex&)>& f);
 
+/// @p e rewritten from the top down: where @p f gives an expression for a part (@p e itself
+/// first), the part is replaced by it and not looked into; elsewhere its operands are rewritten.
+[[nodiscard]] ex rewritten(const ex& e, const std::function<std::optional<ex>(const ex&)>& f);
+
 /// Whether @p e is a call of the GiNaC function named @p name ("log", "exp", "abs", "sin", ...).
 [[nodiscard]] bool is_function(const ex& e, const char* name);
 

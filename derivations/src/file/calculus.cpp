@@ -376,19 +376,14 @@ ex integrals_by_sign(const ex& e, const SignOf& sign) {
                    [](const ex& x) { return is_a<GiNaC::integral>(x); })) {
     return e;
   }
-  struct Each : GiNaC::map_function {
-    const SignOf& sign;
-    explicit Each(const SignOf& s) : sign(s) {}
-    ex operator()(const ex& part) override {
-      const ex inner = part.map(*this);
-      if (is_a<GiNaC::integral>(inner)) {
-        // op(0) the variable, op(1) and op(2) the limits, op(3) the integrand.
-        return integrate(inner.op(3), inner.op(0), inner.op(1), inner.op(2), sign);
-      }
-      return inner;
-    }
-  } each(sign);
-  return each(e);
+  // From the bottom up: an integral's integrand and limits first.
+  const ex inner =
+      sym::map_parts(e, [&sign](const ex& part) { return integrals_by_sign(part, sign); });
+  if (is_a<GiNaC::integral>(inner)) {
+    // op(0) the variable, op(1) and op(2) the limits, op(3) the integrand.
+    return integrate(inner.op(3), inner.op(0), inner.op(1), inner.op(2), sign);
+  }
+  return inner;
 }
 
 // ---- atoms -------------------------------------------------------------------------------------

@@ -566,12 +566,7 @@ ex by_facts(const ex& e, const Facts& facts) {
   if (e.nops() == 0 || !needs_facts(e)) {
     return e;
   }
-  struct Each : GiNaC::map_function {
-    const Facts& facts;
-    explicit Each(const Facts& f) : facts(f) {}
-    ex operator()(const ex& part) override { return by_facts(part, facts); }
-  } each(facts);
-  const ex x = e.map(each);
+  const ex x = sym::map_parts(e, [&facts](const ex& part) { return by_facts(part, facts); });
   if (is_a<GiNaC::power>(x)) {
     const ex base = x.op(0);
     const ex exponent = x.op(1);
@@ -714,31 +709,22 @@ std::optional<ex> reciprocal_under_power(const ex& e, const ex& symbol, const ex
 // which GiNaC leaves as it is.
 ex put_in_below_zero(const ex& e, const ex& symbol, const ex& value, const ex& under,
                      const Facts& facts) {
-  struct Each : GiNaC::map_function {
-    const ex& symbol;
-    const ex& value;
-    const ex& under;
-    const Facts& facts;
-    Each(const ex& s, const ex& v, const ex& u, const Facts& f)
-        : symbol(s), value(v), under(u), facts(f) {}
-    ex operator()(const ex& part) override {
-      if (!part.has(symbol)) {
-        return part;
-      }
-      if (part.nops() == 0) {
-        return part.subs(GiNaC::exmap{{symbol, value}});
-      }
-      if (is_a<GiNaC::power>(part) && !part.op(1).info(GiNaC::info_flags::integer)) {
-        const auto reciprocal = over_something(base_put_in(part.op(0), symbol, value), facts);
-        if (reciprocal && reciprocal->second.is_equal(under)) {
-          const ex c = part.op(1).subs(GiNaC::exmap{{symbol, value}});
-          return GiNaC::pow(reciprocal->first, c) * GiNaC::pow(-1, c) * GiNaC::pow(-under, -c);
-        }
-      }
-      return part.map(*this);
+  return sym::rewritten(e, [&](const ex& part) -> std::optional<ex> {
+    if (!part.has(symbol)) {
+      return part;
     }
-  } each(symbol, value, under, facts);
-  return each(e);
+    if (part.nops() == 0) {
+      return part.subs(GiNaC::exmap{{symbol, value}});
+    }
+    if (is_a<GiNaC::power>(part) && !part.op(1).info(GiNaC::info_flags::integer)) {
+      const auto reciprocal = over_something(base_put_in(part.op(0), symbol, value), facts);
+      if (reciprocal && reciprocal->second.is_equal(under)) {
+        const ex c = part.op(1).subs(GiNaC::exmap{{symbol, value}});
+        return GiNaC::pow(reciprocal->first, c) * GiNaC::pow(-1, c) * GiNaC::pow(-under, -c);
+      }
+    }
+    return std::nullopt;
+  });
 }
 
 // @p e with the base of every root (a power to a fraction) expanded, inside and out.
@@ -1904,22 +1890,16 @@ struct MagnitudeRewrite {
 
 // @p e with |x| and the even powers of x written through @p magnitude.
 ex through_magnitude(const ex& e, const ex& x, const ex& magnitude) {
-  struct Each : GiNaC::map_function {
-    const ex& x;
-    const ex& magnitude;
-    Each(const ex& a, const ex& b) : x(a), magnitude(b) {}
-    ex operator()(const ex& part) override {
-      if (sym::is_function(part, "abs") && part.op(0).is_equal(x)) {
-        return magnitude;
-      }
-      if (is_a<GiNaC::power>(part) && part.op(0).is_equal(x) &&
-          part.op(1).info(GiNaC::info_flags::even)) {
-        return GiNaC::pow(magnitude, part.op(1));
-      }
-      return part.map(*this);
+  return sym::rewritten(e, [&](const ex& part) -> std::optional<ex> {
+    if (sym::is_function(part, "abs") && part.op(0).is_equal(x)) {
+      return magnitude;
     }
-  } each(x, magnitude);
-  return each(e);
+    if (is_a<GiNaC::power>(part) && part.op(0).is_equal(x) &&
+        part.op(1).info(GiNaC::info_flags::even)) {
+      return GiNaC::pow(magnitude, part.op(1));
+    }
+    return std::nullopt;
+  });
 }
 
 MagnitudeRewrite magnitudes(Problem& problem, Facts& facts) {

@@ -170,16 +170,14 @@ ex in_sines(const ex& e) {
   if (expanded_terms(e) > 200) {
     return e;
   }
-  struct Sines : GiNaC::map_function {
-    ex operator()(const ex& x) override {
-      if (sym::is_function(x, "tan")) {
-        return GiNaC::sin(x.op(0)) / GiNaC::cos(x.op(0));
-      }
-      return x.map(*this);
+  const auto sines = [](const ex& x) -> std::optional<ex> {
+    if (sym::is_function(x, "tan")) {
+      return GiNaC::sin(x.op(0)) / GiNaC::cos(x.op(0));
     }
-  } sines;
+    return std::nullopt;
+  };
   try {
-    return GiNaC::normal(sines(e)).numer();
+    return GiNaC::normal(sym::rewritten(e, sines)).numer();
   } catch (const std::exception&) {
     return e;
   }

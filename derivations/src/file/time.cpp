@@ -223,28 +223,17 @@ std::size_t TimedExpression::compile(const GiNaC::ex& e, std::vector<GiNaC::ex>&
   return ops_.size() - 1;
 }
 
-namespace {
-
-struct ShapeOutsideIntegrals : GiNaC::map_function {
-  explicit ShapeOutsideIntegrals(const GiNaC::exmap& shaped) : shaped_(shaped) {}
-  GiNaC::ex operator()(const GiNaC::ex& e) override {
-    if (GiNaC::is_a<GiNaC::integral>(e)) {
-      return e;
-    }
-    if (GiNaC::is_a<GiNaC::symbol>(e)) {
-      const auto found = shaped_.find(e);
-      return found == shaped_.end() ? e : found->second;
-    }
-    return e.map(*this);
-  }
-  const GiNaC::exmap& shaped_;
-};
-
-}  // namespace
-
 GiNaC::ex shaped_outside_integrals(const GiNaC::ex& e, const GiNaC::exmap& shaped) {
-  ShapeOutsideIntegrals shape(shaped);
-  return shape(e);
+  return sym::rewritten(e, [&shaped](const GiNaC::ex& part) -> std::optional<GiNaC::ex> {
+    if (GiNaC::is_a<GiNaC::integral>(part)) {
+      return part;
+    }
+    if (GiNaC::is_a<GiNaC::symbol>(part)) {
+      const auto found = shaped.find(part);
+      return found == shaped.end() ? part : found->second;
+    }
+    return std::nullopt;
+  });
 }
 
 double TimedExpression::operator()(std::span<const double> values, const PulseShape* shape) const {
