@@ -282,6 +282,12 @@ TEST_CASE("Students' functions: inverse, hyperbolic, logarithms, arguments witho
   refused("$$y = \\sin\\theta\\, t^2$$", 1, 20, "'\\,'");
   refused("$$W = F\\cos\\theta \\cdot d$$\n\n$$W = F d \\cos\\theta$$", 1, 19, "'\\cdot'");
   refused("$$y = \\sin\\theta/2$$", 1, 17, "'/'");
+  // The two readings are shown in the file's own text (they were shown on \cos\theta and d).
+  refused("$$y = \\sin\\theta/2$$", 1, 17,
+          "write \\sin(\\theta / 2) for the one, (\\sin\\theta) / 2 for the other");
+  refused("$$y = \\sin 2\\omega \\sqrt{m}$$", 1, 20,
+          "write \\sin(2\\omega \\sqrt{m}) for the one, (\\sin 2\\omega) \\sqrt{m} or "
+          "\\sqrt{m} \\sin 2\\omega for the other");
   same("\\sin^2 x", "(\\sin x)^2");
   same("\\log_2 8", "3");
   // e is a symbol (an elasticity), not Euler's number: ln(e^2) = 2 ln e, not 2.

@@ -167,6 +167,40 @@ bool Grammar::explicit_product(const Token& t) const {
 // product-op := '\cdot' | '\times' | '*' | '/' | '\div' | '\ast'
 // (factors side by side multiply; a big operator takes the rest of the term; inside a
 // function's argument written without parentheses, the term stops before the next function)
+// The refusal of a function's bare argument that would run on at @p at (the factor, or the
+// operator before it), with the two readings in the writer's own text: "write \\sin(\\theta d) for
+// the one, (\\sin\\theta) d for the other". The factor is read ahead to find where it ends; where
+// that fails, or the texts are long, the readings are shown on \\cos\\theta and d.
+ReadError Grammar::runs_on(const Token& at, const std::string& past) {
+  const std::string& text = source_.text();
+  const std::size_t argument_end = last_end_;
+  std::string readings = "\\cos(\\theta d) for the one, (\\cos\\theta) d or d \\cos\\theta";
+  try {
+    std::string op;
+    if (explicit_product(at)) {
+      op = take().text + " ";
+    }
+    const std::size_t factor_start = peek().offset;
+    (void)factor(0);
+    const Token& f = bare_functions_.back();
+    const std::string written = text.substr(f.offset, argument_end - f.offset);
+    const std::string argument = trimmed(text.substr(f.end, argument_end - f.end));
+    const std::string name = text.substr(f.offset, f.end - f.offset);
+    const std::string after = trimmed(text.substr(factor_start, last_end_ - factor_start));
+    if (written.size() + after.size() <= 60 && !argument.empty() && !after.empty()) {
+      const bool division = is_char(at, '/') || is_command(at, "\\div");
+      readings = name + "(" + argument + " " + op + after + ") for the one, (" + written + ") " +
+                 op + after + (division ? "" : " or " + after + " " + written);
+    }
+  } catch (const std::exception&) {
+    // the factor could not be read ahead: the readings on an example
+  }
+  return error(at,
+               "expected parentheses around the argument of a function: written without them, "
+               "it would run on " +
+                   past + "; write " + readings + " for the other");
+}
+
 Node Grammar::term(std::size_t depth) {
   enter(depth, peek());
   const std::size_t start = peek().offset;
@@ -189,12 +223,9 @@ Node Grammar::term(std::size_t depth) {
          (starts_atom(next) && position_ > 0 && tokens_[position_ - 1].kind == Tok::spacing))) {
       // F \cos\theta \cdot d was cos(θ d), \sin\theta/2 sin(θ/2), v_0 \cos\theta\, t_f
       // cos(θ t_f): the writer may have meant the factor outside.
-      throw error(next,
-                  "expected parentheses around the argument of a function: written "
-                  "without them, it would run on past " +
-                      describe(explicit_product(next) ? next : tokens_[position_ - 1]) +
-                      ", where the factor after may be meant outside; write \\cos(\\theta "
-                      "d) for the one, (\\cos\\theta) d or d \\cos\\theta for the other");
+      throw runs_on(next, "past " +
+                              describe(explicit_product(next) ? next : tokens_[position_ - 1]) +
+                              ", where the factor after may be meant outside");
     }
     if (bare_argument_ > 0 &&
         (is_char(next, '(') || is_char(next, '[') || is_command(next, "\\left") ||
@@ -204,13 +235,7 @@ Node Grammar::term(std::size_t depth) {
       throw error(next, std::string(runs_into_group));
     }
     if (bare_argument_ > 0 && runs_into_factor(next)) {
-      throw error(next,
-                  "expected parentheses around the argument of a function: written "
-                  "without them, it would run on into " +
-                      describe(next) +
-                      ", which may be meant outside; write \\cos(\\theta \\sqrt{m}) for "
-                      "the one, (\\cos\\theta) \\sqrt{m} or \\sqrt{m} \\cos\\theta for "
-                      "the other");
+      throw runs_on(next, "into " + describe(next) + ", which may be meant outside");
     }
     if (big_operator(next)) {
       if (bare_argument_ > 0) {

@@ -87,6 +87,7 @@ class Grammar {
   void refuse_written_unit(const Node& product, const Token& next) const;
   void refuse_digits_left(const Token& command) const;
   [[nodiscard]] bool runs_into_factor(const Token& next) const;
+  [[nodiscard]] ReadError runs_on(const Token& at, const std::string& past);
   Node term(std::size_t depth);
   Node factor(std::size_t depth);
   Node postfix(std::size_t depth, Node base);
@@ -144,10 +145,11 @@ class Grammar {
   const Limits& limits_;
   std::size_t position_ = 0;
   std::size_t last_end_ = 0;
-  int abs_depth_ = 0;      // inside |…|: a '|' closes
-  int norm_depth_ = 0;     // inside \|…\|: a '\|' closes
-  int sized_depth_ = 0;    // inside \bigl( … \bigr): a sized closing delimiter closes
-  int bare_argument_ = 0;  // inside a function's argument written without parentheses
+  int abs_depth_ = 0;                  // inside |…|: a '|' closes
+  int norm_depth_ = 0;                 // inside \|…\|: a '\|' closes
+  int sized_depth_ = 0;                // inside \bigl( … \bigr): a sized closing delimiter closes
+  int bare_argument_ = 0;              // inside a function's argument written without parentheses
+  std::vector<Token> bare_functions_;  // the functions whose bare arguments are being read
   // Where the rest of a number starts whose first digit single_digit took as an argument.
   std::size_t split_digits_at_ = std::numeric_limits<std::size_t>::max();
   int integrand_ = 0;  // inside an integrand: a differential ends a bare argument

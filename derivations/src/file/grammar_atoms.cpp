@@ -605,14 +605,15 @@ Node Grammar::function(std::size_t depth) {
 // bare-argument := term-of-factors   (to the next '+', '-', relation or function: \sin 2\theta;
 // \sin a \cos b is sin(a) cos(b); \sin \cos \theta is sin(cos(theta)))
 Node Grammar::bare_argument(std::size_t depth, const Token& function_token) {
-  (void)function_token;
   ++bare_argument_;
+  bare_functions_.push_back(function_token);
   Node argument_node;
   if (in(peek(), commands::functions)) {
     argument_node = function(depth + 1);  // \sin \cos \theta
   } else {
     argument_node = term(depth + 1);
   }
+  bare_functions_.pop_back();
   --bare_argument_;
   return argument_node;
 }

@@ -14,6 +14,7 @@
 
 #include "derivations/derivation.hpp"
 #include "file/decide.hpp"
+#include "file/text.hpp"
 #include "file/time.hpp"
 #include "impulse/core/error.hpp"
 #include "numeric.hpp"
@@ -32,13 +33,6 @@ std::string symbol_text(file::Symbols& symbols, const ex& s) {
     return GiNaC::is_a<GiNaC::symbol>(s) ? GiNaC::ex_to<GiNaC::symbol>(s).get_name() : "?";
   }
   return info->name.latex();
-}
-
-std::string trimmed(std::string_view s) {
-  const std::size_t first = s.find_first_not_of(" \n");
-  return first == std::string_view::npos
-             ? ""
-             : std::string(s.substr(first, s.find_last_not_of(" \n") + 1 - first));
 }
 
 std::vector<ex> FileRun::symbols_of_name(std::string_view latex) {
@@ -213,7 +207,7 @@ Result check(paper::FileRun& run, const Group& g) {
   r.check.section = g.section;
   r.check.equation = g.label;
   r.check.kind = g.kind;
-  r.check.statement = paper::trimmed(g.statement);
+  r.check.statement = file::trimmed(g.statement);
   r.check.line = run.source.place(g.statement_offset).line;
   const auto begin = std::chrono::steady_clock::now();
   r = g.kind == Kind::claim ? paper::check_claim(run, g, std::move(r))
@@ -279,7 +273,7 @@ std::vector<Check> checks_of(const std::vector<PaperFile>& files) {
   for (const PaperFile& file : files) {
     const ReadPaper p = read_paper(file);
     for (const Group& g : p.read.groups) {
-      checks.push_back({g.id, g.section, g.label, g.kind, paper::trimmed(g.statement), file.name,
+      checks.push_back({g.id, g.section, g.label, g.kind, file::trimmed(g.statement), file.name,
                         p.source->place(g.statement_offset).line});
     }
   }

@@ -38,9 +38,6 @@ std::string shown_number(double x);
 /// A symbol as the file writes it.
 std::string symbol_text(file::Symbols& symbols, const ex& s);
 
-/// A block of the file without the spaces and newlines around it.
-std::string trimmed(std::string_view s);
-
 /// A model's points, and for each the set of names it gives values (its number among them):
 /// what the points are evaluated in is prepared once per set of names.
 struct ModelPoints {

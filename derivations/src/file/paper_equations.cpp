@@ -8,6 +8,7 @@
 #include "file/decide.hpp"
 #include "file/paper.hpp"
 #include "file/step.hpp"
+#include "file/text.hpp"
 #include "file/time.hpp"
 #include "numeric.hpp"
 
@@ -235,7 +236,7 @@ Result check_equation(FileRun& run, const file::Group& g, Result r) {
     return r;
   }
   const Variant corrected = run_variant(run, g, true);
-  o.correction = trimmed(g.correction);
+  o.correction = file::trimmed(g.correction);
   o.explanation = g.explanation;
   o.note += " Corrected: " + corrected.note + ".";
   for (const Method m : corrected.methods) {

@@ -10,6 +10,7 @@
 #include "file/calculus.hpp"
 #include "file/decide.hpp"
 #include "file/sample.hpp"
+#include "file/text.hpp"
 #include "file/time.hpp"
 #include "numeric.hpp"
 #include "symbolic.hpp"
@@ -51,12 +52,6 @@ void merge(Implication& total, const Implication& one) {
   } else if (!one.how.empty() && one.how != total.how) {
     total.how += "; " + one.how;
   }
-}
-
-std::string trimmed(std::string text) {
-  const std::size_t first = text.find_first_not_of(' ');
-  const std::size_t last = text.find_last_not_of(' ');
-  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
 }
 
 ex readable(const ex& e) {

@@ -53,6 +53,14 @@ std::size_t utf8_length(std::string_view text, std::size_t i) {
 
 }  // namespace
 
+std::string trimmed(std::string_view s) {
+  constexpr std::string_view space = " \t\r\n";
+  const std::size_t first = s.find_first_not_of(space);
+  return first == std::string_view::npos
+             ? std::string()
+             : std::string(s.substr(first, s.find_last_not_of(space) + 1 - first));
+}
+
 Source::Source(std::string text, const Limits& limits) : text_(std::move(text)) {
   line_starts_.push_back(0);
   if (text_.size() > limits.bytes) {

@@ -11,6 +11,9 @@
 
 namespace impulse::derivations::file {
 
+/// @p s without the spaces, tabs and line ends around it.
+[[nodiscard]] std::string trimmed(std::string_view s);
+
 /// A place in the file: 1-based line and column (columns count characters, not bytes).
 struct Place {
   std::size_t line = 1;
