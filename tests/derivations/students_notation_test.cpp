@@ -1466,6 +1466,15 @@ TEST_CASE("Units, one-digit arguments and a function's reach, as a fourth probe 
   CHECK(verdicts("$$E = 5 \\quad \\text{(in joules)}$$\n\n$$2E = 10$$").back() == "follows");
   refused("$$L = 2 \\quad \\text{(in km)}$$", 1, 15, "SI units");
   refused("$$L = 2 \\quad \\text{(km)}$$", 1, 15, "SI units");
+  // The brackets outside the \text are a note too: v = u + a t \qquad (\text{SUVAT}) was
+  // v = u + a t SUVAT, so v = u + a t did not follow from it, and p = m v \quad (\text{given})
+  // was p = m v given.
+  CHECK(verdicts("$$v = u + a t \\qquad (\\text{SUVAT})$$\n\n$$v = u + a t$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("$$p = m v \\quad \\left( \\text{given} \\right)$$\n\n$$p = v m$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  refused("$$L = 2 \\quad (\\text{km})$$", 1, 16, "SI units");
+  refused("$$p = (\\text{kinetic energy}) v$$", 1, 8, "words belong outside");
   // - LaTeX's one digit as an argument, the rest of the number a factor: \sqrt 12 is √1·2 (a = 2
   //   followed), \frac 1 10 is (1/1)·0, \frac123 is (1/2)·3, \sqrt[3]27 is ∛2·7; \frac12 stays a
   //   half, and \dfrac 12 3 (a half times 3, or twelve thirds?) is refused;

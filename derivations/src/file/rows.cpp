@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <optional>
+#include <utility>
 #include <set>
 #include <string_view>
 
@@ -105,6 +106,39 @@ std::size_t annotation_end(const Source& source, const std::vector<Token>& token
     }
   }
   throw source.error(tokens[i].offset, "expected '}' to close " + tokens[i].text);
+}
+
+// A \text{…} alone in round brackets from @p k, ( \text{…} ) or \left( \text{…} \right): the
+// index of the \text command and the index after the closing bracket; else nothing.
+std::optional<std::pair<std::size_t, std::size_t>> bracketed_text(const Source& source,
+                                                                  const std::vector<Token>& tokens,
+                                                                  std::size_t k) {
+  const std::size_t n = tokens.size();
+  const bool left = is_command(tokens[k], "\\left");
+  if (!(left ? k + 1 < n && is_char(tokens[k + 1], '(') : is_char(tokens[k], '('))) {
+    return std::nullopt;
+  }
+  const auto skip = [&](std::size_t i) {
+    while (i < n && tokens[i].kind == Tok::spacing) {
+      ++i;
+    }
+    return i;
+  };
+  const std::size_t at = skip(k + (left ? 2 : 1));
+  if (at >= n || !in(tokens[at], commands::text_commands)) {
+    return std::nullopt;
+  }
+  std::size_t close = skip(annotation_end(source, tokens, at));
+  if (left) {
+    if (close >= n || !is_command(tokens[close], "\\right")) {
+      return std::nullopt;
+    }
+    close = skip(close + 1);
+  }
+  if (close >= n || !is_char(tokens[close], ')')) {
+    return std::nullopt;
+  }
+  return std::pair{at, close + 1};
 }
 
 // Whether a \text{…} (its '{' at open, end after its '}') holds words (spaces, punctuation, or
@@ -498,9 +532,15 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
       }
       return false;
     }();
-    if (top && in(t, commands::text_commands) && !in_script) {
-      const std::size_t end = annotation_end(source, tokens, k);
-      std::size_t open = k + 1;
+    // (\text{SUVAT}) is a note as \text{(SUVAT)} is, where a note may stand (it was a factor
+    // SUVAT of the equation): the annotation then ends after its bracket.
+    const auto bracketed = top && !in_script ? bracketed_text(source, tokens, k) : std::nullopt;
+    if (bracketed || (top && in(t, commands::text_commands) && !in_script)) {
+      const std::size_t at = bracketed ? bracketed->first : k;  // the \text command
+      const Token& text = tokens[at];
+      const std::size_t text_end = annotation_end(source, tokens, at);
+      const std::size_t end = bracketed ? bracketed->second : text_end;
+      std::size_t open = at + 1;
       while (tokens[open].kind == Tok::spacing) {
         ++open;
       }
@@ -508,7 +548,8 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
                                     tokens.end());
       if (holds_relation(current.tokens) && equation_follows(end, true)) {
         // an annotation between two equations, or at the end of the row
-        refuse_annotation(source, t, current.tokens, tokens, open, end, blank_tokens(rest));
+        refuse_annotation(source, text, current.tokens, tokens, open, text_end,
+                          blank_tokens(rest));
         next_piece(Join::row, first_offset(rest, t.offset));
         k = end - 1;
         continue;
@@ -516,13 +557,13 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
       if (blank_tokens(current.tokens) && leads_a_row(tokens, end) &&
           equation_follows(end, false)) {
         // \text{hence}\quad 2y = 6x: a note before the row's equation (it was a factor hence)
-        refuse_annotation(source, t, current.tokens, tokens, open, end, false);
+        refuse_annotation(source, text, current.tokens, tokens, open, text_end, false);
         k = end - 1;
         continue;
       }
-      if (words(tokens, open, end)) {
-        throw source.error(t.offset,
-                           "expected " + t.text +
+      if (words(tokens, open, text_end)) {
+        throw source.error(text.offset,
+                           "expected " + text.text +
                                "{…} between two equations or at the end of a row (an "
                                "annotation), found it inside an equation: words belong outside "
                                "the display block");
