@@ -178,6 +178,11 @@ TEST_CASE("Students' delimiters, fractions and symbols", "[derivations][students
   const std::string impulse = "vector: F, p\n\n$$\\vec F \\Delta t = \\Delta \\vec p$$\n\n";
   CHECK(verdicts(impulse + "$$F_x \\Delta t = \\Delta p_x$$").back() == "follows-one-way");
   CHECK(verdicts(impulse + "$$F_y \\Delta t = \\Delta p_x$$").back() == "does-not-follow");
+  // v_{1,x} is the x component of \vec v_1, as v_{1x} is (it was a scalar of its own: from \vec
+  // v_1 = [3, 4], v_{1,x} = 3 failed at v_{1,x} = 1).
+  const std::string v1 = "vector: v_1\n\n$$\\vec v_1 = [3, 4]$$\n\n";
+  CHECK(verdicts(v1 + "$$v_{1,x} = 3$$").back() == "follows-one-way");
+  CHECK(verdicts(v1 + "$$v_{1,y} = 3$$").back() == "does-not-follow");
   // \vec p\,' (a thin space keeping the prime off the arrow, as this project's guide writes it) is
   // \vec p' (it was refused at the prime); the same space after a plain letter stays refused.
   same("\\vec p\\,'", "\\vec p'", "vector: p, c");

@@ -166,9 +166,11 @@ std::optional<std::pair<SymbolName, int>> Symbols::component_of(const SymbolName
   if (last != 'x' && last != 'y') {
     return std::nullopt;
   }
+  // v_{1x}, v_{1 x} and v_{1,x} are the x component of \vec v_1.
   SymbolName parent = name;
   parent.subscript.pop_back();
-  while (!parent.subscript.empty() && parent.subscript.back() == ' ') {
+  while (!parent.subscript.empty() &&
+         (parent.subscript.back() == ' ' || parent.subscript.back() == ',')) {
     parent.subscript.pop_back();
   }
   if (!is_vector(parent)) {
