@@ -2,6 +2,7 @@
 #include "shifted_factor.hpp"
 
 #include <Eigen/SparseCholesky>
+#include <limits>
 
 #if IMPULSELAB_HAVE_CHOLMOD
 #include <Eigen/CholmodSupport>
@@ -35,6 +36,33 @@ class Supernodal : public Eigen::CholmodBase<SparseMatrix, Eigen::Lower, Superno
     m_cholmod.supernodal = CHOLMOD_AUTO;
     m_cholmod.print = 0;  // failures are returned, never printed
   }
+  ~Supernodal() {
+    cholmod_free_dense(&solution_, &m_cholmod);
+    cholmod_free_dense(&work_y_, &m_cholmod);
+    cholmod_free_dense(&work_e_, &m_cholmod);
+  }
+  Supernodal(const Supernodal&) = delete;
+  Supernodal& operator=(const Supernodal&) = delete;
+
+  // The factor's solve into x, by cholmod_solve2 with its solution and workspace kept (Eigen's
+  // solve calls cholmod_solve, which allocates and frees them at every call).
+  void solve_into(const VectorXd& b, VectorXd& x) {
+    cholmod_dense rhs{};
+    rhs.nrow = static_cast<std::size_t>(b.size());
+    rhs.ncol = 1;
+    rhs.nzmax = rhs.nrow;
+    rhs.d = rhs.nrow;
+    rhs.x = const_cast<double*>(b.data());  // read only: CHOLMOD's right-hand side is not const
+    rhs.xtype = CHOLMOD_REAL;
+    rhs.dtype = CHOLMOD_DOUBLE;
+    x.resize(b.size());
+    if (cholmod_solve2(CHOLMOD_A, m_cholmodFactor, &rhs, nullptr, &solution_, nullptr, &work_y_,
+                       &work_e_, &m_cholmod) == 0) {
+      x.setConstant(std::numeric_limits<double>::quiet_NaN());
+      return;
+    }
+    x = Eigen::Map<const VectorXd>(static_cast<const double*>(solution_->x), b.size());
+  }
 
   // The pivots: a supernodal factor is L L^T, its columns stored supernode by supernode as dense
   // column-major blocks whose first rows are their own columns (the pivot is L_jj squared); a
@@ -63,6 +91,11 @@ class Supernodal : public Eigen::CholmodBase<SparseMatrix, Eigen::Lower, Superno
     }
     return d;
   }
+
+ private:
+  cholmod_dense* solution_ = nullptr;
+  cholmod_dense* work_y_ = nullptr;
+  cholmod_dense* work_e_ = nullptr;
 };
 
 }  // namespace
@@ -78,8 +111,8 @@ bool ShiftedFactor::compute(const SparseMatrix& M, double lambda) {
   return backend_->factor.info() == Eigen::Success;
 }
 
-VectorXd ShiftedFactor::solve(const VectorXd& r) const {
-  return backend_->factor.solve(r);
+void ShiftedFactor::solve(const VectorXd& r, VectorXd& x) const {
+  backend_->factor.solve_into(r, x);
 }
 
 VectorXd ShiftedFactor::pivots() const {
@@ -103,8 +136,11 @@ bool ShiftedFactor::compute(const SparseMatrix& M, double lambda) {
   return backend_->factor.info() == Eigen::Success;
 }
 
-VectorXd ShiftedFactor::solve(const VectorXd& r) const {
-  return backend_->factor.solve(r);
+void ShiftedFactor::solve(const VectorXd& r, VectorXd& x) const {
+  x = backend_->factor.solve(r);
+  if (backend_->factor.info() != Eigen::Success) {
+    x.setConstant(std::numeric_limits<double>::quiet_NaN());
+  }
 }
 
 VectorXd ShiftedFactor::pivots() const {

@@ -23,8 +23,12 @@ class ShiftedFactor {
 
   // Factors M + lambda I (M symmetric positive semi-definite, lambda > 0). False if it failed.
   bool compute(const Eigen::SparseMatrix<double>& M, double lambda);
-  // (M + lambda I)^-1 r.
-  [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& r) const;
+  // (M + lambda I)^-1 r into x (resized to fit), with the factorisation's workspace kept from
+  // one call to the next: conjugate gradients call it at every step, and an allocation of a
+  // vector of every contact at each call (CHOLMOD's solution and workspace, Eigen's result) cost
+  // more on 100,000 contacts than the triangular solves themselves, the allocator handing the
+  // memory back to the system and faulting it in again. NaN everywhere if the solve failed.
+  void solve(const Eigen::VectorXd& r, Eigen::VectorXd& x) const;
   // The pivots D of L D L^T (for a Cholesky factor L L^T, the squares of L's diagonal), in the
   // order of elimination.
   [[nodiscard]] Eigen::VectorXd pivots() const;

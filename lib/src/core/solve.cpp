@@ -237,13 +237,25 @@ bool factor_shifted(const SparseMatrix& M, Shifted& shifted) {
   return shifted.factor.compute(M, shifted.lambda);
 }
 
+// |K| |x| into sizes: the size of the terms each entry of K x sums (without a copy of K).
+void absolute_product(const SparseMatrix& K, const VectorXd& x, VectorXd& sizes) {
+  sizes.setZero(K.rows());
+  for (Index j = 0; j < K.outerSize(); ++j) {
+    const double xj = std::abs(x(j));
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it) {
+      sizes(it.row()) += std::abs(it.value()) * xj;
+    }
+  }
+}
+
 // Restarted, preconditioned conjugate gradients on K T p-steps, started from x = 0.
 //
-// `step(p)` maps a search direction p (one entry per row of K) to the step it makes in the
-// unknowns x: the identity when K = M is the consistent positive semi-definite system itself
-// (conjugate_gradients), G^T when K = G and the unknowns are x = G^T y of G G^T y = g
-// (range_solution). Each step then adds alpha step(p) to x and removes alpha K step(p) from the
-// residual; the curvature p^T K step(p) is p^T M p, or |G^T p|^2.
+// `step(p, dx)` puts in dx the step a search direction p (one entry per row of K) makes in the
+// unknowns x: p itself when K = M is the consistent positive semi-definite system itself
+// (conjugate_gradients), G^T p when K = G and the unknowns are x = G^T y of G G^T y = g
+// (range_solution). Each step then adds alpha dx to x and removes alpha K dx from the residual;
+// the curvature p^T K dx is p^T M p, or |G^T p|^2. `precondition(r, z)` puts the preconditioned
+// residual in z. Every vector is allocated once, before the steps (see ShiftedFactor::solve).
 //
 // It stops when |rhs - K x| <= tolerance (| |K| |x| | + |rhs|): the residual against the size
 // of the terms it is the sum of, the level at which rounding leaves it (a residual relative to
@@ -259,7 +271,6 @@ int restarted_conjugate_gradients(const SparseMatrix& K, const VectorXd& rhs, co
                                   const Preconditioner& precondition, double tolerance,
                                   int max_iterations, VectorXd& x) {
   x = VectorXd::Zero(K.cols());
-  const SparseMatrix K_abs = K.cwiseAbs();
   const double rhs_norm = rhs.norm();
   double terms = rhs_norm;  // | |K| |x| | + |rhs| at the last restart
   const auto reached = [&](double residual) { return residual <= tolerance * terms; };
@@ -268,6 +279,7 @@ int restarted_conjugate_gradients(const SparseMatrix& K, const VectorXd& rhs, co
   VectorXd p(K.rows());
   VectorXd dx(K.cols());
   VectorXd Kdx(K.rows());
+  VectorXd sizes(K.rows());
   int steps = 0;
   double rz = 0.0;
   double last_true = std::numeric_limits<double>::infinity();
@@ -275,19 +287,18 @@ int restarted_conjugate_gradients(const SparseMatrix& K, const VectorXd& rhs, co
   while (steps < max_iterations) {
     if (restart) {
       const double true_residual = r.norm();
-      VectorXd sizes(K.rows());
-      sizes.noalias() = K_abs * x.cwiseAbs();
+      absolute_product(K, x, sizes);
       terms = sizes.norm() + rhs_norm;
       if (reached(true_residual) || !(true_residual < 0.5 * last_true)) {
         break;
       }
       last_true = true_residual;
-      z = precondition(r);
+      precondition(r, z);
       p = z;
       rz = r.dot(z);
       restart = false;
     }
-    dx = step(p);
+    step(p, dx);
     Kdx.noalias() = K * dx;
     const double curvature = p.dot(Kdx);
     const double alpha = rz / curvature;
@@ -303,7 +314,7 @@ int restarted_conjugate_gradients(const SparseMatrix& K, const VectorXd& rhs, co
       restart = true;
       continue;
     }
-    z = precondition(r);
+    precondition(r, z);
     const double rz_next = r.dot(z);
     p = z + (rz_next / rz) * p;
     rz = rz_next;
@@ -312,14 +323,14 @@ int restarted_conjugate_gradients(const SparseMatrix& K, const VectorXd& rhs, co
 }
 
 // Conjugate gradients on the consistent positive semi-definite system M x = rhs, preconditioned
-// by (M + lambda I)^-1 (`precondition(r)`, which must be an approximation of a function of M, so
+// by (M + lambda I)^-1 (`precondition(r, z)`, which must be an approximation of a function of M, so
 // that every iterate stays in the range of M, up to rounding): on a dependent system they
 // converge to the minimum-norm solution, as unpreconditioned CG would, only in far fewer steps.
 template <typename Preconditioner>
 int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs,
                         const Preconditioner& precondition, double tolerance, int max_iterations,
                         VectorXd& x) {
-  const auto same = [](const VectorXd& p) -> const VectorXd& { return p; };
+  const auto same = [](const VectorXd& p, VectorXd& dx) { dx = p; };
   return restarted_conjugate_gradients(M, rhs, same, precondition, tolerance, max_iterations, x);
 }
 
@@ -332,7 +343,9 @@ int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs,
 template <typename Preconditioner>
 int range_solution(const SparseMatrix& G, const VectorXd& g, const Preconditioner& precondition,
                    double tolerance, int max_iterations, VectorXd& x) {
-  const auto transposed = [&G](const VectorXd& p) -> VectorXd { return G.transpose() * p; };
+  const auto transposed = [&G](const VectorXd& p, VectorXd& dx) {
+    dx.noalias() = G.transpose() * p;
+  };
   return restarted_conjugate_gradients(G, g, transposed, precondition, tolerance, max_iterations,
                                        x);
 }
@@ -503,9 +516,7 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
                 spectrum.largest / spectrum.smallest});
   doubtful = spectrum.smallest < null_level;
   VectorXd x;
-  const auto shifted_inverse = [&](const VectorXd& r) -> VectorXd {
-    return shifted.factor.solve(r);
-  };
+  const auto shifted_inverse = [&](const VectorXd& r, VectorXd& z) { shifted.factor.solve(r, z); };
   solution.iterations = conjugate_gradients(A, B, shifted_inverse, options.sparse_tolerance,
                                             options.max_iterations, x);
 
@@ -521,13 +532,14 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
   // others, so the rank estimate can miss one in an ill-conditioned system; on a regular
   // system the step returns the same x for a few more iterations.
   {
-    const auto range_preconditioner = [&](const VectorXd& r) -> VectorXd {
-      VectorXd Gtr(G.cols());
+    VectorXd Gtr(G.cols());
+    VectorXd once(G.cols());
+    VectorXd twice(G.cols());
+    const auto range_preconditioner = [&](const VectorXd& r, VectorXd& z) {
       Gtr.noalias() = G.transpose() * r;
-      const VectorXd twice = shifted.factor.solve(shifted.factor.solve(Gtr));
-      VectorXd z(G.rows());
+      shifted.factor.solve(Gtr, once);
+      shifted.factor.solve(once, twice);
       z.noalias() = G * twice;
-      return z;
     };
     VectorXd Gx(G.rows());
     Gx.noalias() = G * x;
