@@ -31,6 +31,13 @@ ContactSystem::ContactSystem(Eigen::MatrixXd A, Eigen::VectorXd B)
   }
 }
 
+void ContactSystem::reserve(std::size_t blocks, std::size_t entries) {
+  factor_rows_.reserve(factor_rows_.size() + blocks);
+  if (sparse_) {
+    entries_.reserve(entries_.size() + entries);
+  }
+}
+
 void ContactSystem::check(const BlockContribution& block) const {
   const auto n = static_cast<Eigen::Index>(block.contacts.size());
   if (block.a.rows() != n || block.a.cols() != n || block.b.size() != n) {
@@ -107,13 +114,54 @@ ContactSystem& ContactSystem::operator+=(BlockContribution&& block) {
 }
 
 Eigen::SparseMatrix<double> ContactSystem::sparse_A() const {
-  Eigen::SparseMatrix<double> A(size(), size());
-  if (sparse_) {
-    A.setFromTriplets(entries_.begin(), entries_.end());  // sums the entries of shared contacts
-  } else {
-    A = A_.sparseView();
+  if (!sparse_) {
+    Eigen::SparseMatrix<double> A = A_.sparseView();
+    A.makeCompressed();
+    return A;
   }
-  A.makeCompressed();
+  // Column by column, as setFromTriplets gives it (the entries of one place summed in the order
+  // they were added, rows ascending) without its row-major copy of every entry.
+  using StorageIndex = Eigen::SparseMatrix<double>::StorageIndex;
+  const auto n = static_cast<std::size_t>(size());
+  std::vector<std::size_t> start(n + 1, 0);
+  for (const Eigen::Triplet<double>& e : entries_) {
+    ++start[static_cast<std::size_t>(e.col()) + 1];
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    start[j + 1] += start[j];
+  }
+  std::vector<std::pair<StorageIndex, double>> placed(entries_.size());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (const Eigen::Triplet<double>& e : entries_) {
+    placed[next[static_cast<std::size_t>(e.col())]++] = {static_cast<StorageIndex>(e.row()),
+                                                         e.value()};
+  }
+  std::size_t nonzeros = 0;
+  std::size_t begin = 0;  // the column's first entry as placed
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t end = start[j + 1];
+    const auto first = placed.begin() + static_cast<std::ptrdiff_t>(begin);
+    const auto last = placed.begin() + static_cast<std::ptrdiff_t>(end);
+    std::stable_sort(first, last, [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (auto it = first; it != last; ++it) {
+      if (it != first && it->first == placed[nonzeros - 1].first) {
+        placed[nonzeros - 1].second += it->second;
+      } else {
+        placed[nonzeros++] = *it;
+      }
+    }
+    start[j + 1] = nonzeros;  // the column's end, once its duplicates are summed
+    begin = end;
+  }
+  Eigen::SparseMatrix<double> A(size(), size());
+  A.resizeNonZeros(static_cast<Eigen::Index>(nonzeros));
+  for (std::size_t j = 0; j <= n; ++j) {
+    A.outerIndexPtr()[j] = static_cast<StorageIndex>(start[j]);
+  }
+  for (std::size_t k = 0; k < nonzeros; ++k) {
+    A.innerIndexPtr()[k] = placed[k].first;
+    A.valuePtr()[k] = placed[k].second;
+  }
   return A;
 }
 
@@ -153,28 +201,40 @@ void ContactSystem::factor(Eigen::MatrixXd& G, Eigen::VectorXd& w) const {
 
 void ContactSystem::factor(Eigen::SparseMatrix<double>& G, Eigen::VectorXd& w) const {
   assert(factored_);
+  // Column by column: a contact's column holds the rows of each block it is in, the blocks in
+  // the order they were added (so its rows ascend); no two blocks share a row.
+  using StorageIndex = Eigen::SparseMatrix<double>::StorageIndex;
+  const auto n = static_cast<std::size_t>(size());
   Eigen::Index rows = 0;
-  std::size_t entries = 0;
+  std::vector<std::size_t> start(n + 1, 0);
   for (const FactorRows& part : factor_rows_) {
     rows += part.G.rows();
-    entries += static_cast<std::size_t>(part.G.size());
+    for (const Eigen::Index contact : part.contacts) {
+      start[static_cast<std::size_t>(contact) + 1] += static_cast<std::size_t>(part.G.rows());
+    }
   }
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(entries);
+  for (std::size_t j = 0; j < n; ++j) {
+    start[j + 1] += start[j];
+  }
+  G.resize(rows, size());
+  G.resizeNonZeros(static_cast<Eigen::Index>(start[n]));
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
   w.resize(rows);
   Eigen::Index top = 0;
   for (const FactorRows& part : factor_rows_) {
     for (std::size_t k = 0; k < part.contacts.size(); ++k) {
-      for (Eigen::Index i = 0; i < part.G.rows(); ++i) {
-        triplets.emplace_back(top + i, part.contacts[k], part.G(i, static_cast<Eigen::Index>(k)));
+      std::size_t& at = next[static_cast<std::size_t>(part.contacts[k])];
+      for (Eigen::Index i = 0; i < part.G.rows(); ++i, ++at) {
+        G.innerIndexPtr()[at] = static_cast<StorageIndex>(top + i);
+        G.valuePtr()[at] = part.G(i, static_cast<Eigen::Index>(k));
       }
     }
     w.segment(top, part.G.rows()) = part.w;
     top += part.G.rows();
   }
-  G.resize(rows, size());
-  G.setFromTriplets(triplets.begin(), triplets.end());
-  G.makeCompressed();
+  for (std::size_t j = 0; j <= n; ++j) {
+    G.outerIndexPtr()[j] = static_cast<StorageIndex>(start[j]);
+  }
 }
 
 ContactSystem& ContactSystem::operator+=(const ScalarContribution& contribution) {

@@ -221,6 +221,13 @@ ContactSystem assemble_checked(std::span<const Body> bodies,
                                const std::vector<std::vector<Touch>>& grouped, std::size_t contacts,
                                Storage storage) {
   ContactSystem system(static_cast<Eigen::Index>(contacts), storage);
+  std::size_t blocks = 0;
+  std::size_t entries = 0;
+  for (const std::vector<Touch>& touches : grouped) {
+    blocks += touches.empty() ? 0U : 1U;
+    entries += touches.size() * touches.size();
+  }
+  system.reserve(blocks, entries);
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     if (!grouped[k].empty()) {
       system += contribution(bodies[k], grouped[k], elasticities[k]);  // the ⊕ of section 4.5

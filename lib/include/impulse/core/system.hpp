@@ -110,6 +110,13 @@ class ContactSystem {
   /// @return this system
   ContactSystem& operator+=(const ScalarContribution& contribution);
 
+  /// @brief Room for the blocks to come, before they are added (it changes no value): one
+  /// allocation where growing one block at a time reallocates, which on 100,000 contacts costs
+  /// more in fresh memory than the adding itself.
+  /// @param blocks how many blocks will be added
+  /// @param entries the sum of the squares of their contact counts (the entries of A they add)
+  void reserve(std::size_t blocks, std::size_t entries);
+
   /// @brief Number of contacts N.
   /// @return N
   [[nodiscard]] Eigen::Index size() const { return B_.size(); }
