@@ -742,6 +742,26 @@ TEST_CASE("Students' roots and logarithms: a rule that needs a sign follows-if t
   // √(a + b) = √a + √b fails at a = b = 1 (√2 against 2), with real roots.
   CHECK(one("$$y = \\sqrt{a + b}$$\n\n$$y = \\sqrt{a} + \\sqrt{b}$$").verdict ==
         d::Verdict::does_not_follow);
+  // Taking the root drops the negative one: from v^2 = 2 g h, v = √(2 g h) fails at v = -1,
+  // g = -1/2, h = -1 (1 = 1 before, -1 against √1 = 1 after) and holds wherever v ≥ 0 (then v =
+  // √(v^2) = √(2 g h)), as x = 3 after x^2 = 9 follows-if x + 3 ≠ 0. It was red; the same step
+  // with s > 0 among the facts was undecided and follows.
+  const d::EquationResult dropped = one("$$v^2 = 2 g h$$\n\n$$v = \\sqrt{2 g h}$$");
+  CHECK(dropped.verdict == d::Verdict::follows_if);
+  CHECK(dropped.condition_text == "v >= 0");
+  CHECK(dropped.condition_needed);  // at v = -1 it fails
+  CHECK(one("assume: s > 0\n\n$$s^2 = a^2 + b^2$$\n\n$$s = \\sqrt{a^2 + b^2}$$").verdict ==
+        d::Verdict::follows);
+  // With k = (m + M)/m > 0 by the facts: m v = (m + M) √(2 g h) where v ≥ 0.
+  CHECK(one("assume: m > 0, M > 0\n\n$$m^2 v^2 = (m + M)^2 2 g h$$\n\n"
+            "$$v = \\frac{m + M}{m} \\sqrt{2 g h}$$")
+            .condition_text == "v >= 0");
+  // The slip of a lost factor 2 still fails (g = h = 1, v = √2: 2 = 2 before, √2 against 1), and
+  // where the facts give v < 0 no condition v ≥ 0 is made (v = -1, g = 1/2, h = 1: 1 = 1 before,
+  // -1 against 1 after).
+  CHECK(one("$$v^2 = 2 g h$$\n\n$$v = \\sqrt{g h}$$").verdict == d::Verdict::does_not_follow);
+  CHECK(one("assume: v < 0\n\n$$v^2 = 2 g h$$\n\n$$v = \\sqrt{2 g h}$$").verdict ==
+        d::Verdict::does_not_follow);
 }
 
 TEST_CASE("Students' facts: a symbol with a range is drawn over it and at its closed ends",

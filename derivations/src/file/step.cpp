@@ -364,6 +364,10 @@ void Checker::decide(const std::vector<Equation>& equations, const Equation& e, 
   if (forward.implication.outcome == Implication::Outcome::unknown && !opinion.counterexample) {
     domain_reading(before, step, e.facts, index, budget, forward, opinion);
   }
+  if (forward.implication.outcome == Implication::Outcome::unknown ||
+      forward.implication.outcome == Implication::Outcome::fails) {
+    root_reading(before, step, e.facts, index, budget, forward, opinion);
+  }
   r.numeric_points = opinion.points;
   r.numeric_worst = opinion.worst;
   if (multiple && !opinion.counterexample) {
@@ -766,6 +770,100 @@ bool Checker::domain_reading(const Scalars& before, const Scalars& step, const F
           " (the rules of roots and logarithms hold where a root's argument is not negative and a "
           "logarithm's is positive; the facts do not give these signs: assume them where they "
           "hold)";
+  forward = read;
+  opinion = numeric(before, step, forward, with, index, budget);
+  return true;
+}
+
+// A step k √R + q = 0 (one square root, k a number), where the exact method found it failing or
+// could not decide: it holds wherever k² R = q² does and -q/k ≥ 0, the root being the one that is
+// not negative. Where the equations before give k² R = q², the step follows where the facts give
+// -q/k ≥ 0 (s² = a² + b² then s = √(a² + b²), for s > 0), else it follows-if -q/k ≥ 0 when that
+// is a symbol (v² = 2 g h then v = √(2 g h) follows where v ≥ 0, as x² = 9 then x = 3 does where
+// x + 3 ≠ 0: it dropped the negative root). A point where it failed is kept unless it breaks
+// that sign. Returns whether it decided the step.
+bool Checker::root_reading(const Scalars& before, const Scalars& step, const Facts& facts,
+                           std::size_t index, const Budget& budget, Forward& forward,
+                           NumericOpinion& opinion) {
+  if (step.differences.size() != 1 || has_atoms(step.differences[0])) {
+    return false;
+  }
+  const ex& target = step.differences[0];
+  std::optional<ex> root;
+  for (auto it = target.preorder_begin(); it != target.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::power>(*it) && it->op(1).is_equal(GiNaC::numeric(1, 2)) &&
+        !symbols_of(it->op(0)).empty()) {  // √2 of √(2 g h) = √2 √(g h) is a number
+      if (root && !root->is_equal(*it)) {
+        return false;  // two roots
+      }
+      root = *it;
+    }
+  }
+  const GiNaC::symbol stand_in("root");  // GiNaC expands √(g h) as it pleases: a symbol for it
+  const auto kq = root ? sym::linear_in(target.subs(*root == stand_in), stand_in) : std::nullopt;
+  // q real wherever the root is: no other root of a symbol's expression in it ((g h)^(3/2) is
+  // imaginary where g h < 0).
+  const auto other_root = [](const ex& e) {
+    return std::any_of(e.preorder_begin(), e.preorder_end(), [](const ex& x) {
+      return GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<GiNaC::numeric>(x.op(1)) &&
+             !x.op(1).info(GiNaC::info_flags::integer) && !symbols_of(x.op(0)).empty();
+    });
+  };
+  if (!kq || kq->second.has(stand_in) || other_root(kq->second) || other_root(kq->first)) {
+    return false;
+  }
+  const auto& [k, q] = *kq;
+  // -q/k must not be negative: -q where k > 0, q where k < 0 (k a number, or of a sign the facts
+  // give: (m + M)/m of m, M > 0).
+  const ex k_value = GiNaC::evalf(k);
+  Sign k_sign = facts.sign(k);
+  if (GiNaC::is_a<GiNaC::numeric>(k_value) && GiNaC::ex_to<GiNaC::numeric>(k_value).is_real() &&
+      !k_value.is_zero()) {
+    k_sign = GiNaC::ex_to<GiNaC::numeric>(k_value).is_positive() ? Sign::positive : Sign::negative;
+  }
+  if (k_sign != Sign::positive && k_sign != Sign::negative) {
+    return false;
+  }
+  const ex sign_of = k_sign == Sign::positive ? ex(-q) : q;
+  const Sign known = facts.sign(sign_of);
+  const bool given = known == Sign::positive || known == Sign::nonnegative || known == Sign::zero;
+  if (!given && !GiNaC::is_a<GiNaC::symbol>(sign_of)) {
+    return false;
+  }
+  const auto& point = forward.implication.point;
+  if (point && forward.implication.outcome == Implication::Outcome::fails) {
+    const ex there = GiNaC::evalf(sign_of.subs(*point));
+    if (given || !GiNaC::is_a<GiNaC::numeric>(there) ||
+        !GiNaC::ex_to<GiNaC::numeric>(there).is_negative()) {
+      return false;  // the point keeps the sign: it stands
+    }
+  }
+  Facts with = facts;
+  if (!given && !with.add(sign_of, Sign::nonnegative)) {
+    return false;
+  }
+  Scalars squared = step;
+  squared.differences[0] = GiNaC::expand(GiNaC::numer(GiNaC::normal(k * k * root->op(0) - q * q)));
+  squared.scales[0] = term_scale(squared.differences[0]);
+  Forward read = exact(before, squared, with, budget);
+  using O = Implication::Outcome;
+  if (read.implication.outcome != O::holds && read.implication.outcome != O::holds_if) {
+    return false;
+  }
+  Implication& i = read.implication;
+  const std::string sign_text = relation_latex(latex_of(sign_of), Sign::nonnegative);
+  i.how = "the step squared (" + latex_of(squared.differences[0]) + " = 0): " +
+          (i.how.empty() ? std::string("it holds once the equations before are used") : i.how) +
+          "; the root is not negative, so the step holds where " + sign_text +
+          (given ? ", which the facts give" : "");
+  if (!given) {
+    // Needed where the step failed at a point that breaks the sign (v = -1 of v² = 2 g h).
+    const bool failed = forward.implication.outcome == O::fails && point;
+    i.outcome = O::holds_if;
+    i.signs.emplace_back(sign_of, Sign::nonnegative);
+    i.conditions_needed = failed && i.conditions.empty();
+    i.point = failed ? point : std::nullopt;
+  }
   forward = read;
   opinion = numeric(before, step, forward, with, index, budget);
   return true;

@@ -73,6 +73,9 @@ class Checker {
   bool domain_reading(const Scalars& before, const Scalars& step, const Facts& facts,
                       std::size_t index, const Budget& budget, Forward& forward,
                       NumericOpinion& opinion);
+  bool root_reading(const Scalars& before, const Scalars& step, const Facts& facts,
+                    std::size_t index, const Budget& budget, Forward& forward,
+                    NumericOpinion& opinion);
   NumericOpinion numeric(const Scalars& before, const Scalars& step, const Forward& forward,
                          const Facts& facts, std::size_t index, const Budget& budget);
   std::optional<Implication> converse(const Scalars& before, const Scalars& step,
