@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "impulse/core/error.hpp"
@@ -130,24 +131,46 @@ Eigen::SparseMatrix<double> ContactSystem::sparse_A() const {
   for (std::size_t j = 0; j < n; ++j) {
     start[j + 1] += start[j];
   }
-  std::vector<std::pair<StorageIndex, double>> placed(entries_.size());
+  std::vector<StorageIndex> rows(entries_.size());
+  std::vector<double> values(entries_.size());
   std::vector<std::size_t> next(start.begin(), start.end() - 1);
   for (const Eigen::Triplet<double>& e : entries_) {
-    placed[next[static_cast<std::size_t>(e.col())]++] = {static_cast<StorageIndex>(e.row()),
-                                                         e.value()};
+    const std::size_t at = next[static_cast<std::size_t>(e.col())]++;
+    rows[at] = static_cast<StorageIndex>(e.row());
+    values[at] = e.value();
   }
   std::size_t nonzeros = 0;
   std::size_t begin = 0;  // the column's first entry as placed
   for (std::size_t j = 0; j < n; ++j) {
     const std::size_t end = start[j + 1];
-    const auto first = placed.begin() + static_cast<std::ptrdiff_t>(begin);
-    const auto last = placed.begin() + static_cast<std::ptrdiff_t>(end);
-    std::stable_sort(first, last, [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (auto it = first; it != last; ++it) {
-      if (it != first && it->first == placed[nonzeros - 1].first) {
-        placed[nonzeros - 1].second += it->second;
+    // By row, stably (the order they were added in kept within a row): an insertion sort for the
+    // few entries of most columns, a stable sort of pairs for a body touching many contacts.
+    if (end - begin <= 32) {
+      for (std::size_t a = begin + 1; a < end; ++a) {
+        for (std::size_t b = a; b > begin && rows[b - 1] > rows[b]; --b) {
+          std::swap(rows[b - 1], rows[b]);
+          std::swap(values[b - 1], values[b]);
+        }
+      }
+    } else {
+      std::vector<std::pair<StorageIndex, double>> column;
+      column.reserve(end - begin);
+      for (std::size_t a = begin; a < end; ++a) {
+        column.emplace_back(rows[a], values[a]);
+      }
+      std::stable_sort(column.begin(), column.end(),
+                       [](const auto& x, const auto& y) { return x.first < y.first; });
+      for (std::size_t a = begin; a < end; ++a) {
+        std::tie(rows[a], values[a]) = column[a - begin];
+      }
+    }
+    for (std::size_t a = begin; a < end; ++a) {
+      if (a != begin && rows[a] == rows[nonzeros - 1]) {
+        values[nonzeros - 1] += values[a];
       } else {
-        placed[nonzeros++] = *it;
+        rows[nonzeros] = rows[a];
+        values[nonzeros] = values[a];
+        ++nonzeros;
       }
     }
     start[j + 1] = nonzeros;  // the column's end, once its duplicates are summed
@@ -158,10 +181,8 @@ Eigen::SparseMatrix<double> ContactSystem::sparse_A() const {
   for (std::size_t j = 0; j <= n; ++j) {
     A.outerIndexPtr()[j] = static_cast<StorageIndex>(start[j]);
   }
-  for (std::size_t k = 0; k < nonzeros; ++k) {
-    A.innerIndexPtr()[k] = placed[k].first;
-    A.valuePtr()[k] = placed[k].second;
-  }
+  std::copy(rows.begin(), rows.begin() + static_cast<std::ptrdiff_t>(nonzeros), A.innerIndexPtr());
+  std::copy(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(nonzeros), A.valuePtr());
   return A;
 }
 
