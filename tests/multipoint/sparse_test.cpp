@@ -2,8 +2,11 @@
 // Sections 4 and 5 at scale: the sparse storage and the sparse method against the
 // dense complete orthogonal decomposition, on generated stacks, pyramids and cradles, and on
 // dependent systems whose minimum-norm impulses are worked by hand.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -65,6 +68,48 @@ TEST_CASE("Sparse storage holds the same A and B as dense storage", "[section4][
   // Automatic storage: dense up to sparse_threshold contacts, sparse above.
   CHECK_FALSE(ContactSystem(impulse::sparse_threshold).is_sparse());
   CHECK(ContactSystem(impulse::sparse_threshold + 1).is_sparse());
+}
+
+TEST_CASE("Sparse storage builds A and the stacked factor G as dense storage does, entry for entry",
+          "[section4][sparse]") {
+  // Three blocks over 60 contacts, sharing contacts, in an order that is not sorted: a body
+  // touching 40 contacts (its columns hold more than the 32 entries sorted by insertion), one of
+  // 20 and one of 5, with random a, b, G, w (a need not be G^T G for the storage). The dense
+  // storage adds each entry into its place in the order added; the sparse one sorts and sums
+  // them column by column. Both sum a place's entries in the order added, so they agree exactly.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  std::vector<Eigen::Index> order(60);
+  std::iota(order.begin(), order.end(), 0);
+  std::shuffle(order.begin(), order.end(), random);
+  const auto block = [&](std::size_t first, std::size_t count, Eigen::Index rows) {
+    BlockContribution b;
+    b.contacts.assign(order.begin() + static_cast<std::ptrdiff_t>(first),
+                      order.begin() + static_cast<std::ptrdiff_t>(first + count));
+    const auto n = static_cast<Eigen::Index>(count);
+    b.a = Eigen::MatrixXd::NullaryExpr(n, n, [&] { return value(random); });
+    b.b = Eigen::VectorXd::NullaryExpr(n, [&] { return value(random); });
+    b.G = Eigen::MatrixXd::NullaryExpr(rows, n, [&] { return value(random); });
+    b.w = Eigen::VectorXd::NullaryExpr(rows, [&] { return value(random); });
+    return b;
+  };
+  const std::vector<BlockContribution> blocks{block(0, 40, 3), block(30, 20, 2), block(35, 5, 3)};
+  ContactSystem sparse(60, Storage::sparse);
+  ContactSystem dense(60, Storage::dense);
+  for (const BlockContribution& b : blocks) {
+    sparse += b;
+    dense += b;
+  }
+  CHECK(Eigen::MatrixXd(sparse.sparse_A()) == dense.A());
+  CHECK(sparse.sparse_A().nonZeros() == 40 * 40 + 20 * 20 - 10 * 10);  // overlaps counted once
+  Eigen::SparseMatrix<double> G_sparse;
+  Eigen::VectorXd w_sparse;
+  sparse.factor(G_sparse, w_sparse);
+  Eigen::MatrixXd G_dense;
+  Eigen::VectorXd w_dense;
+  dense.factor(G_dense, w_dense);
+  CHECK(Eigen::MatrixXd(G_sparse) == G_dense);
+  CHECK(w_sparse == w_dense);
 }
 
 TEST_CASE("Sparse method: a point mass on two parallel contacts gets equal impulses",
