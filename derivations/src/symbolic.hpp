@@ -85,6 +85,22 @@ using CanonicalForms = std::map<ex, std::string, GiNaC::ex_is_less>;
 /// e^x, √x, |x|) and neither k nor m holding p; else nothing. k is not 0.
 [[nodiscard]] std::optional<std::pair<ex, ex>> linear_in(const ex& e, const ex& p);
 
+/// The part of @p e that @p is says yes to, where every such part is the same one (√x twice is
+/// one root); nothing where there is none or two differ.
+template <typename Is>
+std::optional<ex> only_part(const ex& e, Is&& is) {
+  std::optional<ex> found;
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (is(*it)) {
+      if (found && !found->is_equal(*it)) {
+        return std::nullopt;
+      }
+      found = *it;
+    }
+  }
+  return found;
+}
+
 /// Calls @p each with every factor of @p e when it is a product, else with @p e itself.
 /// @param e an expression
 /// @param each what to do with a factor

@@ -2155,27 +2155,10 @@ std::optional<ex> squared_without(const ex& premise, const ex& part, const ex& s
   return GiNaC::expand(k * k * square - rest * rest);
 }
 
-// The part of @p premise that @p is says yes to, where every such part is the same one (√x twice
-// is one root); nothing where there is none or two differ.
-template <typename Is>
-std::optional<ex> only_part(const ex& premise, Is&& is) {
-  std::optional<ex> found;
-  for (GiNaC::const_preorder_iterator it = premise.preorder_begin(); it != premise.preorder_end();
-       ++it) {
-    if (is(*it)) {
-      if (found && !found->is_equal(*it)) {
-        return std::nullopt;
-      }
-      found = *it;
-    }
-  }
-  return found;
-}
-
 // k² A - R² for a premise k √A + R whose one square root √A of a symbol's expression is in no
 // other term (and nothing large): the premise squared, without its root; else nothing.
 std::optional<ex> root_squared(const ex& premise) {
-  const auto root = only_part(premise, [](const ex& e) {
+  const auto root = sym::only_part(premise, [](const ex& e) {
     return is_a<GiNaC::power>(e) && e.op(1).is_equal(GiNaC::numeric(1, 2)) &&
            !symbols_of(e.op(0)).empty();
   });
@@ -2261,7 +2244,7 @@ std::string inverted_on_range(Problem& problem, const Facts& facts) {
 // keep k from 0 and -R/k is a positive number or the facts keep it positive (1/2 = e^{-T/τ} gives
 // -T/τ = ln(1/2), in which T can be solved for); else nothing.
 std::optional<ex> exponential_logarithm(const ex& premise, const Facts& facts) {
-  const auto exponential = only_part(premise, [](const ex& e) {
+  const auto exponential = sym::only_part(premise, [](const ex& e) {
     return sym::is_function(e, "exp") && !symbols_of(e.op(0)).empty();
   });
   const auto kr = !exponential || expanded_terms(premise) > 20

@@ -775,13 +775,13 @@ bool Checker::domain_reading(const Scalars& before, const Scalars& step, const F
   return true;
 }
 
-// A step k √R + q = 0 (one square root, k a number), where the exact method found it failing or
-// could not decide: it holds wherever k² R = q² does and -q/k ≥ 0, the root being the one that is
-// not negative. Where the equations before give k² R = q², the step follows where the facts give
-// -q/k ≥ 0 (s² = a² + b² then s = √(a² + b²), for s > 0), else it follows-if -q/k ≥ 0 when that
-// is a symbol (v² = 2 g h then v = √(2 g h) follows where v ≥ 0, as x² = 9 then x = 3 does where
-// x + 3 ≠ 0: it dropped the negative root). A point where it failed is kept unless it breaks
-// that sign. Returns whether it decided the step.
+// A step k √R + q = 0 (one square root; k a number, or of a sign the facts give), where the exact
+// method found it failing or could not decide: it holds wherever k² R = q² does and -q/k ≥ 0, the
+// root being the one that is not negative. Where the equations before give k² R = q², the step
+// follows where the facts give -q/k ≥ 0 (s² = a² + b² then s = √(a² + b²), for s > 0), else it
+// follows-if -q/k ≥ 0 when that is a symbol (v² = 2 g h then v = √(2 g h) follows where v ≥ 0, as
+// x² = 9 then x = 3 does where x + 3 ≠ 0: it dropped the negative root). A point where it failed is
+// kept unless it breaks that sign. Returns whether it decided the step.
 bool Checker::root_reading(const Scalars& before, const Scalars& step, const Facts& facts,
                            std::size_t index, const Budget& budget, Forward& forward,
                            NumericOpinion& opinion) {
@@ -789,16 +789,11 @@ bool Checker::root_reading(const Scalars& before, const Scalars& step, const Fac
     return false;
   }
   const ex& target = step.differences[0];
-  std::optional<ex> root;
-  for (auto it = target.preorder_begin(); it != target.preorder_end(); ++it) {
-    if (GiNaC::is_a<GiNaC::power>(*it) && it->op(1).is_equal(GiNaC::numeric(1, 2)) &&
-        !symbols_of(it->op(0)).empty()) {  // √2 of √(2 g h) = √2 √(g h) is a number
-      if (root && !root->is_equal(*it)) {
-        return false;  // two roots
-      }
-      root = *it;
-    }
-  }
+  // The one square root of a symbol's expression (√2 of √(2 g h) = √2 √(g h) is a number).
+  const std::optional<ex> root = sym::only_part(target, [](const ex& x) {
+    return GiNaC::is_a<GiNaC::power>(x) && x.op(1).is_equal(GiNaC::numeric(1, 2)) &&
+           !symbols_of(x.op(0)).empty();
+  });
   const GiNaC::symbol stand_in("root");  // GiNaC expands √(g h) as it pleases: a symbol for it
   const auto kq = root ? sym::linear_in(target.subs(*root == stand_in), stand_in) : std::nullopt;
   // q real wherever the root is: no other root of a symbol's expression in it ((g h)^(3/2) is
