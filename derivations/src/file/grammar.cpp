@@ -163,14 +163,10 @@ bool Grammar::explicit_product(const Token& t) const {
          is_char(t, '/') || is_command(t, "\\div") || is_command(t, "\\ast");
 }
 
-// term := big | factor { [product-op] factor } [big]
-// product-op := '\cdot' | '\times' | '*' | '/' | '\div' | '\ast'
-// (factors side by side multiply; a big operator takes the rest of the term; inside a
-// function's argument written without parentheses, the term stops before the next function)
 // The refusal of a function's bare argument that would run on at @p at (the factor, or the
-// operator before it), with the two readings in the writer's own text: "write \\sin(\\theta d) for
-// the one, (\\sin\\theta) d for the other". The factor is read ahead to find where it ends; where
-// that fails, or the texts are long, the readings are shown on \\cos\\theta and d.
+// operator before it), with the two readings in the writer's own text: "write \sin(\theta d) for
+// the one, (\sin\theta) d for the other". The factor is read ahead to find where it ends; where
+// that fails, or the texts are long, the readings are shown on \cos\theta and d.
 ReadError Grammar::runs_on(const Token& at, const std::string& past) {
   const std::string& text = source_.text();
   const std::size_t argument_end = last_end_;
@@ -201,6 +197,10 @@ ReadError Grammar::runs_on(const Token& at, const std::string& past) {
                    past + "; write " + readings + " for the other");
 }
 
+// term := big | factor { [product-op] factor } [big]
+// product-op := '\cdot' | '\times' | '*' | '/' | '\div' | '\ast'
+// (factors side by side multiply; a big operator takes the rest of the term; inside a
+// function's argument written without parentheses, the term stops before the next function)
 Node Grammar::term(std::size_t depth) {
   enter(depth, peek());
   const std::size_t start = peek().offset;
