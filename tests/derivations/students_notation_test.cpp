@@ -1483,6 +1483,11 @@ TEST_CASE("Units, one-digit arguments and a function's reach, as a fourth probe 
   CHECK(verdicts("$$J = 2\\,\\text{N s}$$\n\n$$J = 2$$").back() == "follows");
   CHECK(verdicts("$$J = 2\\,\\text{Ns}$$\n\n$$J = 2$$").back() == "follows");
   CHECK(verdicts("$$v = 3\\,\\text{m/s}$$\n\n$$v = 3$$").back() == "follows");
+  // A unit's power written outside its \text is part of the unit (9.81\ \text{m/s}^2 was refused as
+  // words inside the equation); a unit outside SI with a power is still refused as one.
+  CHECK(verdicts("$$a = 9.81\\ \\text{m/s}^2$$\n\n$$2 a = 19.62$$").back() == "follows");
+  CHECK(verdicts("$$v = 3\\,\\text{m s}^{-1}$$\n\n$$2 v = 6$$").back() == "follows");
+  refused("$$a = 9.81\\,\\text{km/h}^2$$", 1, 13, "SI units");
   CHECK(verdicts("$$v = 0 \\quad \\text{initially}$$\n\n$$2 v = 0$$").back() == "follows");
   // Words in parentheses are a note, after a number too (\text{(given)} was refused as a
   // quantity, \text{(in joules)} as the unit "in"); a unit in them is still a unit.
@@ -1528,6 +1533,14 @@ TEST_CASE("Units, one-digit arguments and a function's reach, as a fourth probe 
   CHECK(verdicts("$$a = (-2)^2$$\n\n$$a = 4$$").back() == "follows");
   // - 50% is a comment to TeX, which hid the rest: a = 50% b gave a = 50.
   refused("$$a = 50% b$$\n\n$$a = 50$$", 1, 9, "percentage");
+  // \% after a number is a percentage, 80\% = 80/100 (it was refused at \%), and 0{,}5 the
+  // decimal comma, 0.5 (refused at the comma); both only where they can mean nothing else.
+  CHECK(verdicts("$$e = 80\\%$$\n\n$$e = 0.8$$") == std::vector<std::string>{"premise", "follows"});
+  CHECK(verdicts("$$e = 80\\%$$\n\n$$e = 8$$").back() == "does-not-follow");
+  CHECK(verdicts("$$x = 0{,}5^2$$\n\n$$4 x = 1$$") ==
+        std::vector<std::string>{"premise", "follows"});
+  refused("$$x = a\\%$$", 1, 8, "a number before \\%");
+  refused("$$x = 0{,} 5$$", 1, 9, "','");
 }
 
 TEST_CASE("Equations side by side, derivatives along a function, half angles at pi, products",

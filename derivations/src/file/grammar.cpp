@@ -456,7 +456,7 @@ Node Grammar::factor(std::size_t depth) {
   return postfix(depth, atom(depth + 1));
 }
 
-// postfix := ['^' script ['_' subscript]] ['!'] { bar }
+// postfix := ['^' script ['_' subscript]] ['!'] ['\%'] { bar }
 // (v^2_1 is (v_1)^2: a subscript after the power belongs to the symbol under it)
 Node Grammar::postfix(std::size_t depth, Node base) {
   if (is_char(peek_raw(), '^')) {
@@ -499,6 +499,22 @@ Node Grammar::postfix(std::size_t depth, Node base) {
     f.children.push_back(std::move(base));
     f.end = last_end_;
     base = std::move(f);
+  }
+  if (is_command(peek_raw(), "\\%")) {
+    // 80\% is 80/100.
+    const Token percent = take();
+    if (base.kind != NodeKind::number) {
+      throw error(percent,
+                  "expected a number before \\% (80\\% is read as 80/100); a percentage "
+                  "of anything else is not read: write it as a fraction");
+    }
+    Node hundred = make(NodeKind::number, percent.offset);
+    hundred.text = "100";
+    Node share = make(NodeKind::fraction, base.offset);
+    share.children.push_back(std::move(base));
+    share.children.push_back(std::move(hundred));
+    share.end = last_end_;
+    base = std::move(share);
   }
   while (bar_ahead()) {
     base = bar(depth, std::move(base));

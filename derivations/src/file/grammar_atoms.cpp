@@ -39,6 +39,18 @@ Node Grammar::atom(std::size_t depth) {
       const Token number = take();
       Node n = make(NodeKind::number, number.offset);
       n.text = number.text;
+      // 0{,}5: the decimal comma as LaTeX writes it (the braces keep TeX from spacing it as a
+      // separator), read as 0.5.
+      const std::size_t i = position_;
+      if (number.text.find('.') == std::string::npos && is_char(token(i), '{') &&
+          is_char(token(i + 1), ',') && is_char(token(i + 2), '}') &&
+          token(i + 3).kind == Tok::number && !token(i + 3).space_before &&
+          token(i + 3).text.find('.') == std::string::npos) {
+        position_ += 3;
+        const Token fraction = take();
+        n.text += "." + fraction.text;
+        n.end = last_end_;
+      }
       return n;
     }
     case Tok::letter: {

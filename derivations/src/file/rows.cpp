@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cctype>
 #include <optional>
-#include <utility>
 #include <set>
 #include <string_view>
+#include <utility>
 
 #include "file/grammar.hpp"
 #include "file/latex.hpp"
@@ -106,6 +106,31 @@ std::size_t annotation_end(const Source& source, const std::vector<Token>& token
     }
   }
   throw source.error(tokens[i].offset, "expected '}' to close " + tokens[i].text);
+}
+
+// The end of a unit's power written after its \text{…} (which ends at @p end): ^2, ^{2},
+// ^{-1}; @p end where no such power follows.
+std::size_t unit_power_end(const std::vector<Token>& tokens, std::size_t end) {
+  const std::size_t n = tokens.size();
+  const auto digit = [&](std::size_t k) {
+    return k < n && tokens[k].kind == Tok::number && tokens[k].text.size() == 1;
+  };
+  if (end >= n || !is_char(tokens[end], '^')) {
+    return end;
+  }
+  if (digit(end + 1)) {
+    return end + 2;
+  }
+  if (end + 1 < n && is_char(tokens[end + 1], '{')) {
+    std::size_t k = end + 2;
+    if (k < n && is_char(tokens[k], '-')) {
+      ++k;
+    }
+    if (digit(k) && k + 1 < n && is_char(tokens[k + 1], '}')) {
+      return k + 2;
+    }
+  }
+  return end;
 }
 
 // A \text{…} alone in round brackets from @p k, ( \text{…} ) or \left( \text{…} \right): the
@@ -539,7 +564,10 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
       const std::size_t at = bracketed ? bracketed->first : k;  // the \text command
       const Token& text = tokens[at];
       const std::size_t text_end = annotation_end(source, tokens, at);
-      const std::size_t end = bracketed ? bracketed->second : text_end;
+      // A unit's power after a number, 9.81\,\text{m/s}^2, is part of the unit.
+      const std::size_t end = bracketed                      ? bracketed->second
+                              : after_number(current.tokens) ? unit_power_end(tokens, text_end)
+                                                             : text_end;
       std::size_t open = at + 1;
       while (tokens[open].kind == Tok::spacing) {
         ++open;
@@ -548,8 +576,7 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
                                     tokens.end());
       if (holds_relation(current.tokens) && equation_follows(end, true)) {
         // an annotation between two equations, or at the end of the row
-        refuse_annotation(source, text, current.tokens, tokens, open, text_end,
-                          blank_tokens(rest));
+        refuse_annotation(source, text, current.tokens, tokens, open, text_end, blank_tokens(rest));
         next_piece(Join::row, first_offset(rest, t.offset));
         k = end - 1;
         continue;
