@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cassert>
 #include <string>
-#include <tuple>
 #include <utility>
 
 #include "impulse/core/error.hpp"
@@ -115,74 +114,13 @@ ContactSystem& ContactSystem::operator+=(BlockContribution&& block) {
 }
 
 Eigen::SparseMatrix<double> ContactSystem::sparse_A() const {
-  if (!sparse_) {
-    Eigen::SparseMatrix<double> A = A_.sparseView();
-    A.makeCompressed();
-    return A;
-  }
-  // Column by column, as setFromTriplets gives it (the entries of one place summed in the order
-  // they were added, rows ascending) without its row-major copy of every entry.
-  using StorageIndex = Eigen::SparseMatrix<double>::StorageIndex;
-  const auto n = static_cast<std::size_t>(size());
-  std::vector<std::size_t> start(n + 1, 0);
-  for (const Eigen::Triplet<double>& e : entries_) {
-    ++start[static_cast<std::size_t>(e.col()) + 1];
-  }
-  for (std::size_t j = 0; j < n; ++j) {
-    start[j + 1] += start[j];
-  }
-  std::vector<StorageIndex> rows(entries_.size());
-  std::vector<double> values(entries_.size());
-  std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  for (const Eigen::Triplet<double>& e : entries_) {
-    const std::size_t at = next[static_cast<std::size_t>(e.col())]++;
-    rows[at] = static_cast<StorageIndex>(e.row());
-    values[at] = e.value();
-  }
-  std::size_t nonzeros = 0;
-  std::size_t begin = 0;  // the column's first entry as placed
-  for (std::size_t j = 0; j < n; ++j) {
-    const std::size_t end = start[j + 1];
-    // By row, stably (the order they were added in kept within a row): an insertion sort for the
-    // few entries of most columns, a stable sort of pairs for a body touching many contacts.
-    if (end - begin <= 32) {
-      for (std::size_t a = begin + 1; a < end; ++a) {
-        for (std::size_t b = a; b > begin && rows[b - 1] > rows[b]; --b) {
-          std::swap(rows[b - 1], rows[b]);
-          std::swap(values[b - 1], values[b]);
-        }
-      }
-    } else {
-      std::vector<std::pair<StorageIndex, double>> column;
-      column.reserve(end - begin);
-      for (std::size_t a = begin; a < end; ++a) {
-        column.emplace_back(rows[a], values[a]);
-      }
-      std::stable_sort(column.begin(), column.end(),
-                       [](const auto& x, const auto& y) { return x.first < y.first; });
-      for (std::size_t a = begin; a < end; ++a) {
-        std::tie(rows[a], values[a]) = column[a - begin];
-      }
-    }
-    for (std::size_t a = begin; a < end; ++a) {
-      if (a != begin && rows[a] == rows[nonzeros - 1]) {
-        values[nonzeros - 1] += values[a];
-      } else {
-        rows[nonzeros] = rows[a];
-        values[nonzeros] = values[a];
-        ++nonzeros;
-      }
-    }
-    start[j + 1] = nonzeros;  // the column's end, once its duplicates are summed
-    begin = end;
-  }
   Eigen::SparseMatrix<double> A(size(), size());
-  A.resizeNonZeros(static_cast<Eigen::Index>(nonzeros));
-  for (std::size_t j = 0; j <= n; ++j) {
-    A.outerIndexPtr()[j] = static_cast<StorageIndex>(start[j]);
+  if (sparse_) {
+    A.setFromTriplets(entries_.begin(), entries_.end());  // sums the entries of shared contacts
+  } else {
+    A = A_.sparseView();
   }
-  std::copy(rows.begin(), rows.begin() + static_cast<std::ptrdiff_t>(nonzeros), A.innerIndexPtr());
-  std::copy(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(nonzeros), A.valuePtr());
+  A.makeCompressed();
   return A;
 }
 
