@@ -267,14 +267,20 @@ std::string non_si_unit(const std::vector<Token>& tokens, std::size_t open, std:
   return std::string();
 }
 
-// Whether the last token of @p tokens that is not spacing is a number.
-bool after_number(const std::vector<Token>& tokens) {
+// The last token of @p tokens that is not spacing; nullptr where there is none.
+const Token* last_written(const std::vector<Token>& tokens) {
   for (std::size_t k = tokens.size(); k-- > 0;) {
     if (tokens[k].kind != Tok::spacing) {
-      return tokens[k].kind == Tok::number;
+      return &tokens[k];
     }
   }
-  return false;
+  return nullptr;
+}
+
+// Whether the last token of @p tokens that is not spacing is a number.
+bool after_number(const std::vector<Token>& tokens) {
+  const Token* last = last_written(tokens);
+  return last != nullptr && last->kind == Tok::number;
 }
 
 // Whether the last token of @p tokens that is not spacing is a number with nothing wider than a
@@ -548,15 +554,8 @@ std::vector<RowTokens> split_steps(const Source& source, RowTokens row) {
                  first_offset(rest, t.offset));
       continue;
     }
-    const bool in_script = [&] {
-      for (std::size_t j = current.tokens.size(); j-- > 0;) {
-        if (current.tokens[j].kind == Tok::spacing) {
-          continue;
-        }
-        return is_char(current.tokens[j], '_') || is_char(current.tokens[j], '^');
-      }
-      return false;
-    }();
+    const Token* last = last_written(current.tokens);
+    const bool in_script = last != nullptr && (is_char(*last, '_') || is_char(*last, '^'));
     // (\text{SUVAT}) is a note as \text{(SUVAT)} is, where a note may stand (it was a factor
     // SUVAT of the equation): the annotation then ends after its bracket.
     const auto bracketed = top && !in_script ? bracketed_text(source, tokens, k) : std::nullopt;
