@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "impulse/core/error.hpp"
 #include "shifted_factor.hpp"
@@ -237,6 +238,15 @@ bool factor_shifted(const SparseMatrix& M, Shifted& shifted) {
   return shifted.factor.compute(M, shifted.lambda);
 }
 
+// y = M v and y = M^T v, compiled once for every product of the sparse method: each copy of
+// Eigen's product inlined where it is used costs the page's WebAssembly module about a kilobyte.
+[[gnu::noinline]] void product(const SparseMatrix& M, const VectorXd& v, VectorXd& y) {
+  y.noalias() = M * v;
+}
+[[gnu::noinline]] void transposed_product(const SparseMatrix& M, const VectorXd& v, VectorXd& y) {
+  y.noalias() = M.transpose() * v;
+}
+
 // |K| |x| into sizes: the size of the terms each entry of K x sums (without a copy of K).
 void absolute_product(const SparseMatrix& K, const VectorXd& x, VectorXd& sizes) {
   sizes.setZero(K.rows());
@@ -261,15 +271,37 @@ void absolute_product(const SparseMatrix& K, const VectorXd& x, VectorXd& sizes)
 // of the terms it is the sum of, the level at which rounding leaves it (a residual relative to
 // |rhs| alone can be out of reach when the impulses are much larger than the right-hand side,
 // e.g. at the foot of a tall stack). That size is taken at each restart; in between, the last
-// one (smaller, as x grows) makes the test stricter. When the recursive residual passes the
-// test, the true one is computed; if it fails, the iteration restarts from it, unless the last
+// one (smaller, as x grows) makes the test stricter. With Sizes::every_step it is taken after
+// each step: a preconditioner that does not amplify rounding along the null space leaves no step
+// longer than largest_step when the residual reaches its rounding level, and the recursive
+// residual would go on chasing rounding below a stricter test. When the recursive residual passes
+// the test, the true one is computed; if it fails, the iteration restarts from it, unless the last
 // restart gained less than a factor 2 (rounding level). A step longer than largest_step, or a
 // curvature that is not positive, means rounding has taken over: it stops before that step.
 // Returns the number of steps.
-template <typename Step, typename Preconditioner>
-int restarted_conjugate_gradients(const SparseMatrix& K, const VectorXd& rhs, const Step& step,
-                                  const Preconditioner& precondition, double tolerance,
-                                  int max_iterations, VectorXd& x) {
+enum class Sizes { at_restarts, every_step };
+
+// A linear map applied into a vector kept by the caller (the step and the preconditioner
+// below): a reference to a callable, so that the iteration is compiled once for its three uses
+// rather than once for each (a template), and without std::function's copying machinery for
+// each callable: both would put the page's WebAssembly module over its budget.
+class Apply {
+ public:
+  template <typename F>
+  Apply(const F& f)  // NOLINT(google-explicit-constructor): a lambda stands for it
+      : object_(&f), call_([](const void* object, const VectorXd& v, VectorXd& out) {
+          (*static_cast<const F*>(object))(v, out);
+        }) {}
+  void operator()(const VectorXd& v, VectorXd& out) const { call_(object_, v, out); }
+
+ private:
+  const void* object_;
+  void (*call_)(const void*, const VectorXd&, VectorXd&);
+};
+
+int restarted_conjugate_gradients(const SparseMatrix& K, const VectorXd& rhs, const Apply& step,
+                                  const Apply& precondition, double tolerance, int max_iterations,
+                                  VectorXd& x, Sizes measured = Sizes::at_restarts) {
   x = VectorXd::Zero(K.cols());
   const double rhs_norm = rhs.norm();
   double terms = rhs_norm;  // | |K| |x| | + |rhs| at the last restart
@@ -299,7 +331,7 @@ int restarted_conjugate_gradients(const SparseMatrix& K, const VectorXd& rhs, co
       restart = false;
     }
     step(p, dx);
-    Kdx.noalias() = K * dx;
+    product(K, dx, Kdx);
     const double curvature = p.dot(Kdx);
     const double alpha = rz / curvature;
     if (!(curvature > 0.0) || !(rz > 0.0) || !(alpha <= largest_step)) {
@@ -308,6 +340,10 @@ int restarted_conjugate_gradients(const SparseMatrix& K, const VectorXd& rhs, co
     x += alpha * dx;
     r -= alpha * Kdx;
     ++steps;
+    if (measured == Sizes::every_step) {
+      absolute_product(K, x, sizes);
+      terms = sizes.norm() + rhs_norm;
+    }
     if (reached(r.norm())) {
       r = rhs;
       r.noalias() -= K * x;  // the true residual
@@ -326,12 +362,12 @@ int restarted_conjugate_gradients(const SparseMatrix& K, const VectorXd& rhs, co
 // by (M + lambda I)^-1 (`precondition(r, z)`, which must be an approximation of a function of M, so
 // that every iterate stays in the range of M, up to rounding): on a dependent system they
 // converge to the minimum-norm solution, as unpreconditioned CG would, only in far fewer steps.
-template <typename Preconditioner>
-int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs,
-                        const Preconditioner& precondition, double tolerance, int max_iterations,
-                        VectorXd& x) {
+int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs, const Apply& precondition,
+                        double tolerance, int max_iterations, VectorXd& x,
+                        Sizes measured = Sizes::at_restarts) {
   const auto same = [](const VectorXd& p, VectorXd& dx) { dx = p; };
-  return restarted_conjugate_gradients(M, rhs, same, precondition, tolerance, max_iterations, x);
+  return restarted_conjugate_gradients(M, rhs, same, precondition, tolerance, max_iterations, x,
+                                       measured);
 }
 
 // Conjugate gradients on G G^T y = g (g in the range of G), preconditioned by
@@ -340,12 +376,9 @@ int conjugate_gradients(const SparseMatrix& M, const VectorXd& rhs,
 // the null space of G^T (directions no contact constrains, amplified by 1/lambda), is never
 // accumulated, and G^T removes those parts from each step. x stays in the range of G^T: it is
 // the minimum-norm solution of G x = g.
-template <typename Preconditioner>
-int range_solution(const SparseMatrix& G, const VectorXd& g, const Preconditioner& precondition,
+int range_solution(const SparseMatrix& G, const VectorXd& g, const Apply& precondition,
                    double tolerance, int max_iterations, VectorXd& x) {
-  const auto transposed = [&G](const VectorXd& p, VectorXd& dx) {
-    dx.noalias() = G.transpose() * p;
-  };
+  const auto transposed = [&G](const VectorXd& p, VectorXd& dx) { transposed_product(G, p, dx); };
   return restarted_conjugate_gradients(G, g, transposed, precondition, tolerance, max_iterations,
                                        x);
 }
@@ -376,7 +409,8 @@ Spectrum lanczos_spectrum(const SparseMatrix& A) {
     const auto hash = (static_cast<std::uint64_t>(i) + 1) * 2654435761U % 4294967296U;
     z(i) = static_cast<double>(hash) / 4294967296.0 - 0.5;
   }
-  VectorXd q = A * z;
+  VectorXd q;
+  product(A, z, q);
   double beta = q.norm();
   if (!(beta > 0.0)) {
     return {};
@@ -404,7 +438,7 @@ Spectrum lanczos_spectrum(const SparseMatrix& A) {
   VectorXd w(n);
   while (k < steps) {
     Q.col(k) = q;
-    w.noalias() = A * q;
+    product(A, q, w);
     alpha(k) = q.dot(w);
     // Full reorthogonalisation against every Lanczos vector so far, twice ("twice is enough"):
     // they stay orthogonal to rounding. Once is not: on 1,000 balls around a body of mass 1e9
@@ -445,6 +479,45 @@ Spectrum lanczos_spectrum(const SparseMatrix& A) {
   return spectrum.largest > 0.0 ? spectrum : Spectrum{};
 }
 
+// How many rows of G some contact moves (a nonzero entry). The others are velocities no contact
+// changes (the sideways motion of a box on horizontal contacts), which add nothing to A.
+Index moved_rows(const SparseMatrix& G) {
+  std::vector<char> moved(static_cast<std::size_t>(G.rows()), 0);
+  for (Index j = 0; j < G.outerSize(); ++j) {
+    for (SparseMatrix::InnerIterator it(G, j); it; ++it) {
+      moved[static_cast<std::size_t>(it.row())] |= static_cast<char>(it.value() != 0.0);
+    }
+  }
+  return static_cast<Index>(std::count(moved.begin(), moved.end(), 1));
+}
+
+// The lower triangle of G G^T (all the factorisation reads), as the sum over contacts of their
+// columns' outer products, without G's stored zeros: a row no contact moves stays empty, and
+// its pivot is lambda, which counts as null space.
+SparseMatrix lower_product(const SparseMatrix& G) {
+  std::size_t count = 0;
+  for (Index j = 0; j < G.outerSize(); ++j) {
+    const auto k = static_cast<std::size_t>(G.col(j).nonZeros());
+    count += k * (k + 1) / 2;
+  }
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(count);
+  for (Index j = 0; j < G.outerSize(); ++j) {
+    for (SparseMatrix::InnerIterator below(G, j); below; ++below) {
+      for (SparseMatrix::InnerIterator above(G, j); above && above.row() <= below.row(); ++above) {
+        const double product = below.value() * above.value();
+        if (product != 0.0) {
+          entries.emplace_back(below.row(), above.row(), product);
+        }
+      }
+    }
+  }
+  SparseMatrix C(G.rows(), G.rows());
+  const auto& summed = entries;  // the same const iterators as ContactSystem::sparse_A()
+  C.setFromTriplets(summed.begin(), summed.end());
+  return C;
+}
+
 // Solves a system that carries its factor with sparse factorisations only. Leaves solution.A
 // empty and fills sparse_A. Returns false when a factorisation failed (the caller then solves
 // densely). Sets `doubtful` when A has eigenvalues on its range below the level the shifted
@@ -477,11 +550,16 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
     return true;
   }
 
-  // 1. Any solution x of A x = B (the minimum-norm one when A is regular).
+  // The factorisation: of A + lambda I (one row per contact), or of G G^T + lambda I (one row
+  // per velocity) when fewer velocities are moved by a contact than there are contacts, as on a
+  // pyramid of boxes (four contacts and two moved velocities a box): its nonzero eigenvalues are
+  // A's, and it is the smaller and sparser system (bench/README.md).
+  const bool by_velocities = moved_rows(G) < n;
   Shifted shifted;
-  if (!factor_shifted(A, shifted)) {
+  if (!(by_velocities ? factor_shifted(lower_product(G), shifted) : factor_shifted(A, shifted))) {
     return false;
   }
+  solution.factored_velocities = by_velocities;
   const VectorXd pivots = shifted.factor.pivots();
   const double null_level = null_pivot * shifted.lambda;
   Index retained = 0;
@@ -496,8 +574,8 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
   }
   solution.rank = retained;
   solution.dependent = retained < n;
-  // The pivots of A + lambda I cannot see eigenvalues below about 1e3 lambda (1e-7 of the largest
-  // diagonal entry): those count as null space. The ratio of A's largest to its smallest
+  // The pivots of the shifted matrix cannot see eigenvalues below about 1e3 lambda (1e-7 of the
+  // largest diagonal entry): those count as null space. The ratio of A's largest to its smallest
   // diagonal entry is a lower bound of the condition number of a regular A (its extreme
   // eigenvalues enclose the diagonal), and it sees contacts of very different scales (masses
   // 1e-9 and 1e9) that the pivots take for a dependency. The estimate is the larger of the two.
@@ -516,33 +594,54 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
                 spectrum.largest / spectrum.smallest});
   doubtful = spectrum.smallest < null_level;
   VectorXd x;
-  const auto shifted_inverse = [&](const VectorXd& r, VectorXd& z) { shifted.factor.solve(r, z); };
-  solution.iterations = conjugate_gradients(A, B, shifted_inverse, options.sparse_tolerance,
-                                            options.max_iterations, x);
-
-  // 2. x may carry a part in the null space of A = null space of G (the preconditioner
-  // amplifies rounding there by 1/lambda). The minimum-norm solution has the same G x and lies
-  // in the range of G^T: it is G^T y with G G^T y = G x, solved by conjugate gradients too, with
-  // the preconditioner G (G^T G + lambda I)^-2 G^T from the factorisation already made. On the
-  // range of G it is nearly (G G^T)^-1 (eigenvalues s^2 / (s^2 + lambda)^2 for s^2 of G G^T)
-  // and, being G times something, it adds nothing along the null space of G^T: the rounding it
-  // amplifies by 1/lambda^2 lies in the null space of G, which the product with G removes. The
-  // step runs on every system, not only on those whose pivots show a dependency: the pivot of a
-  // dependent direction is about lambda only when the direction is well separated from the
-  // others, so the rank estimate can miss one in an ill-conditioned system; on a regular
-  // system the step returns the same x for a few more iterations.
-  {
+  if (by_velocities) {
+    // One run of conjugate gradients on A x = B, preconditioned by
+    // G^T (G G^T + lambda I)^-2 G = (A + lambda I)^-2 A: a function of A, so that every iterate
+    // lies in the range of A = range of G^T and the solution is the minimum-norm one without the
+    // second step below; on that range it is nearly A's inverse (eigenvalues s^2 / (s^2 + lambda)^2
+    // for s^2 of A). The rounding the two solves amplify by 1/lambda^2 lies in the null space of
+    // G^T, which the product with G^T removes; so no step grows long when the residual reaches
+    // rounding, and the sizes are taken at every step.
+    VectorXd Gr(G.rows());
+    VectorXd once(G.rows());
+    VectorXd twice(G.rows());
+    const auto precondition = [&](const VectorXd& r, VectorXd& z) {
+      product(G, r, Gr);
+      shifted.factor.solve(Gr, once);
+      shifted.factor.solve(once, twice);
+      transposed_product(G, twice, z);
+    };
+    solution.iterations = conjugate_gradients(A, B, precondition, options.sparse_tolerance,
+                                              options.max_iterations, x, Sizes::every_step);
+  } else {
+    // 1. Any solution x of A x = B (the minimum-norm one when A is regular).
+    const auto shifted_inverse = [&](const VectorXd& r, VectorXd& z) {
+      shifted.factor.solve(r, z);
+    };
+    solution.iterations = conjugate_gradients(A, B, shifted_inverse, options.sparse_tolerance,
+                                              options.max_iterations, x);
+    // 2. x may carry a part in the null space of A = null space of G (the preconditioner
+    // amplifies rounding there by 1/lambda). The minimum-norm solution has the same G x and
+    // lies in the range of G^T: it is G^T y with G G^T y = G x, solved by conjugate gradients
+    // too, with the preconditioner G (G^T G + lambda I)^-2 G^T from the factorisation already
+    // made. On the range of G it is nearly (G G^T)^-1 (eigenvalues s^2 / (s^2 + lambda)^2 for
+    // s^2 of G G^T) and, being G times something, it adds nothing along the null space of G^T:
+    // the rounding it amplifies by 1/lambda^2 lies in the null space of G, which the product
+    // with G removes. The step runs on every system, not only on those whose pivots show a
+    // dependency: the pivot of a dependent direction is about lambda only when the direction is
+    // well separated from the others, so the rank estimate can miss one in an ill-conditioned
+    // system; on a regular system the step returns the same x for a few more iterations.
     VectorXd Gtr(G.cols());
     VectorXd once(G.cols());
     VectorXd twice(G.cols());
     const auto range_preconditioner = [&](const VectorXd& r, VectorXd& z) {
-      Gtr.noalias() = G.transpose() * r;
+      transposed_product(G, r, Gtr);
       shifted.factor.solve(Gtr, once);
       shifted.factor.solve(once, twice);
-      z.noalias() = G * twice;
+      product(G, twice, z);
     };
     VectorXd Gx(G.rows());
-    Gx.noalias() = G * x;
+    product(G, x, Gx);
     // Judged against |G x| alone, the velocity change (not |G G^T| |y|).
     solution.iterations += range_solution(G, Gx, range_preconditioner, options.sparse_tolerance,
                                           options.max_iterations, x);

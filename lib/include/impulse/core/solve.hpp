@@ -70,9 +70,14 @@ enum class SolveMethod {
   /// conjugate gradients on A preconditioned by a sparse LDLᵀ of @f$ A + \lambda I @f$
   /// (@f$ \lambda = 10^{-10} \max_v A_{vv} @f$), which gives any solution @f$ \hat{x} @f$;
   /// then the minimum-norm one as @f$ G^T y @f$ with @f$ G G^T y = G\,\hat{x} @f$, by
-  /// conjugate gradients preconditioned from the same LDLᵀ. The rank is an estimate from the
-  /// pivots of the LDLᵀ; the condition number an estimate from them, A's diagonal and a few
-  /// Lanczos steps on A.
+  /// conjugate gradients preconditioned from the same LDLᵀ. Where fewer velocities are moved by
+  /// a contact (rows of G with an entry) than there are contacts, as on a pyramid of boxes, it
+  /// factors @f$ G G^T + \lambda I @f$ instead (λ from its diagonal), the smaller system with
+  /// A's nonzero eigenvalues, and one run of conjugate gradients preconditioned by
+  /// @f$ G^T (G G^T + \lambda I)^{-2} G @f$ gives the minimum-norm solution directly
+  /// (see Solution::factored_velocities). The rank is an estimate from the pivots of the
+  /// factorisation; the condition number an estimate from them, A's diagonal and a few Lanczos
+  /// steps on A.
   sparse,
 };
 
@@ -114,7 +119,8 @@ struct SolverOptions {
   /// against the size of the terms it sums, the level rounding leaves it at (or earlier, when
   /// rounding stops them from gaining).
   double sparse_tolerance = 1e-13;
-  /// The sparse method's limit on iterations, for each of its two solves.
+  /// The sparse method's limit on iterations, for each of its runs of conjugate gradients (two,
+  /// or one where it factors the moved velocities, Solution::factored_velocities).
   int max_iterations = 100;
 };
 
@@ -135,8 +141,9 @@ struct Solution {
   Eigen::MatrixXd A;                          ///< the system solved (dense method; else 0×0)
   Eigen::VectorXd B;                          ///< its right-hand side
   /// Numerical rank of A. The dense method reads it from the pivoted QR; the sparse method
-  /// estimates it as N minus the count of LDLᵀ pivots of @f$ A + \lambda I @f$ not above
-  /// @f$ 10^3 \lambda @f$ (see rank_estimated).
+  /// estimates it as the count of LDLᵀ pivots of @f$ A + \lambda I @f$ (or of
+  /// @f$ G G^T + \lambda I @f$, see factored_velocities) above @f$ 10^3 \lambda @f$ (see
+  /// rank_estimated).
   Eigen::Index rank = 0;
   double residual = 0.0;   ///< @f$ \|A\,F\,dt - B\|_2 @f$ of the whole system
   bool dependent = false;  ///< rank < N: many impulse vectors act the same
@@ -159,6 +166,10 @@ struct Solution {
   Eigen::SparseMatrix<double> sparse_A;     ///< the system solved (sparse method; else 0×0)
   bool rank_estimated = false;  ///< true when rank and condition_estimate are sparse estimates
   int iterations = 0;           ///< conjugate-gradient steps of the sparse method (0: dense)
+  /// True when the sparse method factored @f$ G G^T + \lambda I @f$, one row per velocity,
+  /// rather than @f$ A + \lambda I @f$: it does where fewer velocities are moved by a contact
+  /// than there are contacts (a pyramid of boxes). Rank and pivots are then that matrix's.
+  bool factored_velocities = false;
 };
 
 /// @brief Throws InvalidInput when @p contacts exceed dense_limit and @p options ask for a policy
