@@ -19,30 +19,32 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 namespace {
 
 // CHOLMOD's Cholesky through Eigen's CholmodSupport, which keeps the factor to itself: this
-// subclass reads its pivots. CHOLMOD chooses by the work per nonzero of the factor: supernodal
-// (dense blocks, BLAS) for a two-dimensional pyramid, simplicial L D L^T for a chain (a stack, a
-// cradle), where dense blocks would only add overhead. The ordering is CHOLMOD's default choice:
-// AMD, and METIS' nested dissection as well when AMD leaves much fill (on the generated stacks,
-// cradles and pyramids it does not: METIS' analysis alone took longer than the whole
-// factorisation with AMD, for the same fill; bench/README.md).
-class Supernodal : public Eigen::CholmodBase<SparseMatrix, Eigen::Lower, Supernodal> {
-  using Base = Eigen::CholmodBase<SparseMatrix, Eigen::Lower, Supernodal>;
+// subclass reads its pivots. Simplicial L D L^T always: CHOLMOD's own choice (supernodal, with
+// dense blocks and the BLAS, where the factor does much work per nonzero) took the pyramid's
+// G G^T of 100,000 contacts in 190 to 450 ms of CPU against 140 ms simplicial, and its A in
+// 660 against 450 ms, on the 2-core machine with Debian's reference BLAS, where its OpenMP
+// threads (four, fixed when CHOLMOD was built) cost more than they gain (bench/README.md). The
+// ordering is CHOLMOD's default choice: AMD, and METIS' nested dissection as well when AMD leaves
+// much fill (on the generated stacks, cradles and pyramids it does not: METIS' analysis alone
+// took longer than the whole factorisation with AMD, for the same fill).
+class Simplicial : public Eigen::CholmodBase<SparseMatrix, Eigen::Lower, Simplicial> {
+  using Base = Eigen::CholmodBase<SparseMatrix, Eigen::Lower, Simplicial>;
   using Base::m_cholmod;
   using Base::m_cholmodFactor;
 
  public:
-  Supernodal() {
+  Simplicial() {
     m_cholmod.final_asis = 1;
-    m_cholmod.supernodal = CHOLMOD_AUTO;
+    m_cholmod.supernodal = CHOLMOD_SIMPLICIAL;
     m_cholmod.print = 0;  // failures are returned, never printed
   }
-  ~Supernodal() {
+  ~Simplicial() {
     cholmod_free_dense(&solution_, &m_cholmod);
     cholmod_free_dense(&work_y_, &m_cholmod);
     cholmod_free_dense(&work_e_, &m_cholmod);
   }
-  Supernodal(const Supernodal&) = delete;
-  Supernodal& operator=(const Supernodal&) = delete;
+  Simplicial(const Simplicial&) = delete;
+  Simplicial& operator=(const Simplicial&) = delete;
 
   // The factor's solve into x, by cholmod_solve2 with its solution and workspace kept (Eigen's
   // solve calls cholmod_solve, which allocates and frees them at every call).
@@ -64,26 +66,12 @@ class Supernodal : public Eigen::CholmodBase<SparseMatrix, Eigen::Lower, Superno
     x = Eigen::Map<const VectorXd>(static_cast<const double*>(solution_->x), b.size());
   }
 
-  // The pivots: a supernodal factor is L L^T, its columns stored supernode by supernode as dense
-  // column-major blocks whose first rows are their own columns (the pivot is L_jj squared); a
-  // simplicial one is L D L^T with D on L's diagonal.
+  // The pivots: D of the simplicial L D L^T, on L's diagonal (the squares of L's diagonal had
+  // CHOLMOD made L L^T).
   [[nodiscard]] VectorXd pivots() const {
     const cholmod_factor& L = *m_cholmodFactor;
     VectorXd d(static_cast<Index>(L.n));
     const auto* x = static_cast<const double*>(L.x);
-    if (L.is_super != 0) {
-      const auto* super = static_cast<const int*>(L.super);
-      const auto* pi = static_cast<const int*>(L.pi);
-      const auto* px = static_cast<const int*>(L.px);
-      for (std::size_t s = 0; s < L.nsuper; ++s) {
-        const int rows = pi[s + 1] - pi[s];
-        for (int j = 0; j < super[s + 1] - super[s]; ++j) {
-          const double l = x[px[s] + j * rows + j];
-          d(super[s] + j) = l * l;
-        }
-      }
-      return d;
-    }
     const auto* p = static_cast<const int*>(L.p);
     for (Index j = 0; j < d.size(); ++j) {
       const double diagonal = x[p[j]];
@@ -101,7 +89,7 @@ class Supernodal : public Eigen::CholmodBase<SparseMatrix, Eigen::Lower, Superno
 }  // namespace
 
 struct ShiftedFactor::Backend {
-  Supernodal factor;
+  Simplicial factor;
 };
 
 bool ShiftedFactor::compute(const SparseMatrix& M, double lambda) {
@@ -117,10 +105,6 @@ void ShiftedFactor::solve(const VectorXd& r, VectorXd& x) const {
 
 VectorXd ShiftedFactor::pivots() const {
   return backend_->factor.pivots();
-}
-
-std::string_view shifted_factorisation() {
-  return "CHOLMOD (SuiteSparse): supernodal or simplicial, AMD or METIS, as it chooses";
 }
 
 #else
@@ -145,10 +129,6 @@ void ShiftedFactor::solve(const VectorXd& r, VectorXd& x) const {
 
 VectorXd ShiftedFactor::pivots() const {
   return backend_->factor.vectorD();
-}
-
-std::string_view shifted_factorisation() {
-  return "Eigen simplicial LDLT, AMD ordering";
 }
 
 #endif

@@ -1,16 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The sparse method's one factorisation: A + lambda I = L D L^T, by CHOLMOD's supernodal
-// Cholesky with a nested-dissection ordering (METIS) when the library is built with SuiteSparse
-// (IMPULSELAB_SUITESPARSE), by Eigen's simplicial LDL^T with an approximate minimum degree
-// ordering otherwise. Either gives the same factor up to rounding and the ordering; the sparse
-// method's results agree within its stated tolerances (tests/multipoint/sparse_test.cpp runs in
-// both builds).
+// The sparse method's one factorisation: M + lambda I = L D L^T (M is A, or G G^T), by
+// CHOLMOD's simplicial LDL^T with its choice of ordering (AMD here) when the library is built with
+// SuiteSparse (IMPULSELAB_SUITESPARSE), by Eigen's simplicial LDL^T with an approximate minimum
+// degree ordering otherwise. Either gives the same factor up to rounding and the ordering; the
+// sparse method's results agree within its stated tolerances (tests/multipoint/sparse_test.cpp
+// runs in both builds).
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
-#include <string_view>
 
 namespace impulse::detail {
 
@@ -37,9 +36,5 @@ class ShiftedFactor {
   struct Backend;
   std::unique_ptr<Backend> backend_;
 };
-
-// Which factorisation the library was built with: "CHOLMOD supernodal Cholesky, METIS ordering"
-// or "Eigen simplicial LDLT, AMD ordering".
-[[nodiscard]] std::string_view shifted_factorisation();
 
 }  // namespace impulse::detail
