@@ -518,6 +518,78 @@ SparseMatrix lower_product(const SparseMatrix& G) {
   return C;
 }
 
+// z = G^T F^-2 G r (`inner` = G) or G F^-2 G^T r (`inner` = G^T), F the shifted factor: the
+// preconditioners of both ways of iterating, with the work vectors kept between calls.
+class TwoSolves {
+ public:
+  TwoSolves(const detail::ShiftedFactor& factor, const SparseMatrix& G, bool G_inner)
+      : factor_(factor), G_(G), G_inner_(G_inner) {}
+  void operator()(const VectorXd& r, VectorXd& z) const {
+    if (G_inner_) {
+      product(G_, r, inner_);
+    } else {
+      transposed_product(G_, r, inner_);
+    }
+    factor_.solve(inner_, once_);
+    factor_.solve(once_, twice_);
+    if (G_inner_) {
+      transposed_product(G_, twice_, z);
+    } else {
+      product(G_, twice_, z);
+    }
+  }
+
+ private:
+  const detail::ShiftedFactor& factor_;
+  const SparseMatrix& G_;
+  bool G_inner_;
+  mutable VectorXd inner_;
+  mutable VectorXd once_;
+  mutable VectorXd twice_;
+};
+
+// The sparse method's iterations, after its factorisation (of G G^T + lambda I when
+// `by_velocities`, else of A + lambda I): the minimum-norm solution x of A x = B. Returns the
+// number of steps.
+int iterate(const SparseMatrix& A, const VectorXd& B, const SparseMatrix& G,
+            const detail::ShiftedFactor& factor, bool by_velocities, const SolverOptions& options,
+            VectorXd& x) {
+  if (by_velocities) {
+    // One run of conjugate gradients on A x = B, preconditioned by
+    // G^T (G G^T + lambda I)^-2 G = (A + lambda I)^-2 A: a function of A, so that every iterate
+    // lies in the range of A = range of G^T and the solution is the minimum-norm one without the
+    // second step below; on that range it is nearly A's inverse (eigenvalues s^2 / (s^2 + lambda)^2
+    // for s^2 of A). The rounding the two solves amplify by 1/lambda^2 lies in the null space of
+    // G^T, which the product with G^T removes; so no step grows long when the residual reaches
+    // rounding, and the sizes are taken at every step.
+    const TwoSolves precondition(factor, G, true);
+    return conjugate_gradients(A, B, precondition, options.sparse_tolerance, options.max_iterations,
+                               x, Sizes::every_step);
+  }
+  // 1. Any solution x of A x = B (the minimum-norm one when A is regular).
+  const auto shifted_inverse = [&factor](const VectorXd& r, VectorXd& z) { factor.solve(r, z); };
+  int steps = conjugate_gradients(A, B, shifted_inverse, options.sparse_tolerance,
+                                  options.max_iterations, x);
+  // 2. x may carry a part in the null space of A = null space of G (the preconditioner
+  // amplifies rounding there by 1/lambda). The minimum-norm solution has the same G x and
+  // lies in the range of G^T: it is G^T y with G G^T y = G x, solved by conjugate gradients
+  // too, with the preconditioner G (G^T G + lambda I)^-2 G^T from the factorisation already
+  // made. On the range of G it is nearly (G G^T)^-1 (eigenvalues s^2 / (s^2 + lambda)^2 for
+  // s^2 of G G^T) and, being G times something, it adds nothing along the null space of G^T:
+  // the rounding it amplifies by 1/lambda^2 lies in the null space of G, which the product
+  // with G removes. The step runs on every system, not only on those whose pivots show a
+  // dependency: the pivot of a dependent direction is about lambda only when the direction is
+  // well separated from the others, so the rank estimate can miss one in an ill-conditioned
+  // system; on a regular system the step returns the same x for a few more iterations.
+  const TwoSolves range_preconditioner(factor, G, false);
+  VectorXd Gx(G.rows());
+  product(G, x, Gx);
+  // Judged against |G x| alone, the velocity change (not |G G^T| |y|).
+  steps += range_solution(G, Gx, range_preconditioner, options.sparse_tolerance,
+                          options.max_iterations, x);
+  return steps;
+}
+
 // Solves a system that carries its factor with sparse factorisations only. Leaves solution.A
 // empty and fills sparse_A. Returns false when a factorisation failed (the caller then solves
 // densely). Sets `doubtful` when A has eigenvalues on its range below the level the shifted
@@ -594,58 +666,7 @@ bool solve_sparse(const ContactSystem& system, const SolverOptions& options, Sol
                 spectrum.largest / spectrum.smallest});
   doubtful = spectrum.smallest < null_level;
   VectorXd x;
-  if (by_velocities) {
-    // One run of conjugate gradients on A x = B, preconditioned by
-    // G^T (G G^T + lambda I)^-2 G = (A + lambda I)^-2 A: a function of A, so that every iterate
-    // lies in the range of A = range of G^T and the solution is the minimum-norm one without the
-    // second step below; on that range it is nearly A's inverse (eigenvalues s^2 / (s^2 + lambda)^2
-    // for s^2 of A). The rounding the two solves amplify by 1/lambda^2 lies in the null space of
-    // G^T, which the product with G^T removes; so no step grows long when the residual reaches
-    // rounding, and the sizes are taken at every step.
-    VectorXd Gr(G.rows());
-    VectorXd once(G.rows());
-    VectorXd twice(G.rows());
-    const auto precondition = [&](const VectorXd& r, VectorXd& z) {
-      product(G, r, Gr);
-      shifted.factor.solve(Gr, once);
-      shifted.factor.solve(once, twice);
-      transposed_product(G, twice, z);
-    };
-    solution.iterations = conjugate_gradients(A, B, precondition, options.sparse_tolerance,
-                                              options.max_iterations, x, Sizes::every_step);
-  } else {
-    // 1. Any solution x of A x = B (the minimum-norm one when A is regular).
-    const auto shifted_inverse = [&](const VectorXd& r, VectorXd& z) {
-      shifted.factor.solve(r, z);
-    };
-    solution.iterations = conjugate_gradients(A, B, shifted_inverse, options.sparse_tolerance,
-                                              options.max_iterations, x);
-    // 2. x may carry a part in the null space of A = null space of G (the preconditioner
-    // amplifies rounding there by 1/lambda). The minimum-norm solution has the same G x and
-    // lies in the range of G^T: it is G^T y with G G^T y = G x, solved by conjugate gradients
-    // too, with the preconditioner G (G^T G + lambda I)^-2 G^T from the factorisation already
-    // made. On the range of G it is nearly (G G^T)^-1 (eigenvalues s^2 / (s^2 + lambda)^2 for
-    // s^2 of G G^T) and, being G times something, it adds nothing along the null space of G^T:
-    // the rounding it amplifies by 1/lambda^2 lies in the null space of G, which the product
-    // with G removes. The step runs on every system, not only on those whose pivots show a
-    // dependency: the pivot of a dependent direction is about lambda only when the direction is
-    // well separated from the others, so the rank estimate can miss one in an ill-conditioned
-    // system; on a regular system the step returns the same x for a few more iterations.
-    VectorXd Gtr(G.cols());
-    VectorXd once(G.cols());
-    VectorXd twice(G.cols());
-    const auto range_preconditioner = [&](const VectorXd& r, VectorXd& z) {
-      transposed_product(G, r, Gtr);
-      shifted.factor.solve(Gtr, once);
-      shifted.factor.solve(once, twice);
-      product(G, twice, z);
-    };
-    VectorXd Gx(G.rows());
-    product(G, x, Gx);
-    // Judged against |G x| alone, the velocity change (not |G G^T| |y|).
-    solution.iterations += range_solution(G, Gx, range_preconditioner, options.sparse_tolerance,
-                                          options.max_iterations, x);
-  }
+  solution.iterations = iterate(A, B, G, shifted.factor, by_velocities, options, x);
   solution.Fdt = std::move(x);
   VectorXd residual = B;
   residual.noalias() -= A * solution.Fdt;
