@@ -764,6 +764,34 @@ TEST_CASE("Students' roots and logarithms: a rule that needs a sign follows-if t
         d::Verdict::does_not_follow);
 }
 
+TEST_CASE("A follows-if's conditions are listed in the order of their text, in every run",
+          "[derivations][students-notation]") {
+  // The conditions come from the factors of a product, in GiNaC's order, which follows hash
+  // values seeded by addresses: the same binary listed "w - z, a - b" in one run and "a - b,
+  // w - z" in the next (about half the runs each, for each of these steps). Listed by their text,
+  // every run gives the one order below; without that, all eight coming out in it by chance is
+  // about one run in 256.
+  const std::vector<std::pair<std::string, std::string>> steps = {
+      {"(z - w)(a - b)", "a - b \\neq 0, \\quad w - z \\neq 0"},
+      {"(a - b)(z - w)", "a - b \\neq 0, \\quad w - z \\neq 0"},
+      {"(b - a)(w - z)", "a - b \\neq 0, \\quad w - z \\neq 0"},
+      {"(w - z)(b - a)", "a - b \\neq 0, \\quad w - z \\neq 0"},
+      {"(q - r)(c - d)", "c - d \\neq 0, \\quad q - r \\neq 0"},
+      {"(c - d)(q - r)", "c - d \\neq 0, \\quad q - r \\neq 0"},
+      {"(s - t)(g - h)", "g - h \\neq 0, \\quad s - t \\neq 0"},
+      {"(g - h)(s - t)", "g - h \\neq 0, \\quad s - t \\neq 0"},
+  };
+  for (const auto& [factors, listed] : steps) {
+    const d::DerivationReport report = d::check_derivation(
+        "$$" + factors + " u = " + factors + " v$$\n\n$$u = v$$", "order.md", pinned_options());
+    REQUIRE(report.equations.size() == 2);
+    const d::EquationResult& step = report.equations[1];
+    CAPTURE(factors);
+    CHECK(step.verdict == d::Verdict::follows_if);
+    CHECK(step.condition == listed);
+  }
+}
+
 TEST_CASE("Students' facts: a symbol with a range is drawn over it and at its closed ends",
           "[derivations][students-notation]") {
   // arcsin(sin θ) = θ holds on -π/2 ≤ θ ≤ π/2 and fails past it: on -π/2 ≤ θ ≤ 1.571 only in

@@ -1348,6 +1348,10 @@ void Checker::condition(const Implication& forward, const Scalars& before, const
     }
     latex.push_back(text + " \\neq 0");
   }
+  // By their text: the conditions come in GiNaC's order of a product's factors, which follows the
+  // order the symbols were made in and so differs between builds (the plain text below is
+  // printed in an order of its own).
+  std::sort(latex.begin(), latex.end());
   std::string plain;
   if (!forward.conditions.empty()) {
     product = sym::up_to_sign(product);  // its sign does not matter: one form in every run
