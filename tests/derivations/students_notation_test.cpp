@@ -764,6 +764,32 @@ TEST_CASE("Students' roots and logarithms: a rule that needs a sign follows-if t
         d::Verdict::does_not_follow);
 }
 
+TEST_CASE("Students' upright groups: {\\rm d}t and K_{\\rm i} as \\mathrm{d}t and K_\\mathrm{i}",
+          "[derivations][students-notation]") {
+  // Plain TeX's {\rm …}, still common in physics texts, sets its group upright as \mathrm{…}
+  // does; it was refused as an unknown command. The pairs can fail: read as other symbols (K i, or
+  // d times t), the step would not follow.
+  same("K_{\\rm i}", "K_\\mathrm{i}");
+  same("K_{\\rm i}", "K_i");
+  same("v_{\\rm rel}", "v_\\text{rel}");
+  same("F {\\rm d}t", "F\\,\\mathrm{d}t");
+  same("\\int_0^T F(t)\\,{\\rm d}t", "\\int_0^T F(t)\\,\\mathrm{d}t", "function: F");
+  different("K_{\\rm i}", "K_{\\rm f}");
+  different("\\int_0^T F(t)\\,{\\rm d}t", "\\int_0^T 2 F(t)\\,{\\rm d}t", "function: F");
+  // The report shows the equation as written.
+  const d::DerivationReport report = d::check_derivation(
+      "$$K_{\\rm i} = \\frac{1}{2} m v^2$$\n\n$$2 K_{\\rm i} = m v^2$$", "k.md", pinned_options());
+  REQUIRE(report.equations.size() == 2);
+  CHECK(report.equations[0].latex == "K_{\\rm i} = \\frac{1}{2} m v^2");
+  CHECK(report.equations[1].verdict == d::Verdict::follows);
+  // As with \mathrm{…}: a unit inside is refused as one (its spacing too), and \rm anywhere but
+  // at the opening of its group is not read.
+  refused("$$v = 3\\,{\\rm m\\,s^{-1}}$$", 1, 16, "{\\rm …} (a name), found '\\,': units");
+  refused("$$v = 3\\,\\mathrm{m\\,s^{-1}}$$", 1, 19, "\\mathrm{…} (a name), found '\\,': units");
+  refused("$$v = {\\rm }$$", 1, 8, "expected a name inside {\\rm …}");
+  refused("$$p = m {v \\rm x}$$", 1, 12, "found '\\rm'");
+}
+
 TEST_CASE("A follows-if's conditions are listed in the order of their text, in every run",
           "[derivations][students-notation]") {
   // The conditions come from the factors of a product, in GiNaC's order, which follows hash

@@ -127,13 +127,15 @@ std::string Grammar::name_group(const Token& command_token) {
     throw error(peek(), "expected {name} after " + command_token.text);
   }
   const Token open = take();
+  // as written: \mathrm{…}, or {\rm …} (which the tokens read as \mathrm{…})
+  const std::string group = command_token.written.empty() ? command_token.text + "{…}" : "{\\rm …}";
   std::string text;
   while (true) {
     const Token& t = peek_raw();
     if (t.kind == Tok::letter || t.kind == Tok::number) {
       if (t.space_before && !text.empty()) {
-        throw error(t, "expected one name in " + command_token.text +
-                           "{…}, found words: prose belongs outside the display block");
+        throw error(t, "expected one name in " + group +
+                           ", found words: prose belongs outside the display block");
       }
       text += t.text;
       take();
@@ -143,21 +145,20 @@ std::string Grammar::name_group(const Token& command_token) {
     } else if (t.kind == Tok::end) {
       throw error(open, "expected '}' to close this '{'");
     } else {
-      const bool unit =
-          is_char(t, '/') || is_char(t, '^') || is_char(t, '.') || is_command(t, "\\cdot");
-      throw error(t, "expected letters and digits in " + command_token.text +
-                         "{…} (a name), found " + describe(t) +
+      const bool unit = is_char(t, '/') || is_char(t, '^') || is_char(t, '.') ||
+                        is_command(t, "\\cdot") || t.kind == Tok::spacing;  // m\,s^{-1}
+      throw error(t, "expected letters and digits in " + group + " (a name), found " + describe(t) +
                          (unit ? ": units (m/s, m\\cdot s^{-1}) are not read; write the equation "
                                  "in numbers alone, with units: for the symbols' dimensions"
                                : ""));
     }
   }
   if (text.empty()) {
-    throw error(open, "expected a name inside " + command_token.text + "{}");
+    throw error(open, "expected a name inside " + group);
   }
   if (text[0] >= '0' && text[0] <= '9') {
-    throw error(open, "expected a name beginning with a letter inside " + command_token.text +
-                          "{…}, found " + text + " (a number is written without it)");
+    throw error(open, "expected a name beginning with a letter inside " + group + ", found " +
+                          text + " (a number is written without it)");
   }
   return text;
 }

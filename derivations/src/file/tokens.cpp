@@ -293,8 +293,29 @@ class Tokenizer {
 }  // namespace
 
 std::vector<Token> tokenize(const Source& source, std::size_t base, std::string_view text) {
-  return Tokenizer(source, base, text).run();
+  std::vector<Token> tokens = Tokenizer(source, base, text).run();
+  // {\rm d}t and K_{\rm i}: plain TeX's upright group, read as \mathrm{d} and K_\mathrm{i}. Only
+  // where \rm opens its group: elsewhere it sets what follows it up to the group's end upright, a
+  // group this reader does not mark, and stays refused as an unknown command.
+  for (std::size_t k = 0; k + 1 < tokens.size(); ++k) {
+    if (tokens[k].kind == Tok::character && tokens[k].text == "{" &&
+        tokens[k + 1].kind == Tok::command && tokens[k + 1].text == "\\rm") {
+      tokens[k + 1].written = "\\rm";
+      tokens[k + 1].text = "{";
+      tokens[k + 1].kind = Tok::character;
+      tokens[k].written = "{";
+      tokens[k].text = "\\mathrm";
+      tokens[k].kind = Tok::command;
+    }
+  }
+  return tokens;
 }
+
+namespace {
+const std::string& as_written(const Token& t) {
+  return t.written.empty() ? t.text : t.written;
+}
+}  // namespace
 
 std::string describe(const Token& t) {
   switch (t.kind) {
@@ -303,7 +324,7 @@ std::string describe(const Token& t) {
     case Tok::number:
       return "the number " + t.text;
     default:
-      return "'" + t.text + "'";
+      return "'" + as_written(t) + "'";
   }
 }
 
@@ -316,13 +337,14 @@ std::string join(const std::vector<Token>& tokens) {
     if (t.kind == Tok::end) {
       continue;
     }
-    const bool command_before = previous != nullptr && previous->text.size() > 1 &&
-                                previous->text[0] == '\\' && letter_char(previous->text.back());
+    const std::string& before = previous == nullptr ? t.text : as_written(*previous);
+    const bool command_before =
+        previous != nullptr && before.size() > 1 && before[0] == '\\' && letter_char(before.back());
     if (previous != nullptr &&
         (t.space_before || (command_before && (t.kind == Tok::letter || t.kind == Tok::number)))) {
       out += ' ';
     }
-    out += t.text;
+    out += as_written(t);
     previous = &t;
   }
   return out;

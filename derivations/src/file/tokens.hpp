@@ -25,6 +25,7 @@ struct Token {
   std::size_t offset = 0;
   std::size_t end = 0;
   bool space_before = false;  ///< the file had a space (or spacing) right before it
+  std::string written;        ///< what the file has here, where it is read as `text` ({\rm)
 };
 
 /// The commands the grammar knows, by the place they take.
