@@ -1184,7 +1184,20 @@ class Decider {
   }
 
   Found branch(const Frame& frame, const std::vector<ex>& premises, std::size_t index,
-               const std::vector<ex>& factors) {
+               std::vector<ex> factors) {
+    // Each with one sign, in the order of their text: GiNaC gives a product's factors in an order,
+    // and a sum's sign, that follow hash values seeded by addresses, so that the report's "factors
+    // into", and which failing case gives the counterexample, changed between builds and runs.
+    std::vector<std::pair<std::string, ex>> by_text;
+    for (const ex& f : factors) {
+      const ex signed_once = sym::up_to_sign(f);
+      by_text.emplace_back(text(signed_once), signed_once);
+    }
+    std::stable_sort(by_text.begin(), by_text.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+      factors[i] = by_text[i].second;
+    }
     std::vector<Found> cases;
     for (const ex& f : factors) {
       if (no_real_zero(f)) {
