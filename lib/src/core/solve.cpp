@@ -520,32 +520,24 @@ SparseMatrix lower_product(const SparseMatrix& G) {
   return C;
 }
 
-// z = G^T F^-2 G r (`inner` = G) or G F^-2 G^T r (`inner` = G^T), F the shifted factor: the
+// z = outer(F^-2 inner(r)), F the shifted factor: G^T F^-2 G r or G F^-2 G^T r, the
 // preconditioners of both ways of iterating, with the work vectors kept between calls.
 class TwoSolves {
  public:
-  TwoSolves(const detail::ShiftedFactor& factor, const SparseMatrix& G, bool G_inner)
-      : factor_(factor), G_(G), G_inner_(G_inner) {}
+  TwoSolves(const detail::ShiftedFactor& factor, Apply inner, Apply outer)
+      : factor_(factor), inner_(inner), outer_(outer) {}
   void operator()(const VectorXd& r, VectorXd& z) const {
-    if (G_inner_) {
-      product(G_, r, inner_);
-    } else {
-      transposed_product(G_, r, inner_);
-    }
-    factor_.solve(inner_, once_);
+    inner_(r, inside_);
+    factor_.solve(inside_, once_);
     factor_.solve(once_, twice_);
-    if (G_inner_) {
-      transposed_product(G_, twice_, z);
-    } else {
-      product(G_, twice_, z);
-    }
+    outer_(twice_, z);
   }
 
  private:
   const detail::ShiftedFactor& factor_;
-  const SparseMatrix& G_;
-  bool G_inner_;
-  mutable VectorXd inner_;
+  Apply inner_;
+  Apply outer_;
+  mutable VectorXd inside_;
   mutable VectorXd once_;
   mutable VectorXd twice_;
 };
@@ -556,6 +548,10 @@ class TwoSolves {
 int iterate(const SparseMatrix& A, const VectorXd& B, const SparseMatrix& G,
             const detail::ShiftedFactor& factor, bool by_velocities, const SolverOptions& options,
             VectorXd& x) {
+  const auto by_G = [&G](const VectorXd& v, VectorXd& out) { product(G, v, out); };
+  const auto by_G_transposed = [&G](const VectorXd& v, VectorXd& out) {
+    transposed_product(G, v, out);
+  };
   if (by_velocities) {
     // One run of conjugate gradients on A x = B, preconditioned by
     // G^T (G G^T + lambda I)^-2 G = (A + lambda I)^-2 A: a function of A, so that every iterate
@@ -564,7 +560,7 @@ int iterate(const SparseMatrix& A, const VectorXd& B, const SparseMatrix& G,
     // for s^2 of A). The rounding the two solves amplify by 1/lambda^2 lies in the null space of
     // G^T, which the product with G^T removes; so no step grows long when the residual reaches
     // rounding, and the sizes are taken at every step.
-    const TwoSolves precondition(factor, G, true);
+    const TwoSolves precondition(factor, by_G, by_G_transposed);
     return conjugate_gradients(A, B, precondition, options.sparse_tolerance, options.max_iterations,
                                x, Sizes::every_step);
   }
@@ -583,7 +579,7 @@ int iterate(const SparseMatrix& A, const VectorXd& B, const SparseMatrix& G,
   // dependency: the pivot of a dependent direction is about lambda only when the direction is
   // well separated from the others, so the rank estimate can miss one in an ill-conditioned
   // system; on a regular system the step returns the same x for a few more iterations.
-  const TwoSolves range_preconditioner(factor, G, false);
+  const TwoSolves range_preconditioner(factor, by_G_transposed, by_G);
   VectorXd Gx(G.rows());
   product(G, x, Gx);
   // Judged against |G x| alone, the velocity change (not |G G^T| |y|).
