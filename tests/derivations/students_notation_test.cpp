@@ -790,6 +790,17 @@ TEST_CASE("Students' upright groups: {\\rm d}t and K_{\\rm i} as \\mathrm{d}t an
   refused("$$p = m {v \\rm x}$$", 1, 12, "found '\\rm'");
 }
 
+TEST_CASE("Students' struck-out parts and braces with notes: refused with the reason",
+          "[derivations][students-notation]") {
+  // Each was "the unknown command", which said what is read but not why this is not: a \cancel
+  // may mark a factor cancelled against another (still in the equation) or a term dropped, and a
+  // brace under a sum inside a product reads as 2a + b or as 2(a + b).
+  refused("$$\\frac{\\cancel{m} v}{\\cancel{m}} = v$$", 1, 9, "still stands (cancelled against");
+  refused("$$E = \\bcancel{m g h} + K$$", 1, 7, "\\bcancel: the struck-out part");
+  refused("$$p = \\underbrace{m v}_{\\text{momentum}}$$", 1, 7, "is 2a + b or 2(a + b)");
+  refused("$$p = \\overbrace{m v}^{\\text{momentum}}$$", 1, 7, "\\overbrace: its note is not read");
+}
+
 TEST_CASE("A follows-if's conditions are listed in the order of their text, in every run",
           "[derivations][students-notation]") {
   // The conditions come from the factors of a product, in GiNaC's order, which follows hash

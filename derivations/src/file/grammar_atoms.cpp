@@ -409,6 +409,18 @@ Node Grammar::refused_command(const Token& t) {
   if (name == "\\over") {
     throw error(t, "expected \\over inside braces, {a \\over b}");
   }
+  if (name == "\\cancel" || name == "\\bcancel" || name == "\\xcancel" || name == "\\cancelto" ||
+      name == "\\sout") {
+    throw error(t, "expected an expression without " + name +
+                       ": the struck-out part still stands (cancelled against another) or is "
+                       "dropped from the equation? Write the equation that is left, as a step");
+  }
+  if (name == "\\underbrace" || name == "\\overbrace") {
+    throw error(t, "expected an expression without " + name +
+                       ": its note is not read, and under a product the brace reads two ways "
+                       "(2\\underbrace{a + b} is 2a + b or 2(a + b)); write the equation without "
+                       "it and the note as prose");
+  }
   if (name == "\\nabla" || name == "\\mathcal" || name == "\\mathbb") {
     throw error(t, "expected an expression without " + name + " (not read by this checker)");
   }
