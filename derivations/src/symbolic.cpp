@@ -205,11 +205,14 @@ Signed print_signed(const ex& e, Style style) {
     return {false, style == Style::latex ? base + "^{" + power + "}" : base + "^" + power};
   }
   if (is_a<GiNaC::function>(e)) {
-    // GiNaC prints the function's name; its arguments, printed here, stand in as symbols.
+    // GiNaC prints the function's name; its arguments, printed here, stand in as symbols (an
+    // absolute value's with one sign: |a + b|, not |-a - b| as GiNaC's order of terms may give).
+    const bool absolute = ex_to<GiNaC::function>(e).get_name() == "abs";
     GiNaC::exvector arguments;
     for (std::size_t i = 0; i < e.nops(); ++i) {
+      const ex argument = absolute ? up_to_sign(e.op(i)) : e.op(i);
       arguments.push_back(
-          GiNaC::symbol(print(e.op(i), Style::plain, 0), print(e.op(i), Style::latex, 0)));
+          GiNaC::symbol(print(argument, Style::plain, 0), print(argument, Style::latex, 0)));
     }
     return {false,
             ginac_text(GiNaC::function(ex_to<GiNaC::function>(e).get_serial(), arguments), style)};

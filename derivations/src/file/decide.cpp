@@ -2293,7 +2293,8 @@ std::string add_squared_roots(Problem& problem, const Facts& facts) {
   std::string logarithms;
   const auto add = [&](const ex& e, std::string& list) {
     problem.premises.push_back(e);
-    list += (list.empty() ? "" : ", ") + text(e) + " = 0";
+    // one sign, whatever GiNaC's order of the terms (= 0 either way)
+    list += (list.empty() ? "" : ", ") + text(sym::up_to_sign(e)) + " = 0";
   };
   for (std::size_t i = 0; i < written; ++i) {
     if (const auto squared = root_squared(problem.premises[i])) {
