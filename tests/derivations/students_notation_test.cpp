@@ -788,6 +788,12 @@ TEST_CASE("Students' upright groups: {\\rm d}t and K_{\\rm i} as \\mathrm{d}t an
   refused("$$v = 3\\,\\mathrm{m\\,s^{-1}}$$", 1, 19, "\\mathrm{…} (a name), found '\\,': units");
   refused("$$v = {\\rm }$$", 1, 8, "expected a name inside {\\rm …}");
   refused("$$p = m {v \\rm x}$$", 1, 12, "found '\\rm'");
+  // In a command's argument its braces are the argument's (\frac{\rm d}{…} is \frac{\mathrm{d}}{…},
+  // not \frac \mathrm{d}): refused there, with the form to write; a group of its own inside the
+  // argument is read.
+  refused("$$v = \\frac{\\rm d x}{\\rm d t}$$", 1, 13, "not inside a command's argument");
+  refused("$$v = \\frac{a}{\\rm b}$$", 1, 16, "expected \\mathrm{…} for an upright name");
+  same("\\frac{{\\rm d}x}{{\\rm d}t}", "\\frac{\\mathrm{d}x}{\\mathrm{d}t}", "function: x");
 }
 
 TEST_CASE("Students' struck-out parts and braces with notes: refused with the reason",

@@ -409,6 +409,12 @@ Node Grammar::refused_command(const Token& t) {
   if (name == "\\over") {
     throw error(t, "expected \\over inside braces, {a \\over b}");
   }
+  if (name == "\\rm") {
+    throw error(t,
+                "expected \\mathrm{…} for an upright name here: {\\rm …} is read where it opens "
+                "a group of its own ({\\rm d}t, K_{\\rm i}), not inside a command's argument "
+                "(\\frac{\\mathrm{d}x}{\\mathrm{d}t}) or after the group's first part");
+  }
   if (name == "\\cancel" || name == "\\bcancel" || name == "\\xcancel" || name == "\\cancelto" ||
       name == "\\sout") {
     throw error(t, "expected an expression without " + name +

@@ -1348,8 +1348,8 @@ void Checker::condition(const Implication& forward, const Scalars& before, const
     }
     latex.push_back(text + " \\neq 0");
   }
-  // By their text: the conditions come in GiNaC's order of a product's factors, which follows the
-  // order the symbols were made in and so differs between builds (the plain text below is
+  // By their text: the conditions come in GiNaC's order of a product's factors, which follows hash
+  // values seeded by addresses and differed between runs of one program (the plain text below is
   // printed in an order of its own).
   std::sort(latex.begin(), latex.end());
   std::string plain;

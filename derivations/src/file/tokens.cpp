@@ -295,11 +295,22 @@ class Tokenizer {
 std::vector<Token> tokenize(const Source& source, std::size_t base, std::string_view text) {
   std::vector<Token> tokens = Tokenizer(source, base, text).run();
   // {\rm d}t and K_{\rm i}: plain TeX's upright group, read as \mathrm{d} and K_\mathrm{i}. Only
-  // where \rm opens its group: elsewhere it sets what follows it up to the group's end upright, a
-  // group this reader does not mark, and stays refused as an unknown command.
+  // where \rm opens a group of its own: in a command's argument (\frac{\rm d}{…}, whose braces
+  // the argument needs) or after its first token it stays refused (Grammar::refused_command).
+  // whether the brace after t may be an argument (of t, or of the command whose argument t ends:
+  // \frac{a}{\rm b}, \sqrt[3]{\rm x})
+  const auto argument_of = [](const Token& t) {
+    return (t.kind == Tok::character && (t.text == "^" || t.text == "}" || t.text == "]")) ||
+           (t.kind == Tok::command &&
+            (commands::fractions.contains(t.text) || commands::accents.contains(t.text) ||
+             commands::modifiers.contains(t.text) || commands::names.contains(t.text) ||
+             commands::text_commands.contains(t.text) || t.text == "\\sqrt" ||
+             t.text == "\\boxed"));
+  };
   for (std::size_t k = 0; k + 1 < tokens.size(); ++k) {
-    if (tokens[k].kind == Tok::character && tokens[k].text == "{" &&
-        tokens[k + 1].kind == Tok::command && tokens[k + 1].text == "\\rm") {
+    if (!(k > 0 && argument_of(tokens[k - 1])) && tokens[k].kind == Tok::character &&
+        tokens[k].text == "{" && tokens[k + 1].kind == Tok::command &&
+        tokens[k + 1].text == "\\rm") {
       tokens[k + 1].written = "\\rm";
       tokens[k + 1].text = "{";
       tokens[k + 1].kind = Tok::character;
