@@ -226,8 +226,8 @@ TEST_CASE("Facts at a point of doubles: each symbol's own sign, its bounds and t
 TEST_CASE("Printing: an absolute value's argument with one sign", "[derivations]") {
   // |-a - b| is |a + b|: GiNaC keeps the sum with the signs its order of terms gives, and that
   // order follows hash values seeded by addresses, so the native program and the page's
-  // WebAssembly printed the same residual as |a + b| and |-a - b| (the native and WebAssembly
-  // reports of 1,286 files, compared: 26 differed in such a sign).
+  // WebAssembly printed the same residual as |a + b| and |-a - b| (of the native and WebAssembly
+  // reports of 1,286 files, 26 differed in their texts, most of them in such signs).
   const GiNaC::symbol a("a");
   const GiNaC::symbol b("b");
   CHECK(sym::latex(GiNaC::abs(-a - b)) == "{|a + b|}");
