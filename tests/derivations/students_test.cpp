@@ -131,7 +131,10 @@ TEST_CASE("Students' corpus: no random slip passes", "[derivations][students][sl
     const std::string text = with_line(texts[s.file], s.line, s.latex, s.mutated);
     d::DerivationReport report;
     try {
-      report = d::check_derivation(text, s.file);
+      // The pinned budget (budget.hpp): a slip's verdict must not depend on how busy the machine
+      // is. With the default 2 s, the sanitizers' build once found 2 undecided of its 113 slips
+      // where 1 is allowed, in a CI run beside other tests; run alone, 1 (an honest one).
+      report = d::check_derivation(text, s.file, impulse::test::pinned_options());
     } catch (const d::DerivationError& e) {
       FAIL_CHECK("refused at " << e.line() << ":" << e.column() << ": " << e.what());
       ++refused;
