@@ -796,6 +796,23 @@ TEST_CASE("Students' upright groups: {\\rm d}t and K_{\\rm i} as \\mathrm{d}t an
   same("\\frac{{\\rm d}x}{{\\rm d}t}", "\\frac{\\mathrm{d}x}{\\mathrm{d}t}", "function: x");
 }
 
+TEST_CASE("Students' differential of t written apart: {\\mathrm{d}}t is dt",
+          "[derivations][students-notation]") {
+  // The upright d in braces of its own, or spaced from its t, is the same differential as
+  // \mathrm{d}t and dt written together. Before, it was read as a symbol of its own that printed as
+  // \mathrm{d}t, and p = m {\mathrm{d}}t then p = m dt was red with "\mathrm{d}t - dt" left over.
+  same("m\\,{\\mathrm{d}}t", "m\\,dt");
+  same("m\\,\\mathrm{d}\\,t", "m\\,\\mathrm{d}t");
+  same("m\\,\\mathrm{d}{t}", "m\\,dt");
+  same("m\\,{\\rm d}\\,t", "m\\,dt");
+  same("\\int_0^T F(t)\\,{\\mathrm{d}}t", "\\int_0^T F(t)\\,dt", "function: F");
+  // Only t's own differential is dt: a subscript or a prime makes another symbol, and a plain d
+  // spaced from t is d times t, as the contract reads the letters apart.
+  different("m\\,{\\mathrm{d}}t_1", "m\\,dt");
+  different("m\\,{\\mathrm{d}}t'", "m\\,dt");
+  different("m\\,d\\,t", "m\\,dt");
+}
+
 TEST_CASE("Students' struck-out parts and braces with notes: refused with the reason",
           "[derivations][students-notation]") {
   // Each was "the unknown command", which said what is read but not why this is not: a \cancel

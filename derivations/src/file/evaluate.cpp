@@ -114,6 +114,12 @@ std::vector<std::pair<Node, char>> Symbols::factors(const Node& product) const {
       Node differential = *next;
       differential.symbol.differential = true;
       differential.offset = c.offset;
+      // The differential of t written apart ({\mathrm{d}}t, \mathrm{d}\,t) is dt, the symbol
+      // that \mathrm{d}t and dt written together are.
+      const SymbolName& t = next->symbol;
+      if (t.base == "t" && t.subscript.empty() && !t.delta && !t.arrow) {
+        differential.symbol = SymbolName{"dt", "", t.primes, false};
+      }
       factors.emplace_back(std::move(differential), product.ops[i]);
       ++i;
       continue;
