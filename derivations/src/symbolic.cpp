@@ -101,6 +101,48 @@ std::string print(const ex& e, Style style, int context) {
   return level < context ? grouped(text, style) : text;
 }
 
+// A power as printed, from its parts: base^exponent (exponent 1: the base alone).
+struct Power {
+  ex base;
+  ex exponent;
+
+  // The order among a product's factors: canonical() of the power as printed.
+  [[nodiscard]] std::string key() const {
+    return exponent.is_equal(1) ? canonical(base)
+                                : "^(" + canonical(base) + "," + canonical(exponent) + ")";
+  }
+  [[nodiscard]] std::string print(Style style) const {
+    if (exponent.is_equal(1)) {
+      return sym::print(base, style, power_level - 1);
+    }
+    if (style == Style::latex && exponent.is_equal(GiNaC::numeric(1, 2))) {
+      return "\\sqrt{" + sym::print(base, style, 0) + "}";
+    }
+    const std::string b = sym::print(base, style, power_level + 1);
+    const std::string p = sym::print(exponent, style, style == Style::latex ? 0 : atom_level);
+    return style == Style::latex ? b + "^{" + p + "}" : b + "^" + p;
+  }
+};
+
+// A factor as printed, and whether it takes a sign: a sum (or a whole power of one) whose first
+// term is negative is shown negated, (a - b)^2 and not (-a + b)^2, the sign in front for an odd
+// power. The power is kept in its parts, not made again: GiNaC would turn (a - b)^2 back into
+// (-a + b)^2 where its own order of the terms puts b first (power::eval makes a power's sum lead
+// with a positive coefficient in that order), so the same residual was printed with one sign in
+// one build and the other in the next, and an odd power, turned into -1 times a power, was
+// printed again without end.
+std::pair<bool, Power> shown_power(const ex& factor) {
+  const bool power = is_a<GiNaC::power>(factor);
+  Power shown{power ? factor.op(0) : factor, power ? factor.op(1) : ex(1)};
+  if (is_a<GiNaC::add>(shown.base) && is_a<GiNaC::numeric>(shown.exponent) &&
+      ex_to<GiNaC::numeric>(shown.exponent).is_integer() &&
+      sign_and_magnitude(terms_of(shown.base).front()).first) {
+    shown.base = -shown.base;
+    return {ex_to<GiNaC::numeric>(shown.exponent).is_odd(), shown};
+  }
+  return {false, shown};
+}
+
 std::string print_sum(const ex& e, Style style) {
   std::string out;
   for (const ex& term : terms_of(e)) {
@@ -120,8 +162,8 @@ std::string print_sum(const ex& e, Style style) {
 // sign goes in front of the product), numbers and the denominator apart.
 Signed print_product(const ex& e, Style style) {
   GiNaC::numeric coefficient = 1;
-  std::vector<ex> above;
-  std::vector<ex> below;
+  std::vector<Power> above;
+  std::vector<Power> below;
   const auto take = [&](ex factor) {
     if (is_a<GiNaC::numeric>(factor)) {
       coefficient *= ex_to<GiNaC::numeric>(factor);
@@ -134,18 +176,11 @@ Signed print_product(const ex& e, Style style) {
       factor = GiNaC::pow(factor.op(0), -factor.op(1));
       down = true;
     }
-    // A sum (or an odd power of one) whose first term is negative: its negation, and a sign.
-    const ex base = is_a<GiNaC::power>(factor) ? factor.op(0) : factor;
-    const ex exponent = is_a<GiNaC::power>(factor) ? factor.op(1) : ex(1);
-    if (is_a<GiNaC::add>(base) && is_a<GiNaC::numeric>(exponent) &&
-        ex_to<GiNaC::numeric>(exponent).is_integer() &&
-        sign_and_magnitude(terms_of(base).front()).first) {
-      factor = GiNaC::pow(-base, exponent);
-      if (ex_to<GiNaC::numeric>(exponent).is_odd()) {
-        coefficient = -coefficient;
-      }
+    const auto [negative, shown] = shown_power(factor);
+    if (negative) {
+      coefficient = -coefficient;
     }
-    (down ? below : above).push_back(factor);
+    (down ? below : above).push_back(shown);
   };
   for_each_factor(e, take);
   Signed out;
@@ -154,13 +189,18 @@ Signed print_product(const ex& e, Style style) {
     coefficient = -coefficient;
   }
   const std::string separator = style == Style::latex ? " " : "*";
-  const auto join = [&](const std::vector<ex>& factors, const GiNaC::numeric& number) {
+  const auto join = [&](const std::vector<Power>& factors, const GiNaC::numeric& number) {
     std::string text;
     if (!number.is_equal(1) || factors.empty()) {
       text = ginac_text(number, style);
     }
-    for (const ex& f : ordered(factors, false)) {
-      text += (text.empty() ? "" : separator) + print(f, style, power_level - 1);
+    std::vector<std::pair<std::string, std::size_t>> keys;
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+      keys.emplace_back(factors[i].key(), i);
+    }
+    std::sort(keys.begin(), keys.end());
+    for (const auto& [key, i] : keys) {
+      text += (text.empty() ? "" : separator) + factors[i].print(style);
     }
     return text;
   };
@@ -196,13 +236,8 @@ Signed print_signed(const ex& e, Style style) {
     return print_product(e, style);
   }
   if (is_a<GiNaC::power>(e)) {
-    const ex exponent = e.op(1);
-    if (style == Style::latex && exponent.is_equal(GiNaC::numeric(1, 2))) {
-      return {false, "\\sqrt{" + print(e.op(0), style, 0) + "}"};
-    }
-    const std::string base = print(e.op(0), style, power_level + 1);
-    const std::string power = print(exponent, style, style == Style::latex ? 0 : atom_level);
-    return {false, style == Style::latex ? base + "^{" + power + "}" : base + "^" + power};
+    const auto [negative, shown] = shown_power(e);
+    return {negative, shown.print(style)};
   }
   if (is_a<GiNaC::function>(e)) {
     // GiNaC prints the function's name; its arguments, printed here, stand in as symbols (an

@@ -236,3 +236,29 @@ TEST_CASE("Printing: an absolute value's argument with one sign", "[derivations]
   // |b - a| and |a - b| are one number, printed one way.
   CHECK(sym::latex(GiNaC::abs(b - a)) == sym::latex(GiNaC::abs(a - b)));
 }
+
+TEST_CASE("Printing: a power of a sum with one sign", "[derivations]") {
+  // GiNaC makes a power's sum lead with a positive coefficient in its own order of the terms, which
+  // follows the order the symbols were made in; the printers show a - b, a before b. The printer
+  // made (a - b)^n again where GiNaC's order put b first, and GiNaC turned it back: a square was
+  // printed (-a + b)^2 in one build and (a - b)^2 in another, and an odd power, turned into -1
+  // times a power, was printed again without end (the program crashed on a two-line file whose
+  // residual had (v_2 - v_1)^3 in its denominator). Both orders of making the symbols are tried:
+  // one of them is the order in which GiNaC and the printers disagree.
+  for (const bool a_first : {true, false}) {
+    INFO("a made first: " << a_first);
+    const GiNaC::symbol first(a_first ? "a" : "b");
+    const GiNaC::symbol second(a_first ? "b" : "a");
+    const GiNaC::ex a = a_first ? first : second;
+    const GiNaC::ex b = a_first ? second : first;
+    const GiNaC::symbol c("c");
+    CHECK(sym::plain(GiNaC::pow(b - a, 2) * c) == "(a-b)^2*c");
+    CHECK(sym::plain(GiNaC::pow(a - b, 2) * c) == "(a-b)^2*c");
+    CHECK(sym::latex(GiNaC::pow(b - a, 2)) == "\\left(a - b\\right)^{2}");
+    // An odd power: the sign in front, (b - a)^3 = -(a - b)^3.
+    CHECK(sym::plain(GiNaC::pow(b - a, 3) * c) == "-(a-b)^3*c");
+    CHECK(sym::plain(GiNaC::pow(b - a, 3)) == "-(a-b)^3");
+    CHECK(sym::plain((c + 1) / GiNaC::pow(b - a, 3)) == "-(1+c)/(a-b)^3");
+    CHECK(sym::plain((c - a) / GiNaC::pow(a - b, 3)) == "-(a-c)/(a-b)^3");
+  }
+}
