@@ -1195,8 +1195,10 @@ class Decider {
     }
     std::stable_sort(by_text.begin(), by_text.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<std::string> texts;
     for (std::size_t i = 0; i < factors.size(); ++i) {
       factors[i] = by_text[i].second;
+      texts.push_back(std::move(by_text[i].first));
     }
     std::vector<Found> cases;
     for (const ex& f : factors) {
@@ -1241,7 +1243,7 @@ class Decider {
     }
     std::string cases_text = "the equation before factors into ";
     for (std::size_t i = 0; i < factors.size(); ++i) {
-      cases_text += (i == 0 ? "" : i + 1 == factors.size() ? " and " : ", ") + text(factors[i]);
+      cases_text += (i == 0 ? "" : i + 1 == factors.size() ? " and " : ", ") + texts[i];
     }
     if (failing.empty() && !any_unknown) {
       combined.outcome = combined.conditions.empty() ? Implied::holds : Implied::holds_if;

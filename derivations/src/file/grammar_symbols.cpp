@@ -128,13 +128,15 @@ std::string Grammar::name_group(const Token& command_token) {
   }
   const Token open = take();
   // as written: \mathrm{…}, or {\rm …} (which the tokens read as \mathrm{…})
-  const std::string group = command_token.written.empty() ? command_token.text + "{…}" : "{\\rm …}";
+  const auto group = [&] {  // for the messages only
+    return command_token.written.empty() ? command_token.text + "{…}" : std::string("{\\rm …}");
+  };
   std::string text;
   while (true) {
     const Token& t = peek_raw();
     if (t.kind == Tok::letter || t.kind == Tok::number) {
       if (t.space_before && !text.empty()) {
-        throw error(t, "expected one name in " + group +
+        throw error(t, "expected one name in " + group() +
                            ", found words: prose belongs outside the display block");
       }
       text += t.text;
@@ -147,17 +149,18 @@ std::string Grammar::name_group(const Token& command_token) {
     } else {
       const bool unit = is_char(t, '/') || is_char(t, '^') || is_char(t, '.') ||
                         is_command(t, "\\cdot") || t.kind == Tok::spacing;  // m\,s^{-1}
-      throw error(t, "expected letters and digits in " + group + " (a name), found " + describe(t) +
+      throw error(t, "expected letters and digits in " + group() + " (a name), found " +
+                         describe(t) +
                          (unit ? ": units (m/s, m\\cdot s^{-1}) are not read; write the equation "
                                  "in numbers alone, with units: for the symbols' dimensions"
                                : ""));
     }
   }
   if (text.empty()) {
-    throw error(open, "expected a name inside " + group);
+    throw error(open, "expected a name inside " + group());
   }
   if (text[0] >= '0' && text[0] <= '9') {
-    throw error(open, "expected a name beginning with a letter inside " + group + ", found " +
+    throw error(open, "expected a name beginning with a letter inside " + group() + ", found " +
                           text + " (a number is written without it)");
   }
   return text;

@@ -297,8 +297,9 @@ std::vector<Token> tokenize(const Source& source, std::size_t base, std::string_
   // {\rm d}t and K_{\rm i}: plain TeX's upright group, read as \mathrm{d} and K_\mathrm{i}. Only
   // where \rm opens a group of its own: in a command's argument (\frac{\rm d}{…}, whose braces
   // the argument needs) or after its first token it stays refused (Grammar::refused_command).
-  // whether the brace after t may be an argument (of t, or of the command whose argument t ends:
-  // \frac{a}{\rm b}, \sqrt[3]{\rm x})
+
+  // Whether a brace after t may open an argument: of t, or of the command whose argument t ends
+  // (\frac{a}{\rm b}, \sqrt[3]{\rm x}).
   const auto argument_of = [](const Token& t) {
     return (t.kind == Tok::character && (t.text == "^" || t.text == "}" || t.text == "]")) ||
            (t.kind == Tok::command &&
