@@ -216,7 +216,15 @@ Signed print_product(const ex& e, Style style) {
   }
   const std::string bottom = join(below, coefficient.denom());
   if (style == Style::latex) {
-    out.text = "\\frac{" + top + "}{" + bottom + "}";
+    // A part that is one sum alone needs no parentheses inside \frac{…}{…}.
+    const auto part = [&](const std::vector<Power>& factors, const GiNaC::numeric& number,
+                          const std::string& joined) {
+      return factors.size() == 1 && number.is_equal(1) && factors[0].exponent.is_equal(1)
+                 ? print(factors[0].base, style, 0)
+                 : joined;
+    };
+    out.text = "\\frac{" + part(above, coefficient.numer(), top) + "}{" +
+               part(below, coefficient.denom(), bottom) + "}";
     return out;
   }
   const bool several_above = above.size() + (coefficient.numer().is_equal(1) ? 0U : 1U) > 1;

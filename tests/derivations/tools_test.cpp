@@ -6,7 +6,9 @@
 #include <numbers>
 #include <random>
 
+#include "budget.hpp"
 #include "derivations/check.hpp"
+#include "derivations/derivation.hpp"
 #include "file/decide.hpp"
 #include "file/facts.hpp"
 #include "file/time.hpp"
@@ -260,5 +262,22 @@ TEST_CASE("Printing: a power of a sum with one sign", "[derivations]") {
     CHECK(sym::plain(GiNaC::pow(b - a, 3)) == "-(a-b)^3");
     CHECK(sym::plain((c + 1) / GiNaC::pow(b - a, 3)) == "-(1+c)/(a-b)^3");
     CHECK(sym::plain((c - a) / GiNaC::pow(a - b, 3)) == "-(a-c)/(a-b)^3");
+  }
+}
+
+TEST_CASE("Printing: a residual over one denominator, its sign in front", "[derivations]") {
+  // y = 1, then y = a/(c - b): what is left is 1 - a/(c - b) = (c - b - a)/(c - b), which is
+  // (a + b - c)/(b - c) with each part's first term positive. GiNaC leaves the sign in either
+  // part as its order of terms gives, and that order follows the order in which the file names the
+  // symbols: the plain text was (-a-b+c)/(-b+c) without the facts' line and (a+b-c)/(b-c) with it.
+  // The LaTeX needs no parentheses around a part that is one sum.
+  for (const std::string facts : {"", "assume: c > 0\n\n", "assume: c > 0, b > 0, a > 0\n\n"}) {
+    INFO("facts: " << facts);
+    const auto report =
+        impulse::derivations::check_derivation(facts + "$$y = 1$$\n\n$$y = \\frac{a}{c - b}$$\n",
+                                               "sign.md", impulse::test::pinned_options());
+    REQUIRE(report.equations.size() == 2);
+    CHECK(report.equations[1].residual_text == "(a+b-c)/(b-c)");
+    CHECK(report.equations[1].residual == "\\frac{a + b - c}{b - c}");
   }
 }

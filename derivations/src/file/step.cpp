@@ -54,6 +54,7 @@ void merge(Implication& total, const Implication& one) {
   }
 }
 
+// A residual as a person reads it: over one denominator, factored when that is cheap.
 ex readable(const ex& e) {
   if (expanded_terms(e) > most_expanded_terms) {
     return e;  // too large to bring over one denominator: shown as it stands
@@ -239,15 +240,19 @@ std::string plain_of(const ex& e) {
   } catch (const std::exception&) {
     return print(e);
   }
-  const ex numerator = parts.op(0);
-  const ex denominator = parts.op(1);
+  ex numerator = parts.op(0);
+  ex denominator = parts.op(1);
   if (denominator.is_equal(1)) {
     return print(numerator);
   }
+  // The sign in the numerator: GiNaC leaves it in either part, as its order of terms gives
+  // (-(a)/(b - c) in one build, (a)/(c - b) in another).
+  if (!sym::up_to_sign(denominator).is_equal(denominator)) {
+    numerator = -numerator;
+    denominator = -denominator;
+  }
   return grouped(numerator, false) + "/" + grouped(denominator, true);
 }
-
-// A residual as a person reads it: over one denominator, factored when that is cheap.
 
 void for_each_scalar(const Equation& e, const std::function<void(const ex&, const ex&)>& each) {
   if (e.lhs.value.block()) {
