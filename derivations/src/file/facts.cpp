@@ -755,7 +755,16 @@ Sign Facts::sign(const ex& e) const {
   const Sign known = s != Sign::unknown ? s : r;
   if (known == Sign::unknown) {
     const Sign combined = of_linear_facts(e);
-    return combined != Sign::unknown ? combined : of_quadratic(e);
+    if (combined != Sign::unknown) {
+      return combined;
+    }
+    const Sign quadratic = of_quadratic(e);
+    return quadratic != Sign::unknown ? quadratic : of_roots_outside(e);
+  }
+  if (known == Sign::nonnegative || known == Sign::nonpositive) {
+    // ≤ 0 from the ranges (2 e^2 - e - 2 for 0 ≤ e ≤ 1), < 0 where it has no root there
+    const Sign strict = of_roots_outside(e);
+    return strict != Sign::unknown ? strict : known;
   }
   return known;
 }
@@ -963,6 +972,92 @@ Sign Facts::of_quadratic(const ex& e) const {
     }
   }
   return Sign::unknown;
+}
+
+namespace {
+
+// The number of sign changes of Sturm's sequence @p chain at x = @p at (at an end left open,
+// none: at -∞ with @p high false, +∞ with it true), zeros skipped.
+int sign_changes(const std::vector<ex>& chain, const ex& x, const std::optional<ex>& at,
+                 bool high) {
+  int changes = 0;
+  int last = 0;
+  for (const ex& p : chain) {
+    int s = 0;
+    if (at) {
+      const ex v = p.subs(x == *at);
+      s = v.is_zero() ? 0 : GiNaC::ex_to<GiNaC::numeric>(v).is_positive() ? 1 : -1;
+    } else {  // the leading term decides, with the degree's parity toward -∞
+      const int degree = p.degree(x);
+      const bool positive = GiNaC::ex_to<GiNaC::numeric>(p.lcoeff(x)).is_positive();
+      s = (positive == (high || degree % 2 == 0)) ? 1 : -1;
+    }
+    if (s != 0) {
+      changes += last != 0 && s != last ? 1 : 0;
+      last = s;
+    }
+  }
+  return changes;
+}
+
+}  // namespace
+
+// A polynomial in one symbol with rational coefficients (2 + e - 2 e^2 with 0 ≤ e ≤ 1) that has
+// no real root where the facts keep the symbol has one sign there: the sign at a point inside.
+// Sturm's theorem counts the roots between the ends exactly (the difference of the sign changes
+// of p, p', and the negated remainders, at the two ends); an end that is a root is left undecided.
+Sign Facts::of_roots_outside(const ex& e) const {
+  if (!is_a<GiNaC::add>(e) || e.nops() > 13 || !e.info(GiNaC::info_flags::polynomial)) {
+    return Sign::unknown;
+  }
+  std::optional<ex> x;
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (is_a<GiNaC::symbol>(*it)) {
+      if (x && !x->is_equal(*it)) {
+        return Sign::unknown;  // more than one symbol
+      }
+      x = *it;
+    }
+  }
+  const ex p = GiNaC::expand(e);
+  if (!x || p.degree(*x) < 2 || p.degree(*x) > 12) {
+    return Sign::unknown;
+  }
+  for (int k = 0; k <= p.degree(*x); ++k) {
+    const ex c = p.coeff(*x, k);
+    if (!is_a<GiNaC::numeric>(c) || !GiNaC::ex_to<GiNaC::numeric>(c).is_rational()) {
+      return Sign::unknown;
+    }
+  }
+  // The ends where they are rational numbers; an end that is not (π/6) is taken as open to
+  // infinity, which can only find more roots.
+  const auto [low_end, high_end] = exact_ends(*x);
+  const auto rational = [](const std::optional<End>& end) -> std::optional<ex> {
+    if (end && is_a<GiNaC::numeric>(end->at) &&
+        GiNaC::ex_to<GiNaC::numeric>(end->at).is_rational()) {
+      return end->at;
+    }
+    return std::nullopt;
+  };
+  const std::optional<ex> low = rational(low_end);
+  const std::optional<ex> high = rational(high_end);
+  if ((low && p.subs(*x == *low).is_zero()) || (high && p.subs(*x == *high).is_zero())) {
+    return Sign::unknown;
+  }
+  std::vector<ex> chain{p, GiNaC::diff(p, GiNaC::ex_to<GiNaC::symbol>(*x))};
+  while (!chain.back().is_zero() && chain.back().degree(*x) > 0) {
+    const ex next = GiNaC::expand(-GiNaC::rem(chain[chain.size() - 2], chain.back(), *x));
+    if (next.is_zero()) {
+      break;
+    }
+    chain.push_back(next);
+  }
+  if (sign_changes(chain, *x, low, false) != sign_changes(chain, *x, high, true)) {
+    return Sign::unknown;  // a root between the ends
+  }
+  const ex inside = low && high ? (*low + *high) / 2 : low ? *low + 1 : high ? *high - 1 : ex(0);
+  return GiNaC::ex_to<GiNaC::numeric>(p.subs(*x == inside)).is_positive() ? Sign::positive
+                                                                          : Sign::negative;
 }
 
 namespace {
