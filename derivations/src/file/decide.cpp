@@ -877,7 +877,7 @@ class Decider {
       // A sum of terms of one sign (x² + y², or x + y with x, y ≥ 0) is 0 where each term is:
       // each term's doubtful factors, their product 0 (x² = 0 is x = 0).
       if (factors.size() == 1) {
-        if (const std::vector<ex> terms = terms_of_one_sign(factors[0]); !terms.empty()) {
+        if (const std::vector<ex> terms = zero_only_where_each(factors[0]); !terms.empty()) {
           for (const ex& t : terms) {
             const std::vector<ex> of_t = doubtful_factors(t, facts_);
             if (of_t.empty()) {  // a term the facts keep from 0: the sum is never 0
@@ -1067,6 +1067,18 @@ class Decider {
     if (const Sign sign = facts_.of_symbol(choice.symbol); sign != Sign::unknown) {
       facts_.add_relation(value, sign);
     }
+    // So do the facts on expressions in it (v_1 - v_2 ≠ 0 with v_1 = 0: -v_2 ≠ 0); one that the
+    // value makes a number it does not hold for leaves the case no point.
+    if (!sign_case) {
+      if (const std::optional<std::string> broken = relations_put_in(outer, choice.symbol, value)) {
+        facts_ = outer;
+        Found none;
+        none.outcome = Implied::holds;
+        none.how.push_back("where " + text(choice.symbol) + " = " + text(value) + ", " + *broken +
+                           " does not hold");
+        return none;
+      }
+    }
     Found found = run(child);
     facts_ = outer;
     const std::string solved_for = "solved for " + text(choice.symbol);
@@ -1091,6 +1103,45 @@ class Decider {
       }
     }
     return found;
+  }
+
+  // The facts on expressions in @p symbol said of @p value, added to facts_; the first that
+  // becomes a number it does not hold for, as text (nothing when every one holds or stays open).
+  std::optional<std::string> relations_put_in(const Facts& facts, const ex& symbol,
+                                              const ex& value) {
+    const auto holds = [](const numeric& n, Sign sign) {
+      return !n.is_real() || (sign == Sign::positive      ? n.is_positive()
+                              : sign == Sign::negative    ? n.is_negative()
+                              : sign == Sign::nonnegative ? !n.is_negative()
+                              : sign == Sign::nonpositive ? !n.is_positive()
+                              : sign == Sign::nonzero     ? !n.is_zero()
+                                                          : true);
+    };
+    // the symbol's own fact (v_2 ≠ 0, left by v_1 - v_2 ≠ 0 at v_1 = 0), where the value is a
+    // number
+    if (const Sign sign = facts.of_symbol(symbol); sign != Sign::unknown && is_a<numeric>(value) &&
+                                                   !holds(GiNaC::ex_to<numeric>(value), sign)) {
+      return relation_latex(text(symbol), sign);
+    }
+    for (const auto& [relation, sign] : facts.relations()) {
+      if (!relation.has(symbol)) {
+        continue;
+      }
+      ex now;
+      try {
+        now = GiNaC::normal(relation.subs(GiNaC::exmap{{symbol, value}}));
+      } catch (const std::exception&) {
+        continue;  // a division by zero: left to the search
+      }
+      if (!is_a<numeric>(now)) {
+        facts_.add_relation(now, sign);
+        continue;
+      }
+      if (!holds(GiNaC::ex_to<numeric>(now), sign)) {
+        return relation_latex(text(relation), sign);
+      }
+    }
+    return std::nullopt;
   }
 
   // A denominator of the equations before that vanishes on the whole case: it is 0 once the
@@ -1183,6 +1234,36 @@ class Decider {
     return up || down ? terms : std::vector<ex>{};
   }
 
+  // What must each be 0 for @p f to be 0: the terms of a sum of one sign (terms_of_one_sign), or
+  // the two symbols of a definite quadratic form in them, a x^2 + b x y + c y^2 with numbers
+  // b^2 - 4 a c < 0 (x^2 + x y + y^2, a factor of x^3 - y^3), which is 0 only where x = y = 0;
+  // else none.
+  std::vector<ex> zero_only_where_each(const ex& f) const {
+    if (std::vector<ex> terms = terms_of_one_sign(f); !terms.empty()) {
+      return terms;
+    }
+    const ex p = GiNaC::expand(f);
+    const std::vector<ex> xy = symbols_of(p);
+    if (!is_a<GiNaC::add>(p) || xy.size() != 2 || !p.is_polynomial(xy[0]) ||
+        !p.is_polynomial(xy[1])) {
+      return {};
+    }
+    const ex& x = xy[0];
+    const ex& y = xy[1];
+    const ex a = p.coeff(x, 2).coeff(y, 0);
+    const ex b = p.coeff(x, 1).coeff(y, 1);
+    const ex c = p.coeff(x, 0).coeff(y, 2);
+    if (!is_a<numeric>(a) || !is_a<numeric>(b) || !is_a<numeric>(c) ||
+        !GiNaC::expand(p - a * x * x - b * x * y - c * y * y).is_zero()) {
+      return {};
+    }
+    const ex discriminant = b * b - 4 * a * c;
+    if (!GiNaC::ex_to<numeric>(discriminant).is_negative()) {
+      return {};
+    }
+    return {x, y};
+  }
+
   Found branch(const Frame& frame, const std::vector<ex>& premises, std::size_t index,
                std::vector<ex> factors) {
     // Each with one sign, in the order of their text: GiNaC gives a product's factors in an order,
@@ -1213,9 +1294,10 @@ class Decider {
       child.depth = frame.depth + 1;
       child.premises = premises;
       child.premises[index] = f;
-      // A sum whose terms the facts give one sign (x + y with x, y ≤ 0) is 0 only where each
-      // term is: the case is those terms, each 0 (x = y = 0).
-      if (const std::vector<ex> terms = terms_of_one_sign(f); !terms.empty()) {
+      // A sum whose terms the facts give one sign (x + y with x, y ≤ 0), or a definite quadratic
+      // form (x^2 + x y + y^2), is 0 only where each term or symbol is: the case is those, each 0
+      // (x = y = 0).
+      if (const std::vector<ex> terms = zero_only_where_each(f); !terms.empty()) {
         child.premises[index] = terms[0];
         child.premises.insert(child.premises.end(), terms.begin() + 1, terms.end());
       }
