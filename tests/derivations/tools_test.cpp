@@ -290,6 +290,32 @@ TEST_CASE("Facts: a polynomial in one symbol without a root where the facts keep
   CHECK(decided > 180);  // 218 of the 400, against 140 by the other rules alone
 }
 
+TEST_CASE("Facts: a sum that is 0 only where its symbols are, and a fact that excludes that",
+          "[derivations]") {
+  namespace file = impulse::derivations::file;
+  const GiNaC::symbol x("x");
+  const GiNaC::symbol y("y");
+  file::Facts apart;  // x ≠ y: excludes x = y = 0
+  apart.add_relation(x - y, file::Sign::nonzero);
+  const file::Facts none;
+  // x^2 + y^2 and 2x^2 + 3y^4 are 0 only at x = y = 0, which x ≠ y excludes: > 0. Without the
+  // fact, ≥ 0 only.
+  CHECK(apart.sign(x * x + y * y) == file::Sign::positive);
+  CHECK(apart.sign(2 * x * x + 3 * GiNaC::pow(y, 4)) == file::Sign::positive);
+  CHECK(apart.sign(-x * x - y * y) == file::Sign::negative);
+  CHECK(none.sign(x * x + y * y) != file::Sign::positive);
+  // x^2 + x y + y^2 = (x + y/2)^2 + 3y^2/4, definite (1 - 4 < 0): > 0 under x ≠ y; x^2 + 3 x y
+  // + y^2 is not definite (9 - 4 > 0; 0 at x = 1, y = (-3 + √5)/2): no sign.
+  CHECK(apart.sign(x * x + x * y + y * y) == file::Sign::positive);
+  CHECK(apart.sign(x * x + 3 * x * y + y * y) == file::Sign::unknown);
+  // A fact that holds at x = y = 0 (x ≥ 0) leaves the zero: no strict sign. x^2 y^2 + x^2 is 0
+  // wherever x = 0, not only at the origin: x ≠ y does not keep it from 0 (x = 0, y = 1).
+  file::Facts nonnegative;
+  nonnegative.add(x, file::Sign::nonnegative);
+  CHECK(nonnegative.sign(x * x + y * y) != file::Sign::positive);
+  CHECK(apart.sign(x * x * y * y + x * x) != file::Sign::positive);
+}
+
 TEST_CASE("Printing: an absolute value's argument with one sign", "[derivations]") {
   // |-a - b| is |a + b|: GiNaC keeps the sum with the signs its order of terms gives, and that
   // order follows hash values seeded by addresses, so the native program and the page's

@@ -759,12 +759,21 @@ Sign Facts::sign(const ex& e) const {
       return combined;
     }
     const Sign quadratic = of_quadratic(e);
-    return quadratic != Sign::unknown ? quadratic : of_roots_outside(e);
+    if (quadratic != Sign::unknown) {
+      return quadratic;
+    }
+    const Sign roots = of_roots_outside(e);
+    return roots != Sign::unknown ? roots : of_zero_only_at_origin(e);
   }
   if (known == Sign::nonnegative || known == Sign::nonpositive) {
-    // ≤ 0 from the ranges (2 e^2 - e - 2 for 0 ≤ e ≤ 1), < 0 where it has no root there
-    const Sign strict = of_roots_outside(e);
-    return strict != Sign::unknown ? strict : known;
+    // ≤ 0 from the ranges (2 e^2 - e - 2 for 0 ≤ e ≤ 1), < 0 where it has no root there, or
+    // where its only root is outside the facts (v_1^2 + v_2^2 with v_1 ≠ v_2)
+    const Sign roots = of_roots_outside(e);
+    if (roots != Sign::unknown) {
+      return roots;
+    }
+    const Sign origin = of_zero_only_at_origin(e);
+    return origin != Sign::unknown ? origin : known;
   }
   return known;
 }
@@ -1058,6 +1067,75 @@ Sign Facts::of_roots_outside(const ex& e) const {
   const ex inside = low && high ? (*low + *high) / 2 : low ? *low + 1 : high ? *high - 1 : ex(0);
   return GiNaC::ex_to<GiNaC::numeric>(p.subs(*x == inside)).is_positive() ? Sign::positive
                                                                           : Sign::negative;
+}
+
+// A sum that is 0 only where each of its symbols is: even powers of symbols with coefficients of
+// one sign (x^2 + 3 y^4), or a definite quadratic form in two symbols, a x^2 + b x y + c y^2 with
+// numbers b^2 - 4 a c < 0 (x^2 + x y + y^2, a factor of x^3 - y^3). Where the facts do not hold
+// with every symbol 0 (v_1 ≠ v_2), it is never 0: of its sign elsewhere, that of its coefficients.
+Sign Facts::of_zero_only_at_origin(const ex& e) const {
+  if (!is_a<GiNaC::add>(e) || e.nops() > 8 || !e.info(GiNaC::info_flags::polynomial)) {
+    return Sign::unknown;
+  }
+  const ex p = GiNaC::expand(e);
+  if (!is_a<GiNaC::add>(p)) {
+    return Sign::unknown;
+  }
+  GiNaC::exset symbols;
+  for (GiNaC::const_preorder_iterator it = p.preorder_begin(); it != p.preorder_end(); ++it) {
+    if (is_a<GiNaC::symbol>(*it)) {
+      symbols.insert(*it);
+    }
+  }
+  if (symbols.empty() || symbols.size() > 4) {
+    return Sign::unknown;
+  }
+  // each term c x^(2k): the signs of the c, all one
+  int sign = 0;
+  for (std::size_t i = 0; i < p.nops() && sign != 2; ++i) {
+    const ex term = p.op(i);
+    const ex power = is_a<GiNaC::mul>(term) && term.nops() == 2 ? term.op(0) : term;
+    const ex c = is_a<GiNaC::mul>(term) && term.nops() == 2 ? term.op(1) : ex(1);
+    const bool even = is_a<GiNaC::power>(power) && is_a<GiNaC::symbol>(power.op(0)) &&
+                      is_a<GiNaC::numeric>(power.op(1)) &&
+                      GiNaC::ex_to<GiNaC::numeric>(power.op(1)).is_even() &&
+                      GiNaC::ex_to<GiNaC::numeric>(power.op(1)).is_positive();
+    if (!even || !is_a<GiNaC::numeric>(c) || !GiNaC::ex_to<GiNaC::numeric>(c).is_real()) {
+      sign = 2;
+      break;
+    }
+    const int s = GiNaC::ex_to<GiNaC::numeric>(c).is_positive() ? 1 : -1;
+    sign = sign == 0 || sign == s ? s : 2;
+  }
+  if (sign == 2 && symbols.size() == 2) {  // a definite quadratic form?
+    const ex x = *symbols.begin();
+    const ex y = *std::next(symbols.begin());
+    const ex a = p.coeff(x, 2).coeff(y, 0);
+    const ex b = p.coeff(x, 1).coeff(y, 1);
+    const ex c = p.coeff(x, 0).coeff(y, 2);
+    if (is_a<GiNaC::numeric>(a) && is_a<GiNaC::numeric>(b) && is_a<GiNaC::numeric>(c) &&
+        GiNaC::expand(p - a * x * x - b * x * y - c * y * y).is_zero() &&
+        GiNaC::ex_to<GiNaC::numeric>(b * b - 4 * a * c).is_negative()) {
+      sign = GiNaC::ex_to<GiNaC::numeric>(a).is_positive() ? 1 : -1;
+    }
+  }
+  if (sign != 1 && sign != -1) {
+    return Sign::unknown;
+  }
+  GiNaC::exmap origin;
+  bool outside = false;
+  for (const ex& x : symbols) {
+    origin[x] = 0;
+    outside = outside || !satisfied(x, 0);
+  }
+  outside = outside || !relations_hold(origin, false) ||
+            std::any_of(equalities_.begin(), equalities_.end(), [&](const ex& q) {
+              return certainly_nonzero(GiNaC::normal(q.subs(origin)));
+            });
+  if (!outside) {
+    return Sign::unknown;
+  }
+  return sign == 1 ? Sign::positive : Sign::negative;
 }
 
 namespace {
