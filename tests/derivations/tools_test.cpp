@@ -316,6 +316,29 @@ TEST_CASE("Facts: a sum that is 0 only where its symbols are, and a fact that ex
   CHECK(apart.sign(x * x * y * y + x * x) != file::Sign::positive);
 }
 
+TEST_CASE("Facts: a difference of roots has the sign of the difference under them",
+          "[derivations]") {
+  namespace file = impulse::derivations::file;
+  const GiNaC::symbol a("m_1");
+  const GiNaC::symbol b("m_2");
+  file::Facts ordered;  // m_1 > m_2 > 0
+  ordered.add(b, file::Sign::positive);
+  ordered.add_relation(a - b, file::Sign::positive);
+  // x^r increases strictly on x ≥ 0 for r > 0: √m_1 - √m_2 > 0, 2 m_2^{3/2} - 2 m_1^{3/2} < 0.
+  CHECK(ordered.sign(GiNaC::sqrt(a) - GiNaC::sqrt(b)) == file::Sign::positive);
+  CHECK(ordered.sign(2 * GiNaC::pow(b, GiNaC::numeric(3, 2)) -
+                     2 * GiNaC::pow(a, GiNaC::numeric(3, 2))) == file::Sign::negative);
+  // Without the order, no sign; with the order but no sign of m_2 (m_2 = -1: √m_2 is not real),
+  // none either.
+  file::Facts positive;
+  positive.add(a, file::Sign::positive);
+  positive.add(b, file::Sign::positive);
+  CHECK(positive.sign(GiNaC::sqrt(a) - GiNaC::sqrt(b)) == file::Sign::unknown);
+  file::Facts unsigned_order;
+  unsigned_order.add_relation(a - b, file::Sign::positive);
+  CHECK(unsigned_order.sign(GiNaC::sqrt(a) - GiNaC::sqrt(b)) == file::Sign::unknown);
+}
+
 TEST_CASE("Printing: an absolute value's argument with one sign", "[derivations]") {
   // |-a - b| is |a + b|: GiNaC keeps the sum with the signs its order of terms gives, and that
   // order follows hash values seeded by addresses, so the native program and the page's

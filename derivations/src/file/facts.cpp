@@ -805,6 +805,46 @@ std::optional<std::pair<GiNaC::numeric, ex>> scaled_function(
 
 }  // namespace
 
+// k a^r - k b^r for a positive r and a, b ≥ 0, where x^r increases strictly: the sign of
+// k (a - b) where the facts give a - b a strict sign (√m_1 - √m_2 > 0 for m_1 > m_2 > 0).
+Sign Facts::of_power_difference(const ex& e) const {
+  struct Scaled {
+    GiNaC::numeric k;
+    ex base;
+    ex exponent;
+  };
+  const auto scaled = [](const ex& term) -> std::optional<Scaled> {
+    const bool product = is_a<GiNaC::mul>(term) && term.nops() == 2 &&
+                         is_a<GiNaC::numeric>(term.op(1)) &&
+                         GiNaC::ex_to<GiNaC::numeric>(term.op(1)).is_real();
+    const ex power = product ? term.op(0) : term;
+    if (!is_a<GiNaC::power>(power) || !is_a<GiNaC::numeric>(power.op(1)) ||
+        !GiNaC::ex_to<GiNaC::numeric>(power.op(1)).is_rational() ||
+        !GiNaC::ex_to<GiNaC::numeric>(power.op(1)).is_positive()) {
+      return std::nullopt;
+    }
+    return Scaled{product ? GiNaC::ex_to<GiNaC::numeric>(term.op(1)) : GiNaC::numeric(1),
+                  power.op(0), power.op(1)};
+  };
+  const auto first = scaled(e.op(0));
+  const auto second = scaled(e.op(1));
+  if (!first || !second || first->k != -second->k || !first->exponent.is_equal(second->exponent)) {
+    return Sign::unknown;
+  }
+  const auto at_least_zero = [&](const ex& x) {
+    const Sign s = sign(x);
+    return s == Sign::positive || s == Sign::nonnegative || s == Sign::zero;
+  };
+  if (!at_least_zero(first->base) || !at_least_zero(second->base)) {
+    return Sign::unknown;
+  }
+  const Sign between = sign(GiNaC::expand(first->base - second->base));
+  if (between != Sign::positive && between != Sign::negative) {
+    return Sign::unknown;
+  }
+  return first->k.is_positive() == (between == Sign::positive) ? Sign::positive : Sign::negative;
+}
+
 // k f(a) - k f(b) for a function f that increases strictly on the whole real line (exp, arctan;
 // the reader writes sinh in exponentials): the sign of k (a - b), where the facts give a - b a
 // strict sign (e^x - e^y > 0 for x > 1 > y, which the ranges of e^x and e^y, both open at e, cannot
@@ -812,6 +852,9 @@ std::optional<std::pair<GiNaC::numeric, ex>> scaled_function(
 Sign Facts::of_increasing_difference(const ex& e) const {
   if (!is_a<GiNaC::add>(e) || e.nops() != 2) {
     return Sign::unknown;
+  }
+  if (const Sign powers = of_power_difference(e); powers != Sign::unknown) {
+    return powers;
   }
   const std::vector<const char*> increasing{"exp", "atan"};
   const auto first = scaled_function(e.op(0), increasing);

@@ -118,6 +118,7 @@ class Facts {
   [[nodiscard]] Sign of_roots_outside(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_zero_only_at_origin(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_increasing_difference(const GiNaC::ex& e) const;
+  [[nodiscard]] Sign of_power_difference(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_wave_zeros(const GiNaC::ex& e) const;
   /// Whether every relation that can be judged at @p at holds (and, with @p all_judged, every
   /// relation can be).
