@@ -1110,12 +1110,7 @@ class Decider {
   std::optional<std::string> relations_put_in(const Facts& facts, const ex& symbol,
                                               const ex& value) {
     const auto holds = [](const numeric& n, Sign sign) {
-      return !n.is_real() || (sign == Sign::positive      ? n.is_positive()
-                              : sign == Sign::negative    ? n.is_negative()
-                              : sign == Sign::nonnegative ? !n.is_negative()
-                              : sign == Sign::nonpositive ? !n.is_positive()
-                              : sign == Sign::nonzero     ? !n.is_zero()
-                                                          : true);
+      return !n.is_real() || has_sign(n, sign);
     };
     // the symbol's own fact (v_2 ≠ 0, left by v_1 - v_2 ≠ 0 at v_1 = 0), where the value is a
     // number
@@ -1235,33 +1230,16 @@ class Decider {
   }
 
   // What must each be 0 for @p f to be 0: the terms of a sum of one sign (terms_of_one_sign), or
-  // the two symbols of a definite quadratic form in them, a x^2 + b x y + c y^2 with numbers
-  // b^2 - 4 a c < 0 (x^2 + x y + y^2, a factor of x^3 - y^3), which is 0 only where x = y = 0;
-  // else none.
+  // the two symbols of a definite quadratic form (definite_form: x^2 + x y + y^2, 0 only where
+  // x = y = 0); else none.
   std::vector<ex> zero_only_where_each(const ex& f) const {
     if (std::vector<ex> terms = terms_of_one_sign(f); !terms.empty()) {
       return terms;
     }
-    const ex p = GiNaC::expand(f);
-    const std::vector<ex> xy = symbols_of(p);
-    if (!is_a<GiNaC::add>(p) || xy.size() != 2 || !p.is_polynomial(xy[0]) ||
-        !p.is_polynomial(xy[1])) {
-      return {};
+    if (const std::optional<DefiniteForm> form = definite_form(f)) {
+      return {form->x, form->y};
     }
-    const ex& x = xy[0];
-    const ex& y = xy[1];
-    const ex a = p.coeff(x, 2).coeff(y, 0);
-    const ex b = p.coeff(x, 1).coeff(y, 1);
-    const ex c = p.coeff(x, 0).coeff(y, 2);
-    if (!is_a<numeric>(a) || !is_a<numeric>(b) || !is_a<numeric>(c) ||
-        !GiNaC::expand(p - a * x * x - b * x * y - c * y * y).is_zero()) {
-      return {};
-    }
-    const ex discriminant = b * b - 4 * a * c;
-    if (!GiNaC::ex_to<numeric>(discriminant).is_negative()) {
-      return {};
-    }
-    return {x, y};
+    return {};
   }
 
   Found branch(const Frame& frame, const std::vector<ex>& premises, std::size_t index,

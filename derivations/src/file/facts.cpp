@@ -79,12 +79,6 @@ Sign opposite(Sign sign) {
   }
 }
 
-namespace {
-
-bool strict(Sign s) {
-  return s == Sign::positive || s == Sign::negative;
-}
-// Whether a number has a sign (unknown: any number has it).
 bool has_sign(const GiNaC::numeric& v, Sign sign) {
   return sign == Sign::positive      ? v.is_positive()
          : sign == Sign::negative    ? v.is_negative()
@@ -92,6 +86,39 @@ bool has_sign(const GiNaC::numeric& v, Sign sign) {
          : sign == Sign::nonpositive ? !v.is_positive()
          : sign == Sign::nonzero     ? !v.is_zero()
                                      : true;
+}
+
+std::optional<DefiniteForm> definite_form(const ex& e) {
+  const ex p = GiNaC::expand(e);
+  GiNaC::exset symbols;
+  for (GiNaC::const_preorder_iterator it = p.preorder_begin(); it != p.preorder_end(); ++it) {
+    if (is_a<GiNaC::symbol>(*it)) {
+      symbols.insert(*it);
+    }
+  }
+  if (!is_a<GiNaC::add>(p) || symbols.size() != 2) {
+    return std::nullopt;
+  }
+  const ex x = *symbols.begin();
+  const ex y = *std::next(symbols.begin());
+  if (!p.is_polynomial(x) || !p.is_polynomial(y)) {
+    return std::nullopt;
+  }
+  const ex a = p.coeff(x, 2).coeff(y, 0);
+  const ex b = p.coeff(x, 1).coeff(y, 1);
+  const ex c = p.coeff(x, 0).coeff(y, 2);
+  if (!is_a<GiNaC::numeric>(a) || !is_a<GiNaC::numeric>(b) || !is_a<GiNaC::numeric>(c) ||
+      !GiNaC::expand(p - a * x * x - b * x * y - c * y * y).is_zero() ||
+      !GiNaC::ex_to<GiNaC::numeric>(b * b - 4 * a * c).is_negative()) {
+    return std::nullopt;
+  }
+  return DefiniteForm{x, y, GiNaC::ex_to<GiNaC::numeric>(a).is_positive()};
+}
+
+namespace {
+
+bool strict(Sign s) {
+  return s == Sign::positive || s == Sign::negative;
 }
 bool at_least_zero(Sign s) {
   return s == Sign::positive || s == Sign::nonnegative || s == Sign::zero;
@@ -831,11 +858,7 @@ Sign Facts::of_power_difference(const ex& e) const {
   if (!first || !second || first->k != -second->k || !first->exponent.is_equal(second->exponent)) {
     return Sign::unknown;
   }
-  const auto at_least_zero = [&](const ex& x) {
-    const Sign s = sign(x);
-    return s == Sign::positive || s == Sign::nonnegative || s == Sign::zero;
-  };
-  if (!at_least_zero(first->base) || !at_least_zero(second->base)) {
+  if (!at_least_zero(sign(first->base)) || !at_least_zero(sign(second->base))) {
     return Sign::unknown;
   }
   const Sign between = sign(GiNaC::expand(first->base - second->base));
@@ -1150,16 +1173,9 @@ Sign Facts::of_zero_only_at_origin(const ex& e) const {
     const int s = GiNaC::ex_to<GiNaC::numeric>(c).is_positive() ? 1 : -1;
     sign = sign == 0 || sign == s ? s : 2;
   }
-  if (sign == 2 && symbols.size() == 2) {  // a definite quadratic form?
-    const ex x = *symbols.begin();
-    const ex y = *std::next(symbols.begin());
-    const ex a = p.coeff(x, 2).coeff(y, 0);
-    const ex b = p.coeff(x, 1).coeff(y, 1);
-    const ex c = p.coeff(x, 0).coeff(y, 2);
-    if (is_a<GiNaC::numeric>(a) && is_a<GiNaC::numeric>(b) && is_a<GiNaC::numeric>(c) &&
-        GiNaC::expand(p - a * x * x - b * x * y - c * y * y).is_zero() &&
-        GiNaC::ex_to<GiNaC::numeric>(b * b - 4 * a * c).is_negative()) {
-      sign = GiNaC::ex_to<GiNaC::numeric>(a).is_positive() ? 1 : -1;
+  if (sign == 2) {
+    if (const std::optional<DefiniteForm> form = definite_form(p)) {
+      sign = form->positive ? 1 : -1;
     }
   }
   if (sign != 1 && sign != -1) {

@@ -159,6 +159,19 @@ class Facts {
 /// 0 nor shown not to be).
 [[nodiscard]] bool certainly_nonzero(const GiNaC::ex& value);
 
+/// Whether a number has a sign (unknown: any number has it).
+[[nodiscard]] bool has_sign(const GiNaC::numeric& v, Sign sign);
+
+/// A definite quadratic form in two symbols, a x^2 + b x y + c y^2 with numbers b^2 - 4 a c < 0
+/// (x^2 + x y + y^2, a factor of x^3 - y^3): 0 only where x = y = 0, elsewhere of the sign of a.
+struct DefiniteForm {
+  GiNaC::ex x;
+  GiNaC::ex y;
+  bool positive = true;
+};
+/// @p e as a definite quadratic form; else nothing.
+[[nodiscard]] std::optional<DefiniteForm> definite_form(const GiNaC::ex& e);
+
 /// @p argument as c x, a rational c ≠ 0 times a symbol x; else nothing.
 [[nodiscard]] std::optional<std::pair<GiNaC::ex, GiNaC::numeric>> multiple_of_symbol(
     const GiNaC::ex& argument);
