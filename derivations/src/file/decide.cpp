@@ -1068,18 +1068,18 @@ class Decider {
       facts_.add_relation(value, sign);
     }
     // So do the facts on expressions in it (v_1 - v_2 ≠ 0 with v_1 = 0: -v_2 ≠ 0); one that the
-    // value makes a number it does not hold for leaves the case no point.
-    if (!sign_case) {
-      if (const std::optional<std::string> broken = relations_put_in(outer, choice.symbol, value)) {
-        facts_ = outer;
-        Found none;
-        none.outcome = Implied::holds;
-        none.how.push_back("where " + text(choice.symbol) + " = " + text(value) + ", " + *broken +
-                           " does not hold");
-        return none;
-      }
+    // value makes a number it does not hold for leaves the case no point (where the coefficient
+    // is not 0: the case where it is, below, is still searched).
+    const std::optional<std::string> broken =
+        sign_case ? std::nullopt : relations_put_in(outer, choice.symbol, value);
+    Found found;
+    if (broken) {
+      found.outcome = Implied::holds;
+      found.how.push_back("where " + text(choice.symbol) + " = " + text(value) + ", " + *broken +
+                          " does not hold");
+    } else {
+      found = run(child);
     }
-    Found found = run(child);
     facts_ = outer;
     const std::string solved_for = "solved for " + text(choice.symbol);
     found.how.insert(found.how.begin(), solved_for);
