@@ -19,27 +19,6 @@ using GiNaC::numeric;
 // whose Outcome is the check report's.
 using Implied = Implication::Outcome;
 
-std::vector<ex> symbols_of(const ex& e) {
-  return symbols_of(std::vector<ex>{e});
-}
-
-std::vector<ex> symbols_of(const std::vector<ex>& expressions) {
-  std::set<ex, GiNaC::ex_is_less> found;
-  for (const ex& e : expressions) {
-    for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
-      if (is_a<GiNaC::symbol>(*i)) {
-        found.insert(*i);
-      }
-    }
-  }
-  std::vector<ex> list(found.begin(), found.end());
-  // A stable order: by name, so that a report does not depend on GiNaC's hashing.
-  std::sort(list.begin(), list.end(), [](const ex& a, const ex& b) {
-    return GiNaC::ex_to<GiNaC::symbol>(a).get_name() < GiNaC::ex_to<GiNaC::symbol>(b).get_name();
-  });
-  return list;
-}
-
 namespace {
 
 double counted_terms(const ex& e) {

@@ -74,11 +74,6 @@ struct Budget {
 [[nodiscard]] Implication implies(const Problem& problem, const Facts& facts,
                                   const Budget& budget = {});
 
-/// The symbols of an expression, in a stable order (by name).
-[[nodiscard]] std::vector<GiNaC::ex> symbols_of(const GiNaC::ex& e);
-/// The symbols of several expressions, each once, in a stable order (by name).
-[[nodiscard]] std::vector<GiNaC::ex> symbols_of(const std::vector<GiNaC::ex>& expressions);
-
 /// An upper estimate of the terms of @p e once expanded (for the size guard).
 [[nodiscard]] double expanded_terms(const GiNaC::ex& e);
 /// The most terms an expression may expand into for the work around a verdict (a residual brought

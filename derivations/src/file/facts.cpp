@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <set>
 #include <utility>
 
 #include "symbolic.hpp"
@@ -79,6 +80,27 @@ Sign opposite(Sign sign) {
   }
 }
 
+std::vector<ex> symbols_of(const ex& e) {
+  return symbols_of(std::vector<ex>{e});
+}
+
+std::vector<ex> symbols_of(const std::vector<ex>& expressions) {
+  std::set<ex, GiNaC::ex_is_less> found;
+  for (const ex& e : expressions) {
+    for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+      if (is_a<GiNaC::symbol>(*i)) {
+        found.insert(*i);
+      }
+    }
+  }
+  std::vector<ex> list(found.begin(), found.end());
+  // A stable order: by name, so that a report does not depend on GiNaC's hashing.
+  std::sort(list.begin(), list.end(), [](const ex& a, const ex& b) {
+    return GiNaC::ex_to<GiNaC::symbol>(a).get_name() < GiNaC::ex_to<GiNaC::symbol>(b).get_name();
+  });
+  return list;
+}
+
 bool has_sign(const GiNaC::numeric& v, Sign sign) {
   return sign == Sign::positive      ? v.is_positive()
          : sign == Sign::negative    ? v.is_negative()
@@ -90,17 +112,12 @@ bool has_sign(const GiNaC::numeric& v, Sign sign) {
 
 std::optional<DefiniteForm> definite_form(const ex& e) {
   const ex p = GiNaC::expand(e);
-  GiNaC::exset symbols;
-  for (GiNaC::const_preorder_iterator it = p.preorder_begin(); it != p.preorder_end(); ++it) {
-    if (is_a<GiNaC::symbol>(*it)) {
-      symbols.insert(*it);
-    }
-  }
+  const std::vector<ex> symbols = symbols_of(p);
   if (!is_a<GiNaC::add>(p) || symbols.size() != 2) {
     return std::nullopt;
   }
-  const ex x = *symbols.begin();
-  const ex y = *std::next(symbols.begin());
+  const ex& x = symbols[0];
+  const ex& y = symbols[1];
   if (!p.is_polynomial(x) || !p.is_polynomial(y)) {
     return std::nullopt;
   }
@@ -786,23 +803,22 @@ Sign Facts::sign(const ex& e) const {
       return combined;
     }
     const Sign quadratic = of_quadratic(e);
-    if (quadratic != Sign::unknown) {
-      return quadratic;
-    }
-    const Sign roots = of_roots_outside(e);
-    return roots != Sign::unknown ? roots : of_zero_only_at_origin(e);
+    return quadratic != Sign::unknown ? quadratic : of_zeros(e);
   }
   if (known == Sign::nonnegative || known == Sign::nonpositive) {
     // ≤ 0 from the ranges (2 e^2 - e - 2 for 0 ≤ e ≤ 1), < 0 where it has no root there, or
     // where its only root is outside the facts (v_1^2 + v_2^2 with v_1 ≠ v_2)
-    const Sign roots = of_roots_outside(e);
-    if (roots != Sign::unknown) {
-      return roots;
-    }
-    const Sign origin = of_zero_only_at_origin(e);
-    return origin != Sign::unknown ? origin : known;
+    const Sign strict = of_zeros(e);
+    return strict != Sign::unknown ? strict : known;
   }
   return known;
+}
+
+// A strict sign from where e is 0: nowhere the facts allow (of_roots_outside,
+// of_zero_only_at_origin).
+Sign Facts::of_zeros(const ex& e) const {
+  const Sign roots = of_roots_outside(e);
+  return roots != Sign::unknown ? roots : of_zero_only_at_origin(e);
 }
 
 namespace {
@@ -1085,17 +1101,13 @@ Sign Facts::of_roots_outside(const ex& e) const {
   if (!is_a<GiNaC::add>(e) || e.nops() > 13 || !e.info(GiNaC::info_flags::polynomial)) {
     return Sign::unknown;
   }
-  std::optional<ex> x;
-  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-    if (is_a<GiNaC::symbol>(*it)) {
-      if (x && !x->is_equal(*it)) {
-        return Sign::unknown;  // more than one symbol
-      }
-      x = *it;
-    }
+  const std::vector<ex> symbols = symbols_of(e);
+  if (symbols.size() != 1) {
+    return Sign::unknown;
   }
+  const std::optional<ex> x = symbols[0];
   const ex p = GiNaC::expand(e);
-  if (!x || p.degree(*x) < 2 || p.degree(*x) > 12) {
+  if (p.degree(*x) < 2 || p.degree(*x) > 12) {
     return Sign::unknown;
   }
   for (int k = 0; k <= p.degree(*x); ++k) {
@@ -1147,12 +1159,7 @@ Sign Facts::of_zero_only_at_origin(const ex& e) const {
   if (!is_a<GiNaC::add>(p)) {
     return Sign::unknown;
   }
-  GiNaC::exset symbols;
-  for (GiNaC::const_preorder_iterator it = p.preorder_begin(); it != p.preorder_end(); ++it) {
-    if (is_a<GiNaC::symbol>(*it)) {
-      symbols.insert(*it);
-    }
-  }
+  const std::vector<ex> symbols = symbols_of(p);
   if (symbols.empty() || symbols.size() > 4) {
     return Sign::unknown;
   }

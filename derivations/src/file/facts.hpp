@@ -115,6 +115,7 @@ class Facts {
   [[nodiscard]] Sign of_linear_facts(const GiNaC::ex& e) const;
   [[nodiscard]] Sign derived_sign(const GiNaC::ex& symbol) const;
   [[nodiscard]] Sign of_quadratic(const GiNaC::ex& e) const;
+  [[nodiscard]] Sign of_zeros(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_roots_outside(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_zero_only_at_origin(const GiNaC::ex& e) const;
   [[nodiscard]] Sign of_increasing_difference(const GiNaC::ex& e) const;
@@ -158,6 +159,11 @@ class Facts {
 /// rational other than 0, or beyond 1e-20 in 40 digits (a value in between is neither shown to be
 /// 0 nor shown not to be).
 [[nodiscard]] bool certainly_nonzero(const GiNaC::ex& value);
+
+/// The symbols of an expression, in a stable order (by name).
+[[nodiscard]] std::vector<GiNaC::ex> symbols_of(const GiNaC::ex& e);
+/// The symbols of several expressions, each once, in a stable order (by name).
+[[nodiscard]] std::vector<GiNaC::ex> symbols_of(const std::vector<GiNaC::ex>& expressions);
 
 /// Whether a number has a sign (unknown: any number has it).
 [[nodiscard]] bool has_sign(const GiNaC::numeric& v, Sign sign);
